@@ -1,0 +1,50 @@
+# cyclecert — the only set-up a newcomer needs:
+#   make run    bootstrap (as root: missing Debian packages), build, plan every corpus program
+#   make test   bootstrap, build, run every test through CTest
+#   make build  configure into build/ and build (the CLI lands at build/cyclecert)
+BUILD      ?= build
+BUILD_TYPE ?= RelWithDebInfo
+JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
+DEB_PACKAGES := librapidcheck-dev libgtest-dev nlohmann-json3-dev libboost-dev libbenchmark-dev cmake g++ make
+
+.PHONY: all bootstrap configure build test run bench sanitize clean
+
+all: build
+
+# Installs only what is missing, and only when we are root (otherwise explains what to install).
+bootstrap:
+	@missing=""; for p in $(DEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "bootstrap: installing$$missing"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	  else \
+	    echo "bootstrap: missing Debian packages:$$missing (run as root, or: sudo apt-get install$$missing)"; exit 1; \
+	  fi; \
+	fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+
+configure: bootstrap $(BUILD)/CMakeCache.txt
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+run: build
+	@./tools/plan-corpus.sh $(BUILD)
+
+bench: build
+	$(BUILD)/cyclecert-bench --benchmark_min_time=0.2
+
+# Address + undefined-behaviour sanitizer build of the whole test suite (also run by .ci/run).
+sanitize: bootstrap
+	cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=Debug -DCYCLECERT_SANITIZE=ON -DCYCLECERT_BENCH=OFF
+	cmake --build $(BUILD)-asan -j $(JOBS)
+	cd $(BUILD)-asan && ctest --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf $(BUILD) $(BUILD)-asan

@@ -1,0 +1,58 @@
+// Planning cost of the reference G71 type I on long monotone contours: near-linear in
+// segments × passes is the requirement (10,000 segments, 1,000 passes well under 50 ms).
+#include <benchmark/benchmark.h>
+
+#include <sstream>
+#include <string>
+
+#include "reference/gcode/parser.h"
+#include "reference/interpreter/program_runner.h"
+#include "reference/model/profile.h"
+
+namespace {
+
+using namespace cyclecert;
+
+// An outer staircase-with-tapers contour from X0 to X(2·depth) over `segments` blocks, so that the
+// number of passes is depth / Δd whatever the number of segments.
+std::string staircaseProgram(int segments, double depthRadius, double dd) {
+  std::ostringstream p;
+  p.precision(10);
+  const double startX = 2 * depthRadius + 2;
+  p << "G00 X" << startX << " Z2;\nG71 U" << dd << " R0.2;\nG71 P1 Q2 U0.4 W0.1 F0.2;\nN1 G00 X0;\n";
+  const double rise = 2 * depthRadius / segments;  // diameter per segment
+  for (int i = 1; i <= segments; ++i) {
+    if (i % 2) p << "G01 U" << rise << " W-0.5;\n";
+    else p << "G01 W-0.5;\n";
+  }
+  p << "N2 G01 W-1;\n";
+  return p.str();
+}
+
+void BM_G71Type1(benchmark::State& state) {
+  const int segments = static_cast<int>(state.range(0));
+  const int passes = static_cast<int>(state.range(1));
+  const double dd = 1.0;
+  const Program program = parseProgram(staircaseProgram(segments, passes * dd, dd), "bench.nc");
+  const Profile& profile = *findProfile("fanuc-0i-f");
+  std::size_t moves = 0;
+  for (auto _ : state) {
+    const Toolpath t = planProgram(program, profile, profile.defaults);
+    moves = t.moves.size();
+    benchmark::DoNotOptimize(moves);
+  }
+  state.counters["moves"] = static_cast<double>(moves);
+  state.counters["segments"] = segments;
+}
+
+BENCHMARK(BM_G71Type1)
+    ->Args({10, 10})
+    ->Args({100, 100})
+    ->Args({1000, 100})
+    ->Args({10000, 100})
+    ->Args({10000, 1000})
+    ->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,22 @@
+
+# Consider dependencies only in project.
+set(CMAKE_DEPENDS_IN_PROJECT_ONLY OFF)
+
+# The set of languages for which implicit dependencies are needed:
+set(CMAKE_DEPENDS_LANGUAGES
+  )
+
+# The set of dependency files which are needed:
+set(CMAKE_DEPENDS_DEPENDENCY_FILES
+  "/work/main/reference/gcode/address_ranges.cpp" "CMakeFiles/cyclecert_gcode.dir/reference/gcode/address_ranges.cpp.o" "gcc" "CMakeFiles/cyclecert_gcode.dir/reference/gcode/address_ranges.cpp.o.d"
+  "/work/main/reference/gcode/lexer.cpp" "CMakeFiles/cyclecert_gcode.dir/reference/gcode/lexer.cpp.o" "gcc" "CMakeFiles/cyclecert_gcode.dir/reference/gcode/lexer.cpp.o.d"
+  "/work/main/reference/gcode/parser.cpp" "CMakeFiles/cyclecert_gcode.dir/reference/gcode/parser.cpp.o" "gcc" "CMakeFiles/cyclecert_gcode.dir/reference/gcode/parser.cpp.o.d"
+  )
+
+# Targets to which this target links.
+set(CMAKE_TARGET_LINKED_INFO_FILES
+  "/work/main/build/CMakeFiles/cyclecert_model.dir/DependInfo.cmake"
+  )
+
+# Fortran module output directory.
+set(CMAKE_Fortran_TARGET_MODULE_DIR "")

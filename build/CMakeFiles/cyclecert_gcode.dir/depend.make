@@ -1,0 +1,2 @@
+# Empty dependencies file for cyclecert_gcode.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libcyclecert_reference.a"
+)

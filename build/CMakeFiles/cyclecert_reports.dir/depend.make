@@ -1,0 +1,2 @@
+# Empty dependencies file for cyclecert_reports.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,2 @@
+#pragma once
+#define CYCLECERT_VERSION "0.1.0"

@@ -1,0 +1,17 @@
+(source: shared/seeds/001_f6c35fe49e180329.txt)
+(section: 径向粗车循环 G72 - 编程示例, programming example O0005)
+(profile: gsk)
+(rules: G72.EX.O0005)
+(transcription: program lines and comments as in the seed; the seed's side label)
+( "精加工路线程序段" = finish-path blocks, beside N10...N20, is dropped)
+O0005;
+G00 X176 Z10 M3 S500 T0202;	(换2号刀,执行2号刀偏,主轴逆时针转,转速500r/min)
+G72 W2.0 R0.5 F300;	(进刀量 2mm, 退刀量 0.5mm)
+G72 P10 Q20 U0.2 W0.1;	(对 a→d 粗车, X 轴留 0.2mm, Z 轴流 0.1mm 余量)
+N10 G00 Z-55 S800;	(快速移动)
+G01 X160 F120;	(进刀至 a 点)
+X80 W20;	(加工 a→b)
+W15;	(加工 b→c)
+N20 X40 W20;	(加工 c→d)
+G70 P10 Q20;	(精加工 a→d)
+M30;

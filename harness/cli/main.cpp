@@ -1,0 +1,267 @@
+// cyclecert — the command line. Exit codes (for CI):
+//   0 success · 1 the controller alarmed (outputs still written) · 2 bad usage or unreadable input
+//   3 the program needs something the reference does not plan yet
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cyclecert_version.h"
+#include "harness/reference_plan.h"
+#include "harness/spec_case.h"
+#include "harness/spec_check.h"
+#include "reference/model/alarms.h"
+#include "reference/model/params.h"
+#include "reference/model/profile.h"
+#include "reference/model/program.h"
+#include "reference/model/toolpath_json.h"
+
+namespace {
+
+using namespace cyclecert;
+
+constexpr int kExitOk = 0, kExitAlarm = 1, kExitUsage = 2, kExitNotSupported = 3;
+
+const char* kMainHelp = R"HELP(cyclecert — conformance and differential testing of lathe roughing canned cycles
+
+Usage: cyclecert <command> [options]
+
+Commands:
+  plan       plan every cycle of a program (or a spec case) with the reference engine;
+             write the toolpath as JSON and SVG
+  params     list the machine parameters, their defaults and the rules they serve
+  profiles   list the controller profiles
+  help       show this help, or `cyclecert help <command>`
+
+Options: --help (on every command), --version.
+Exit codes: 0 ok, 1 the controller alarmed, 2 bad usage or input, 3 not supported yet.
+)HELP";
+
+const char* kPlanHelp = R"HELP(Usage: cyclecert plan PROGRAM.nc [options]
+       cyclecert plan --case CASE.json [options]
+
+Plans every G71/G72 cycle of the program with the reference engine (type I; FANUC 0i-F or GSK).
+
+Options:
+  --profile P          controller profile (default: the program's "(profile: P)" header comment,
+                       else fanuc-0i-f; see `cyclecert profiles`)
+  --param NAME=VALUE   set a machine parameter by number or mnemonic, e.g. --param 5105#1=1 or
+                       --param RF1=1 (repeatable; see `cyclecert params`); applied after the case's
+  --case CASE.json     plan a spec case: its program, profile and parameters; reports whether the
+                       reference meets the case's expectation
+  --json OUT           write the toolpath JSON to OUT ("-" for standard output)
+  --svg OUT            write an SVG plot (contour, rough contour, rapids dashed, feeds solid)
+  --help               this help
+
+Without --json and --svg, the toolpath JSON goes to standard output.
+JSON: {"profile", "units": "mm", "plane", "start", "moves": [{"kind": "rapid"|"feed",
+       "shape": "line"|"arc_cw"|"arc_ccw", "to": {"x", "z"}, "center"?, "feed"?, "phase", "rules"}],
+       "alarm": null | {"code", "message", "line"}, "warnings", "cycles"}   (x = radius, mm)
+Exit: 0 planned, 1 the controller alarmed (JSON still written), 2 bad usage or unreadable or
+malformed input, 3 not supported by the reference yet.
+)HELP";
+
+const char* kParamsHelp = R"HELP(Usage: cyclecert params [--json]
+
+Lists every machine parameter the reference models: number, mnemonic, default, unit, meaning and
+the rule IDs it serves. Profiles may change defaults (see `cyclecert profiles`).
+)HELP";
+
+const char* kProfilesHelp = R"HELP(Usage: cyclecert profiles
+
+Lists the controller profiles and the parameter defaults in which they differ.
+)HELP";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+bool wantsHelp(const std::vector<std::string>& args) {
+  for (const auto& a : args) if (a == "--help" || a == "-h") return true;
+  return false;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("cannot read '" + path + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text;
+    return;
+  }
+  std::ofstream out(path, std::ios::binary);
+  if (!out || !(out << text)) throw UsageError("cannot write '" + path + "'");
+}
+
+struct PlanArgs {
+  std::string program, casePath, profile, jsonOut, svgOut;
+  std::vector<std::string> params;
+};
+
+PlanArgs parsePlanArgs(const std::vector<std::string>& args) {
+  PlanArgs p;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--profile") p.profile = value();
+    else if (a == "--param") p.params.push_back(value());
+    else if (a == "--case") p.casePath = value();
+    else if (a == "--json") p.jsonOut = value();
+    else if (a == "--svg") p.svgOut = value();
+    else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option " + a);
+    else if (p.program.empty()) p.program = a;
+    else throw UsageError("more than one program given ('" + p.program + "', '" + a + "')");
+  }
+  if (p.program.empty() == p.casePath.empty()) throw UsageError("give either a PROGRAM.nc or --case CASE.json");
+  return p;
+}
+
+std::vector<std::pair<std::string, double>> parsedParams(const std::vector<std::string>& texts) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& t : texts) {
+    MachineParams probe;
+    probe.setFromText(t);  // validates the name and value
+    const auto eq = t.find('=');
+    out.emplace_back(t.substr(0, eq), probe.get(t.substr(0, eq)));
+  }
+  return out;
+}
+
+int commandPlan(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kPlanHelp;
+    return kExitOk;
+  }
+  const PlanArgs a = parsePlanArgs(args);
+  std::optional<SpecCase> specCase;
+  PlanRequest request;
+  std::string title;
+  if (!a.casePath.empty()) {
+    specCase = loadSpecCase(a.casePath);
+    request = {specCase->program, a.casePath + "#/program", specCase->profile, specCase->params};
+    title = specCase->id + " — " + specCase->title;
+  } else {
+    request = {readFile(a.program), a.program, "", {}};
+    title = a.program;
+  }
+  if (!a.profile.empty()) request.profile = a.profile;
+  for (auto& p : parsedParams(a.params)) request.params.push_back(p);
+
+  const Toolpath path = planWithReference(request);
+  const std::string json = toJson(path).dump(2) + "\n";
+  if (a.jsonOut.empty() && a.svgOut.empty()) std::cout << json;
+  if (!a.jsonOut.empty()) writeFile(a.jsonOut, json);
+  if (!a.svgOut.empty()) writeFile(a.svgOut, renderToolpathSvg(plotInputFor(path, title)));
+
+  std::ostream& report = (a.jsonOut == "-" || (a.jsonOut.empty() && a.svgOut.empty())) ? std::cerr : std::cout;
+  for (const Warning& w : path.warnings) report << "warning: line " << w.line << ": " << w.message << "\n";
+  if (path.alarm) {
+    report << "alarm " << path.alarm->code << " at line " << path.alarm->line << ": " << path.alarm->message << "\n";
+  } else if (!a.jsonOut.empty() || !a.svgOut.empty()) {
+    report << "planned " << path.cycles.size() << " cycle(s), " << path.moves.size() << " moves\n";
+  }
+  if (specCase) {
+    const auto unmet = unmetExpectation(*specCase, path);
+    report << "case " << specCase->id << ": " << (unmet ? "FAIL: " + *unmet : std::string("expectation met")) << "\n";
+  }
+  return path.alarm ? kExitAlarm : kExitOk;
+}
+
+int commandParams(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kParamsHelp;
+    return kExitOk;
+  }
+  for (const auto& a : args) if (a != "--json") throw UsageError("unknown option " + a);
+  if (!args.empty()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const ParamSpec& p : MachineParams::catalogue()) {
+      out.push_back({{"number", p.number}, {"mnemonic", p.mnemonic}, {"bit", p.isBit}, {"default", p.defaultValue},
+                     {"unit", p.unit}, {"description", p.description}, {"rules", p.rules}});
+    }
+    std::cout << out.dump(2) << "\n";
+    return kExitOk;
+  }
+  for (const ParamSpec& p : MachineParams::catalogue()) {
+    std::cout << std::left << std::setw(8) << p.number << std::setw(6) << p.mnemonic << "default " << std::setw(4)
+              << p.defaultValue << " " << p.unit << "\n        " << p.description << "\n        rules:";
+    for (const auto& r : p.rules) std::cout << " " << r;
+    std::cout << "\n";
+  }
+  return kExitOk;
+}
+
+int commandProfiles(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kProfilesHelp;
+    return kExitOk;
+  }
+  if (!args.empty()) throw UsageError("unknown option " + args.front());
+  const MachineParams base;
+  for (const Profile& p : allProfiles()) {
+    std::cout << p.name << "\n    " << p.description << "\n    follows seed " << p.seed << "\n";
+    for (const ParamSpec& spec : MachineParams::catalogue()) {
+      if (p.defaults.get(spec.number) != base.get(spec.number)) {
+        std::cout << "    default " << spec.number << (spec.mnemonic.empty() ? "" : " (" + spec.mnemonic + ")")
+                  << " = " << p.defaults.get(spec.number) << "\n";
+      }
+    }
+  }
+  return kExitOk;
+}
+
+int run(const std::vector<std::string>& argv) {
+  if (argv.empty()) {
+    std::cerr << kMainHelp;
+    return kExitUsage;
+  }
+  const std::string command = argv.front();
+  const std::vector<std::string> args(argv.begin() + 1, argv.end());
+  if (command == "--help" || command == "-h") {
+    std::cout << kMainHelp;
+    return kExitOk;
+  }
+  if (command == "help") {
+    if (args.empty()) std::cout << kMainHelp;
+    else return run({args.front(), "--help"});
+    return kExitOk;
+  }
+  if (command == "--version") {
+    std::cout << "cyclecert " << CYCLECERT_VERSION << "\n";
+    return kExitOk;
+  }
+  if (command == "plan") return commandPlan(args);
+  if (command == "params") return commandParams(args);
+  if (command == "profiles") return commandProfiles(args);
+  throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const UsageError& e) {
+    std::cerr << "cyclecert: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const ParseError& e) {
+    std::cerr << "cyclecert: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const NotSupported& e) {
+    std::cerr << "cyclecert: not supported yet: " << e.what() << "\n";
+    return kExitNotSupported;
+  } catch (const std::exception& e) {  // unknown profile or parameter, bad spec case, I/O
+    std::cerr << "cyclecert: " << e.what() << "\n";
+    return kExitUsage;
+  }
+}

@@ -1,0 +1,24 @@
+#pragma once
+// specs/rules.json: the rule IDs spec cases, moves and findings cite.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace cyclecert {
+
+struct RuleEntry {
+  std::string id, cycle, seed, section, summary;
+  std::vector<std::string> notes;
+};
+
+struct RuleCatalogue {
+  std::vector<RuleEntry> rules;  // in catalogue order
+  bool contains(const std::string& id) const;
+};
+
+RuleCatalogue loadRuleCatalogue(const std::string& path);  // throws std::runtime_error naming the file
+
+// The repository's specs/ directory (CYCLECERT_SPECS_DIR in the environment overrides it).
+std::string defaultSpecsDir();
+
+}  // namespace cyclecert

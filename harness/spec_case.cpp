@@ -1,0 +1,127 @@
+#include "harness/spec_case.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "reference/model/toolpath_json.h"
+
+namespace cyclecert {
+
+using nlohmann::json;
+
+SpecError::SpecError(const std::string& file, const std::string& field, const std::string& expected)
+    : std::runtime_error(file + ": " + field + ": expected " + expected) {}
+
+namespace {
+
+const json& required(const json& j, const char* key, const std::string& file) {
+  if (!j.contains(key)) throw SpecError(file, std::string("/") + key, "a value (field missing)");
+  return j[key];
+}
+
+std::string requiredString(const json& j, const char* key, const std::string& file) {
+  const json& v = required(j, key, file);
+  if (!v.is_string() || v.get<std::string>().empty()) {
+    throw SpecError(file, std::string("/") + key, "a non-empty string");
+  }
+  return v.get<std::string>();
+}
+
+void readExpectation(const json& expect, SpecCase& c) {
+  if (!expect.is_object()) throw SpecError(c.file, "/expect", "an object with \"toolpath\" or \"alarm\"");
+  if (expect.contains("toolpath") == expect.contains("alarm")) {
+    throw SpecError(c.file, "/expect", "exactly one of \"toolpath\" and \"alarm\"");
+  }
+  if (expect.contains("alarm")) {
+    const json& a = expect["alarm"];
+    ExpectedAlarm alarm;
+    if (a.is_string()) {
+      alarm.code = a.get<std::string>();
+    } else if (a.is_object() && a.contains("code") && a["code"].is_string()) {
+      alarm.code = a["code"].get<std::string>();
+      if (a.contains("line")) {
+        if (!a["line"].is_number_integer() || a["line"].get<int>() < 1) {
+          throw SpecError(c.file, "/expect/alarm/line", "a line number ≥ 1");
+        }
+        alarm.line = a["line"].get<int>();
+      }
+    } else {
+      throw SpecError(c.file, "/expect/alarm", "an alarm code string or {\"code\": …, \"line\": …}");
+    }
+    c.expectedAlarm = alarm;
+    return;
+  }
+  const json& moves = expect["toolpath"];
+  if (!moves.is_array() || moves.empty()) throw SpecError(c.file, "/expect/toolpath", "a non-empty array of moves");
+  std::vector<Move> parsed;
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    try {
+      parsed.push_back(moveFromJson(moves[i], "/expect/toolpath/" + std::to_string(i)));
+    } catch (const ToolpathFormatError& e) {
+      throw std::runtime_error(c.file + ": " + e.what());
+    }
+  }
+  c.expectedMoves = std::move(parsed);
+  if (expect.contains("tolerance")) {
+    if (!expect["tolerance"].is_number() || expect["tolerance"].get<double>() <= 0) {
+      throw SpecError(c.file, "/expect/tolerance", "a positive number");
+    }
+    c.tolerance = expect["tolerance"].get<double>();
+  }
+}
+
+}  // namespace
+
+SpecCase parseSpecCase(const std::string& text, const std::string& file) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw SpecError(file, "(document)", std::string("valid JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw SpecError(file, "(document)", "a JSON object");
+  SpecCase c;
+  c.file = file;
+  c.id = requiredString(j, "id", file);
+  c.title = requiredString(j, "title", file);
+  c.profile = requiredString(j, "profile", file);
+  c.program = requiredString(j, "program", file);
+  c.derivation = requiredString(j, "derivation", file);
+  const json& rules = required(j, "rules", file);
+  if (!rules.is_array() || rules.empty()) throw SpecError(file, "/rules", "a non-empty array of rule IDs");
+  for (std::size_t i = 0; i < rules.size(); ++i) {
+    if (!rules[i].is_string()) throw SpecError(file, "/rules/" + std::to_string(i), "a rule ID string");
+    c.rules.push_back(rules[i].get<std::string>());
+  }
+  if (j.contains("params")) {
+    if (!j["params"].is_object()) throw SpecError(file, "/params", "an object of parameter → number");
+    for (const auto& [name, value] : j["params"].items()) {
+      if (!value.is_number()) throw SpecError(file, "/params/" + name, "a number");
+      c.params.emplace_back(name, value.get<double>());
+    }
+  }
+  readExpectation(required(j, "expect", file), c);
+  return c;
+}
+
+SpecCase loadSpecCase(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SpecError(path, "(file)", "a readable file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseSpecCase(text.str(), path);
+}
+
+std::vector<std::string> findSpecCaseFiles(const std::string& dir) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace cyclecert

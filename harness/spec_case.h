@@ -1,0 +1,45 @@
+#pragma once
+// A spec case (specs/README.md): a program, its profile and parameters, and the hand-derived
+// expectation — a whole toolpath or an alarm.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "reference/model/toolpath.h"
+
+namespace cyclecert {
+
+struct ExpectedAlarm {
+  std::string code;
+  std::optional<int> line;
+};
+
+struct SpecCase {
+  std::string file;
+  std::string id;
+  std::string title;
+  std::vector<std::string> rules;
+  std::string profile;
+  std::vector<std::pair<std::string, double>> params;  // in file order
+  std::string program;
+  std::optional<std::vector<Move>> expectedMoves;
+  double tolerance = 0.001;
+  std::optional<ExpectedAlarm> expectedAlarm;
+  std::string derivation;
+};
+
+// A case file that is not a valid spec case: names the file and the field (JSON pointer).
+class SpecError : public std::runtime_error {
+ public:
+  SpecError(const std::string& file, const std::string& field, const std::string& expected);
+};
+
+SpecCase parseSpecCase(const std::string& jsonText, const std::string& file);
+SpecCase loadSpecCase(const std::string& path);
+
+// Every *.json file under a directory, sorted.
+std::vector<std::string> findSpecCaseFiles(const std::string& dir);
+
+}  // namespace cyclecert

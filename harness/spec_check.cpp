@@ -1,0 +1,26 @@
+#include "harness/spec_check.h"
+
+#include "harness/toolpath_compare.h"
+
+namespace cyclecert {
+
+std::optional<std::string> unmetExpectation(const SpecCase& c, const Toolpath& actual) {
+  if (c.expectedAlarm) {
+    if (!actual.alarm) return "expected alarm " + c.expectedAlarm->code + ", but the cycle planned without alarm";
+    if (actual.alarm->code != c.expectedAlarm->code) {
+      return "expected alarm " + c.expectedAlarm->code + ", got " + actual.alarm->code + " (" + actual.alarm->message + ")";
+    }
+    if (c.expectedAlarm->line && *c.expectedAlarm->line != actual.alarm->line) {
+      return "expected alarm " + c.expectedAlarm->code + " at line " + std::to_string(*c.expectedAlarm->line) +
+             ", got it at line " + std::to_string(actual.alarm->line);
+    }
+    return std::nullopt;
+  }
+  if (actual.alarm) {
+    return "expected a toolpath, got alarm " + actual.alarm->code + " at line " + std::to_string(actual.alarm->line) +
+           ": " + actual.alarm->message;
+  }
+  return firstDivergence(*c.expectedMoves, actual.moves, c.tolerance);
+}
+
+}  // namespace cyclecert

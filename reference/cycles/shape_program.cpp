@@ -1,0 +1,117 @@
+#include "reference/cycles/shape_program.h"
+
+#include <set>
+
+#include "reference/interpreter/block_motion.h"
+#include "reference/model/alarms.h"
+
+namespace cyclecert {
+
+namespace {
+
+std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which) {
+  const auto index = call.program.findSequence(static_cast<long>(w.value));
+  if (!index) {
+    throw CycleAlarm(alarm::kSequenceNotFound, call.block().line,
+                     std::string(1, which) + " names sequence number N" + w.text.substr(1) +
+                         ", which is not in the program");
+  }
+  return *index;
+}
+
+// G72.NSNF.GCODES: the only G codes a shape program may contain.
+bool usableInShape(int g10) {
+  static const std::set<int> allowed = {0, 10, 20, 30, 40, 960, 970, 980, 990, 400, 410, 420};
+  return allowed.count(g10) != 0;
+}
+
+bool isTnrcCode(int g10) { return g10 == 400 || g10 == 410 || g10 == 420; }
+
+void checkUsableInShape(const CycleCall& call, const Block& b) {
+  for (const Word* g : b.all('G')) {
+    const int g10 = gCode10(g->value);
+    if (!usableInShape(g10)) {
+      throw CycleAlarm(alarm::kUnavailableInShape, b.line, g->text + " cannot be used between P and Q");
+    }
+    // G71.TNRC.PLACE: G40/G41/G42 belong before the cycle and after the shape (NT1 is issue 3).
+    if (isTnrcCode(g10) && !call.profile.toleratesTnrcInShape) {
+      throw CycleAlarm(alarm::kUnavailableInShape, b.line,
+                       g->text + ": nose-radius compensation must be commanded outside the shape program");
+    }
+  }
+  for (const Word* m : b.all('M')) {
+    if (m->value == 98 || m->value == 99) {
+      throw CycleAlarm(alarm::kUnavailableInShape, b.line, m->text + ": no subprogram call inside a shape program");
+    }
+  }
+}
+
+int motionCode(const Block& b, int modal) {
+  for (const Word* g : b.all('G')) {
+    const int g10 = gCode10(g->value);
+    if (g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30) return g10 / 10;
+  }
+  return modal;
+}
+
+}  // namespace
+
+ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& q) {
+  ShapeProgram shape;
+  shape.nsIndex = findSequenceBlock(call, p, 'P');
+  shape.nfIndex = findSequenceBlock(call, q, 'Q');
+  if (shape.nfIndex < shape.nsIndex) {
+    throw CycleAlarm(alarm::kSequenceNotFound, call.block().line,
+                     "block Q (N" + q.text.substr(1) + ") stands before block P (N" + p.text.substr(1) + ")");
+  }
+  const Block& head = call.program.blocks[shape.nsIndex];
+  shape.nsLine = head.line;
+
+  // G71.HEAD.G0G1: the head block itself must command G00 or G01.
+  const bool g00 = head.hasG(0), g01 = head.hasG(10);
+  if (!g00 && !g01) {
+    throw CycleAlarm(alarm::kHeadNotG00G01, head.line, "block N" + p.text.substr(1) + " has no G00 or G01");
+  }
+  shape.headIsRapid = g00;
+  const PlaneAxes axes = call.modal.axes();
+  shape.headHasFirstAxis = head.has(axes.first) || head.has(axes.firstInc);
+  shape.headHasSecondAxis = head.has(axes.second) || head.has(axes.secondInc);
+
+  // Walk the shape with a private modal state: the shape only describes geometry (F, S, T, M and
+  // the rapid/feed distinction are ignored by the roughing cycle: G71.FST, G72.FST).
+  ModalState s = call.modal;
+  shape.start = s.planePoint();
+  shape.headEnd = shape.start;  // a head block without motion leaves B at A
+  for (std::size_t i = shape.nsIndex; i <= shape.nfIndex; ++i) {
+    const Block& b = call.program.blocks[i];
+    checkUsableInShape(call, b);
+    s.motion = motionCode(b, s.motion);
+    if (!hasAxisWord(b)) continue;
+    const auto seg = motionSegment(b, s.motion, s);
+    s.position = targetPosition(b, s);
+    if (i == shape.nsIndex) {
+      shape.headEnd = s.planePoint();
+      continue;
+    }
+    if (seg) shape.body.push_back(*seg);
+  }
+  return shape;
+}
+
+std::vector<Segment> ShapeProgram::finishShape() const {
+  std::vector<Segment> all;
+  all.reserve(body.size() + 1);
+  Segment head;
+  head.from = start;
+  head.to = headEnd;
+  head.sourceLine = nsLine;
+  all.push_back(head);
+  all.insert(all.end(), body.begin(), body.end());
+  return all;
+}
+
+std::size_t resumeIndexAfterCycle(const CycleCall& call, const ShapeProgram& shape) {
+  return shape.nsIndex == call.blockIndex + 1 ? shape.nfIndex + 1 : call.blockIndex + 1;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,34 @@
+#pragma once
+// The shape program ns…nf of a G71/G72/G73 cycle: found by sequence number, checked against the
+// commands a shape program may contain, and turned into plane segments.
+#include <vector>
+
+#include "reference/cycles/cycle_call.h"
+
+namespace cyclecert {
+
+struct ShapeProgram {
+  std::size_t nsIndex = 0, nfIndex = 0;
+  int nsLine = 0;
+  bool headIsRapid = true;       // block ns has G00 (else G01)
+  bool headHasFirstAxis = false; // block ns has a word of the plane's 1st axis (e.g. Z/W)
+  bool headHasSecondAxis = false;// block ns has a word of the plane's 2nd axis (e.g. X/U)
+  Point start;                   // A
+  Point headEnd;                 // B
+  std::vector<Segment> body;     // B → C
+
+  // The whole finish shape A → B → C (the head block as a line).
+  std::vector<Segment> finishShape() const;
+};
+
+// Reads blocks P…Q of the call's program. Throws CycleAlarm:
+//  PS0063 when P or Q names no block (or Q stands before P),
+//  PS0065 when block ns has no G00/G01 word (G71.HEAD.G0G1),
+//  PS0325 for commands not usable in a shape program (G72.NSNF.GCODES, G71.TNRC.PLACE).
+ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& q);
+
+// G72.NSNF.FOLLOW: execution resumes after nf when ns directly follows the cycle block,
+// otherwise after the cycle block.
+std::size_t resumeIndexAfterCycle(const CycleCall& call, const ShapeProgram& shape);
+
+}  // namespace cyclecert

@@ -1,0 +1,35 @@
+#include "reference/gcode/address_ranges.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "reference/model/alarms.h"
+
+namespace cyclecert {
+
+AddressRange rangeOf(CycleAddress role, bool inch) {
+  // Seed 001's table, ISB column: metric (mm) and inch.
+  switch (role) {
+    case CycleAddress::DepthOfCut: return inch ? AddressRange{0.0001, 99999.9999} : AddressRange{0.001, 999999.999};
+    case CycleAddress::Retract: return inch ? AddressRange{0, 99999.9999} : AddressRange{0, 999999.999};
+    case CycleAddress::Allowance:
+      return inch ? AddressRange{-99999.9999, 99999.9999} : AddressRange{-999999.999, 999999.999};
+    case CycleAddress::SequenceNumber: return {0, 99999};
+  }
+  return {0, 0};
+}
+
+void checkCycleAddress(const Word& w, CycleAddress role, bool inch) {
+  const AddressRange r = rangeOf(role, inch);
+  const bool integral = role != CycleAddress::SequenceNumber || w.value == std::floor(w.value);
+  if (w.value >= r.min && w.value <= r.max && integral) return;
+  std::ostringstream range;
+  range << w.text << " at column " << w.column << " is outside " << r.min << "…" << r.max;
+  if (role == CycleAddress::SequenceNumber) range << " (an integer sequence number)";
+  if (role == CycleAddress::DepthOfCut && w.value < r.min) {
+    throw CycleAlarm(alarm::kCuttingAmount, w.line, range.str() + ": the depth of cut must be positive");
+  }
+  throw CycleAlarm(alarm::kOutOfRange, w.line, range.str());
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,197 @@
+#include "reference/gcode/lexer.h"
+
+#include <array>
+#include <cstdio>
+#include <utility>
+
+#include "reference/model/program.h"
+
+namespace cyclecert {
+
+namespace {
+
+// Plain ASCII tests: <cctype> depends on the locale and is undefined for negative chars, and
+// every byte of a UTF-8 sequence is negative as a char.
+bool isAsciiLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isSign(char c) { return c == '+' || c == '-'; }
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+bool isLineEnd(char c) { return c == '\n' || c == '\r'; }
+char toUpper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
+  if (text.size() < prefix.size()) return false;
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    if (toUpper(text[i]) != toUpper(prefix[i])) return false;
+  }
+  return true;
+}
+
+// Length of the well-formed UTF-8 sequence starting at offset, or 0 when there is none, so that
+// error messages quote a whole character and never a broken one.
+std::size_t utf8LengthAt(std::string_view text, std::size_t offset) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(offset);
+  std::size_t length = 0;
+  unsigned char secondLow = 0x80;
+  unsigned char secondHigh = 0xBF;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    if (lead == 0xE0) secondLow = 0xA0;   // no overlong forms
+    if (lead == 0xED) secondHigh = 0x9F;  // no surrogates
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    if (lead == 0xF0) secondLow = 0x90;
+    if (lead == 0xF4) secondHigh = 0x8F;  // nothing above U+10FFFF
+  } else {
+    return 0;
+  }
+  if (offset + length > text.size()) return 0;
+  for (std::size_t i = 1; i < length; ++i) {
+    const unsigned char low = (i == 1) ? secondLow : 0x80;
+    const unsigned char high = (i == 1) ? secondHigh : 0xBF;
+    if (byte(offset + i) < low || byte(offset + i) > high) return 0;
+  }
+  return length;
+}
+
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+
+}  // namespace
+
+char Token::letter() const { return text.empty() ? '\0' : toUpper(text.front()); }
+
+std::string_view Token::commentBody() const {
+  return text.size() < 2 ? std::string_view{} : text.substr(1, text.size() - 2);
+}
+
+std::string describeSourceAt(std::string_view source, std::size_t offset) {
+  if (offset >= source.size()) return "end of input";
+  const char c = source[offset];
+  if (isLineEnd(c)) return "end of line";
+  if (c == ' ') return "a space";
+  if (c == '\t') return "a tab";
+  if (c > ' ' && c < '\x7F') return std::string(1, c);
+  if (const std::size_t length = utf8LengthAt(source, offset); length > 0) {
+    return std::string(source.substr(offset, length));
+  }
+  std::array<char, 16> hex{};
+  std::snprintf(hex.data(), hex.size(), "byte 0x%02X", static_cast<unsigned char>(c));
+  return hex.data();
+}
+
+std::string_view nonFiniteSpellingAt(std::string_view source, std::size_t offset) {
+  if (offset >= source.size()) return {};
+  std::size_t start = offset;
+  if (isSign(source[start])) ++start;
+  const std::string_view rest = source.substr(start);
+  for (std::string_view spelling : {"infinity", "inf", "nan"}) {
+    if (startsWithIgnoringCase(rest, spelling)) {
+      return source.substr(offset, start - offset + spelling.size());
+    }
+  }
+  return {};
+}
+
+Lexer::Lexer(std::string_view source, std::string file) : source_(source), file_(std::move(file)) {
+  // Editors on Windows may start a UTF-8 file with a byte-order mark; it is not part of line 1.
+  if (source_.starts_with(kByteOrderMark)) pos_ = lineStart_ = kByteOrderMark.size();
+}
+
+Token Lexer::next() {
+  skipBlanks();
+  if (pos_ >= source_.size()) return take(TokenKind::EndOfInput, 0);
+  const char c = source_[pos_];
+  if (isLineEnd(c)) return lineEnd();
+  if (c == ';') return take(TokenKind::EndOfBlock, 1);
+  if (c == '(') return comment();
+  if (c == '%') return programMarker();
+  if (c == '/') return take(TokenKind::BlockDelete, 1);
+  if (isAsciiLetter(c)) return take(TokenKind::Letter, 1);
+  if (isDigit(c) || isSign(c) || c == '.') return number();
+  fail(pos_, "an address letter, a number, a comment or the end of the block");
+}
+
+Token Lexer::lineEnd() {
+  const bool crlf = source_[pos_] == '\r' && pos_ + 1 < source_.size() && source_[pos_ + 1] == '\n';
+  Token token = take(TokenKind::EndOfBlock, crlf ? 2 : 1);
+  ++line_;
+  lineStart_ = pos_;
+  return token;
+}
+
+// Comments do not nest and end at the first ')'; a line end before it means the ')' is missing.
+Token Lexer::comment() {
+  std::size_t close = pos_ + 1;
+  while (close < source_.size() && source_[close] != ')' && !isLineEnd(source_[close])) ++close;
+  if (close >= source_.size() || source_[close] != ')') {
+    fail(close, "')' to close the comment opened at column " + std::to_string(columnOf(pos_)));
+  }
+  return take(TokenKind::Comment, close - pos_ + 1);
+}
+
+Token Lexer::programMarker() {
+  for (std::size_t i = lineStart_; i < pos_; ++i) {
+    if (!isBlank(source_[i])) fail(pos_, "'%' only on a line of its own");
+  }
+  Token token = take(TokenKind::ProgramMarker, 1);
+  skipBlanks();
+  if (pos_ < source_.size() && !isLineEnd(source_[pos_])) fail(pos_, "the end of the line after '%'");
+  return token;
+}
+
+Token Lexer::number() {
+  const std::size_t start = pos_;
+  if (isSign(source_[pos_])) ++pos_;
+  std::size_t digits = skipDigits();
+  if (pos_ < source_.size() && source_[pos_] == '.') {
+    ++pos_;
+    digits += skipDigits();
+  }
+  if (digits == 0) {
+    const std::string_view spelling = nonFiniteSpellingAt(source_, start);
+    if (!spelling.empty()) {
+      throw ParseError({file_, line_, columnOf(start)}, "a finite number", std::string(spelling));
+    }
+    fail(pos_, "a digit");
+  }
+  if (pos_ < source_.size() && source_[pos_] == '.') fail(pos_, "a single decimal point in a number");
+  const std::size_t end = pos_;
+  pos_ = start;
+  return take(TokenKind::Number, end - start);
+}
+
+void Lexer::skipBlanks() {
+  while (pos_ < source_.size() && isBlank(source_[pos_])) ++pos_;
+}
+
+std::size_t Lexer::skipDigits() {
+  const std::size_t start = pos_;
+  while (pos_ < source_.size() && isDigit(source_[pos_])) ++pos_;
+  return pos_ - start;
+}
+
+Token Lexer::take(TokenKind kind, std::size_t length) {
+  Token token{kind, source_.substr(pos_, length), pos_, line_, columnOf(pos_)};
+  pos_ += length;
+  return token;
+}
+
+int Lexer::columnOf(std::size_t offset) const { return static_cast<int>(offset - lineStart_) + 1; }
+
+void Lexer::fail(std::size_t offset, const std::string& expected) const {
+  throw ParseError({file_, line_, columnOf(offset)}, expected, describeSourceAt(source_, offset));
+}
+
+std::vector<Token> tokenize(std::string_view source, const std::string& file) {
+  Lexer lexer(source, file);
+  std::vector<Token> tokens;
+  do {
+    tokens.push_back(lexer.next());
+  } while (tokens.back().kind != TokenKind::EndOfInput);
+  return tokens;
+}
+
+}  // namespace cyclecert

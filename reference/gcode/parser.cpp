@@ -1,0 +1,206 @@
+#include "reference/gcode/parser.h"
+
+#include <charconv>
+#include <cmath>
+#include <system_error>
+#include <utility>
+
+#include "reference/gcode/lexer.h"
+
+namespace cyclecert {
+
+namespace {
+
+// FANUC accepts sequence numbers N1 to N99999.
+constexpr double kLargestSequenceNumber = 99999;
+// A double holds any 15 significant decimal digits exactly; more would silently change the value.
+constexpr int kMostSignificantDigits = 15;
+
+// Digits from the first non-zero one on: "-0.0061" has 2, "1.500" has 4.
+int significantDigits(std::string_view number) {
+  int count = 0;
+  for (char c : number) {
+    if (c < '0' || c > '9') continue;
+    if (count > 0 || c != '0') ++count;
+  }
+  return count;
+}
+
+bool isUnsignedWholeNumber(std::string_view number) {
+  return number.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+bool hasDecimalPoint(std::string_view number) { return number.find('.') != std::string_view::npos; }
+
+class ProgramParser {
+ public:
+  ProgramParser(std::string_view text, const std::string& file)
+      : lexer_(text, file), current_(lexer_.next()) {}
+
+  Program parse() {
+    program_.file = lexer_.file();
+    while (current_.kind != TokenKind::EndOfInput) {
+      if (current_.kind == TokenKind::ProgramMarker) {
+        advance();  // '%' lines only frame the program
+        continue;
+      }
+      parseBlock();
+    }
+    return std::move(program_);
+  }
+
+ private:
+  // Returns the current token and moves on to the next one.
+  Token advance() {
+    Token taken = std::exchange(current_, lexer_.next());
+    consumedEnd_ = taken.offset + taken.text.size();
+    return taken;
+  }
+
+  bool atBlockEnd() const {
+    return current_.kind == TokenKind::EndOfBlock || current_.kind == TokenKind::EndOfInput ||
+           current_.kind == TokenKind::ProgramMarker;
+  }
+
+  void parseBlock() {
+    Block block;
+    block.line = current_.line;
+    const std::size_t begin = current_.offset;
+    consumedEnd_ = begin;
+    if (current_.kind == TokenKind::BlockDelete) {
+      block.blockDelete = true;
+      advance();
+    }
+    while (!atBlockEnd()) parseBlockItem(block);
+    block.text = std::string(lexer_.source().substr(begin, consumedEnd_ - begin));
+    if (current_.kind == TokenKind::EndOfBlock) advance();
+    if (!block.words.empty() || block.sequence) program_.blocks.push_back(std::move(block));
+  }
+
+  void parseBlockItem(Block& block) {
+    switch (current_.kind) {
+      case TokenKind::Comment:
+        appendComment(block, advance().commentBody());
+        return;
+      case TokenKind::Letter:
+        parseWord(block);
+        return;
+      case TokenKind::Number:
+        fail(current_, "an address letter before the number", std::string(current_.text));
+      case TokenKind::BlockDelete:
+        fail(current_, "'/' only at the start of a block", "/");
+      case TokenKind::EndOfBlock:
+      case TokenKind::ProgramMarker:
+      case TokenKind::EndOfInput:
+        break;
+    }
+  }
+
+  static void appendComment(Block& block, std::string_view body) {
+    if (!block.comment.empty()) block.comment += ' ';
+    block.comment += body;
+  }
+
+  void parseWord(Block& block) {
+    const Token letter = advance();
+    if (current_.kind != TokenKind::Number) failMissingNumber(letter);
+    const Token number = advance();
+    Word word;
+    word.letter = letter.letter();
+    word.value = valueOf(number);
+    word.hasDecimalPoint = hasDecimalPoint(number.text);
+    word.text = std::string(lexer_.source().substr(letter.offset, consumedEnd_ - letter.offset));
+    word.line = letter.line;
+    word.column = letter.column;
+    switch (word.letter) {
+      case 'N':
+        setSequence(block, letter, number, word);
+        break;
+      case 'O':
+        setProgramNumber(letter, number, word);
+        break;
+      default:
+        block.words.push_back(std::move(word));
+    }
+  }
+
+  double valueOf(const Token& number) const {
+    const std::string text(number.text);
+    if (significantDigits(text) > kMostSignificantDigits) {
+      fail(number, "a number of at most 15 significant digits", text);
+    }
+    // from_chars takes a leading '-' but not a leading '+'.
+    const std::string_view digits = text.front() == '+' ? number.text.substr(1) : number.text;
+    double value = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (error != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(value)) {
+      fail(number, "a number within the range of a double", text);
+    }
+    return value;
+  }
+
+  void setSequence(Block& block, const Token& letter, const Token& number, const Word& word) const {
+    if (block.sequence) fail(letter, "one sequence number per block", word.text);
+    if (!isUnsignedWholeNumber(number.text)) {
+      fail(number, "a sequence number without sign or decimal point", std::string(number.text));
+    }
+    if (word.value > kLargestSequenceNumber) {
+      fail(number, "a sequence number of at most 5 digits", std::string(number.text));
+    }
+    block.sequence = static_cast<long>(word.value);
+  }
+
+  void setProgramNumber(const Token& letter, const Token& number, const Word& word) {
+    if (program_.number) fail(letter, "one program number per file", word.text);
+    if (!isUnsignedWholeNumber(number.text)) {
+      fail(number, "a program number without sign or decimal point", std::string(number.text));
+    }
+    program_.number = static_cast<long>(word.value);
+  }
+
+  [[noreturn]] void failMissingNumber(const Token& letter) const {
+    const std::string address(1, letter.letter());
+    if (current_.kind == TokenKind::Letter) {
+      const std::string_view spelling = nonFiniteSpellingAt(lexer_.source(), current_.offset);
+      if (!spelling.empty()) {
+        fail(current_, "a finite number after address " + address, std::string(spelling));
+      }
+    }
+    fail(current_, "a number after address " + address, describe(current_));
+  }
+
+  static std::string describe(const Token& token) {
+    switch (token.kind) {
+      case TokenKind::Comment:
+        return "a comment";
+      case TokenKind::EndOfBlock:
+        return token.text == ";" ? ";" : "end of line";
+      case TokenKind::EndOfInput:
+        return "end of input";
+      case TokenKind::Letter:
+      case TokenKind::Number:
+      case TokenKind::ProgramMarker:
+      case TokenKind::BlockDelete:
+        break;
+    }
+    return std::string(token.text);
+  }
+
+  [[noreturn]] void fail(const Token& at, const std::string& expected,
+                         const std::string& found) const {
+    throw ParseError({lexer_.file(), at.line, at.column}, expected, found);
+  }
+
+  Lexer lexer_;
+  Token current_;
+  std::size_t consumedEnd_ = 0;  // source offset just past the last token taken
+  Program program_;
+};
+
+}  // namespace
+
+Program parseProgram(std::string_view text, const std::string& file) {
+  return ProgramParser(text, file).parse();
+}
+
+}  // namespace cyclecert

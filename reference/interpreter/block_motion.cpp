@@ -1,0 +1,78 @@
+#include "reference/interpreter/block_motion.h"
+
+#include <cmath>
+
+#include "reference/model/alarms.h"
+
+namespace cyclecert {
+
+namespace {
+constexpr double kArcRadiusTolerance = 0.01;  // mm; FANUC's parameter 3410 plays this role
+
+struct AxisLetters {
+  char axis, absolute, incremental;
+  bool diameter;
+};
+constexpr AxisLetters kAxes[] = {{'X', 'X', 'U', true}, {'Y', 'Y', 'V', false}, {'Z', 'Z', 'W', false}};
+}  // namespace
+
+double physicalLength(double programmed, bool diameterAxis, const ModalState& s) {
+  return programmed * s.unitScale() / (diameterAxis ? 2.0 : 1.0);
+}
+
+bool hasAxisWord(const Block& b) {
+  for (const AxisLetters& a : kAxes) {
+    if (b.has(a.absolute) || b.has(a.incremental)) return true;
+  }
+  return false;
+}
+
+AxisPosition targetPosition(const Block& b, const ModalState& s) {
+  AxisPosition p = s.position;
+  for (const AxisLetters& a : kAxes) {
+    if (const Word* w = b.find(a.absolute)) p[a.axis] = physicalLength(w->value, a.diameter, s);
+    if (const Word* w = b.find(a.incremental)) p[a.axis] += physicalLength(w->value, a.diameter, s);
+  }
+  return p;
+}
+
+std::optional<Segment> motionSegment(const Block& b, int motion, const ModalState& s) {
+  const PlaneAxes axes = s.axes();
+  const AxisPosition target = targetPosition(b, s);
+  Segment seg;
+  seg.sourceLine = b.line;
+  seg.from = s.planePoint();
+  seg.to = {target[axes.first], target[axes.second]};
+  if (motion != 2 && motion != 3) {
+    if (distance(seg.from, seg.to) <= kGeomEps) return std::nullopt;
+    return seg;
+  }
+  seg.kind = motion == 2 ? SegmentKind::ArcCW : SegmentKind::ArcCCW;
+  if (const Word* r = b.find('R')) {
+    const auto center = arcCenterFromRadius(seg.from, seg.to, r->value * s.unitScale(), seg.kind);
+    if (!center) {
+      throw CycleAlarm(alarm::kIllegalRadius, b.line,
+                       "R" + r->text.substr(1) + " is shorter than half the chord, or the end point equals the start");
+    }
+    seg.center = *center;
+    return seg;
+  }
+  const Word* i1 = b.find(axes.firstArc);
+  const Word* i2 = b.find(axes.secondArc);
+  if (!i1 && !i2) {
+    throw CycleAlarm(alarm::kIllegalRadius, b.line, std::string("arc without R or ") + axes.firstArc +
+                                                        "/" + axes.secondArc + " centre words");
+  }
+  // I, J, K are radius values whatever the axis's diameter programming.
+  seg.center = seg.from + Point{i1 ? i1->value * s.unitScale() : 0.0, i2 ? i2->value * s.unitScale() : 0.0};
+  const double r0 = distance(seg.from, seg.center);
+  const double r1 = distance(seg.to, seg.center);
+  if (std::abs(r0 - r1) > kArcRadiusTolerance || r0 <= kGeomEps) {
+    throw CycleAlarm(alarm::kRadiusTolerance, b.line,
+                     "the end point is not on the circle (radius at start " + std::to_string(r0) +
+                         " mm, at end " + std::to_string(r1) + " mm)");
+  }
+  return seg;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,16 @@
+#pragma once
+// Runs a program through the reference controller model: tracks modal state and position block by
+// block and plans every canned cycle. The toolpath starts at the first cycle's start point A and
+// holds every move from there on (positioning blocks between cycles included, phase "program").
+#include "reference/model/params.h"
+#include "reference/model/profile.h"
+#include "reference/model/program.h"
+#include "reference/model/toolpath.h"
+
+namespace cyclecert {
+
+// A controller alarm ends the run: the toolpath keeps the moves made before it and names the alarm.
+// Throws NotSupported for what the reference cannot plan yet (e.g. type II).
+Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params);
+
+}  // namespace cyclecert

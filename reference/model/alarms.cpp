@@ -1,0 +1,36 @@
+#include "reference/model/alarms.h"
+
+#include <map>
+
+namespace cyclecert {
+
+std::string alarmTitle(std::string_view code) {
+  static const std::map<std::string_view, std::string_view> titles = {
+      {alarm::kOutOfRange, "TOO MANY DIGITS (value outside the address's range)"},
+      {alarm::kImproperGCode, "IMPROPER G-CODE"},
+      {alarm::kFeedZero, "FEED ZERO (COMMAND)"},
+      {alarm::kRadiusTolerance, "OVER TOLERANCE OF RADIUS"},
+      {alarm::kIllegalRadius, "ILLEGAL RADIUS COMMAND"},
+      {alarm::kPQMissing, "P OR Q COMMAND IS NOT IN THE MULTIPLE REPETITIVE CYCLES BLOCK"},
+      {alarm::kCuttingAmount, "THE CUTTING AMOUNT IS ILLEGAL IN THE ROUGH CUTTING CYCLE"},
+      {alarm::kSequenceNotFound, "THE BLOCK OF A SEQUENCE NUMBER SPECIFIED BY P OR Q IS NOT FOUND"},
+      {alarm::kNotMonotonicFirst, "FINISHING SHAPE IS NOT A MONOTONOUS CHANGE (FIRST AXIS)"},
+      {alarm::kHeadNotG00G01, "G00/G01 IS NOT IN THE FIRST BLOCK OF SHAPE PROGRAM"},
+      {alarm::kOverStartPoint, "FINISHING SHAPE WHICH OVER OF STARTING POINT"},
+      {alarm::kUnavailableInShape, "UNAVAILABLE COMMAND IS IN SHAPE PROGRAM"},
+      {alarm::kNotMonotonicSecond, "FINISHING SHAPE IS NOT A MONOTONOUS CHANGE (SECOND AXIS)"},
+  };
+  const auto it = titles.find(code);
+  return it == titles.end() ? std::string("ALARM") : std::string(it->second);
+}
+
+CycleAlarm::CycleAlarm(std::string_view code, int line, std::string detail) {
+  alarm_.code = std::string(code);
+  alarm_.line = line;
+  alarm_.message = alarmTitle(code) + ": " + detail;
+}
+
+NotSupported::NotSupported(int line, const std::string& what)
+    : std::runtime_error("line " + std::to_string(line) + ": " + what), line_(line) {}
+
+}  // namespace cyclecert

@@ -1,0 +1,52 @@
+#pragma once
+// Controller alarms the reference raises, with FANUC 0i-F's codes. The seeds name PS0064, PS0065,
+// PS0325 and PS0329; the other codes come from FANUC 0i-F's alarm list (see specs/rules.json notes).
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "reference/model/toolpath.h"
+
+namespace cyclecert {
+
+namespace alarm {
+inline constexpr std::string_view kOutOfRange = "PS0003";        // too many digits / outside the range table
+inline constexpr std::string_view kImproperGCode = "PS0010";     // G code the controller does not have
+inline constexpr std::string_view kFeedZero = "PS0011";          // cutting feed with F = 0
+inline constexpr std::string_view kRadiusTolerance = "PS0020";   // I/K arc end not on the circle
+inline constexpr std::string_view kIllegalRadius = "PS0023";     // R arc impossible / arc without R, I, K
+inline constexpr std::string_view kPQMissing = "PS0061";         // P or Q missing in the cycle block
+inline constexpr std::string_view kCuttingAmount = "PS0062";     // Δd not positive
+inline constexpr std::string_view kSequenceNotFound = "PS0063";  // block named by P (or Q) not found
+inline constexpr std::string_view kNotMonotonicFirst = "PS0064";   // 1st plane axis (Z)
+inline constexpr std::string_view kHeadNotG00G01 = "PS0065";
+inline constexpr std::string_view kOverStartPoint = "PS0322";
+inline constexpr std::string_view kUnavailableInShape = "PS0325";
+inline constexpr std::string_view kNotMonotonicSecond = "PS0329";  // 2nd plane axis (X)
+}  // namespace alarm
+
+// The controller's title for an alarm code ("FINISHING SHAPE IS NOT MONOTONOUS (FIRST AXIS)").
+std::string alarmTitle(std::string_view code);
+
+// Thrown by the reference where the controller would stop with an alarm.
+class CycleAlarm : public std::exception {
+ public:
+  CycleAlarm(std::string_view code, int line, std::string detail);
+  const Alarm& alarm() const { return alarm_; }
+  const char* what() const noexcept override { return alarm_.message.c_str(); }
+
+ private:
+  Alarm alarm_;
+};
+
+// Thrown where a program needs a capability the reference does not have yet (e.g. type II).
+class NotSupported : public std::runtime_error {
+ public:
+  NotSupported(int line, const std::string& what);
+  int line() const { return line_; }
+
+ private:
+  int line_;
+};
+
+}  // namespace cyclecert

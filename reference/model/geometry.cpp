@@ -1,0 +1,177 @@
+#include "reference/model/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cyclecert {
+
+namespace {
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+double angleOf(Point p, Point center) { return std::atan2(p.x - center.x, p.z - center.z); }
+
+// Angle in [0, 2π).
+double normalized(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+
+// How far along the arc (0 at `from`, |sweep| at `to`) the angle `a` lies, or nothing when the
+// angle is outside the arc's span (with a small angular tolerance).
+std::optional<double> offsetAlongArc(const Segment& s, double a) {
+  const double start = angleOf(s.from, s.center);
+  const double span = std::abs(sweep(s));
+  double off = s.kind == SegmentKind::ArcCCW ? normalized(a - start) : normalized(start - a);
+  const double angularTol = 1e-9;
+  if (off > kTwoPi - angularTol) off = 0;  // just before the start counts as the start
+  if (off <= span + angularTol) return std::min(off, span);
+  return std::nullopt;
+}
+}  // namespace
+
+Point operator+(Point a, Point b) { return {a.z + b.z, a.x + b.x}; }
+Point operator-(Point a, Point b) { return {a.z - b.z, a.x - b.x}; }
+Point operator*(double k, Point a) { return {k * a.z, k * a.x}; }
+double distance(Point a, Point b) { return std::hypot(a.z - b.z, a.x - b.x); }
+bool nearlyEqual(Point a, Point b, double tol) {
+  return std::abs(a.z - b.z) <= tol && std::abs(a.x - b.x) <= tol;
+}
+
+double Segment::radius() const { return isArc() ? distance(from, center) : 0.0; }
+
+double Segment::length() const {
+  return isArc() ? std::abs(sweep(*this)) * radius() : distance(from, to);
+}
+
+Segment Segment::shifted(Point by) const {
+  Segment s = *this;
+  s.from = from + by;
+  s.to = to + by;
+  s.center = center + by;
+  return s;
+}
+
+SegmentKind reversedKind(SegmentKind k) {
+  if (k == SegmentKind::ArcCW) return SegmentKind::ArcCCW;
+  if (k == SegmentKind::ArcCCW) return SegmentKind::ArcCW;
+  return k;
+}
+
+Segment Segment::reversed() const {
+  Segment s = *this;
+  std::swap(s.from, s.to);
+  s.kind = reversedKind(kind);
+  return s;
+}
+
+double sweep(const Segment& s) {
+  if (!s.isArc()) return 0;
+  const double a0 = angleOf(s.from, s.center);
+  const double a1 = angleOf(s.to, s.center);
+  // A closed arc (from == to) is a full circle.
+  const bool full = nearlyEqual(s.from, s.to);
+  if (s.kind == SegmentKind::ArcCCW) {
+    const double d = normalized(a1 - a0);
+    return (full || d == 0) ? kTwoPi : d;
+  }
+  const double d = normalized(a0 - a1);
+  return -((full || d == 0) ? kTwoPi : d);
+}
+
+Point pointAt(const Segment& s, double t) {
+  if (!s.isArc()) return s.from + t * (s.to - s.from);
+  const double a = angleOf(s.from, s.center) + t * sweep(s);
+  const double r = s.radius();
+  return {s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)};
+}
+
+Point transposed(Point p) { return {p.x, p.z}; }
+
+Segment transposed(const Segment& s) {
+  Segment t = s;
+  t.from = transposed(s.from);
+  t.to = transposed(s.to);
+  t.center = transposed(s.center);
+  // Exchanging the axes mirrors the plane, so clockwise becomes counter-clockwise.
+  t.kind = reversedKind(s.kind);
+  return t;
+}
+
+std::vector<Point> intersectWithLevelX(const Segment& s, double level) {
+  std::vector<Point> hits;
+  if (!s.isArc()) {
+    const double dx = s.to.x - s.from.x;
+    if (std::abs(dx) <= kGeomEps) {
+      if (std::abs(s.from.x - level) <= kGeomEps) hits = {s.from, s.to};
+      return hits;
+    }
+    const double t = (level - s.from.x) / dx;
+    if (t >= -kGeomEps && t <= 1 + kGeomEps) {
+      const double tc = std::clamp(t, 0.0, 1.0);
+      hits.push_back({s.from.z + tc * (s.to.z - s.from.z), level});
+    }
+    return hits;
+  }
+  const double r = s.radius();
+  const double dx = level - s.center.x;
+  if (std::abs(dx) > r + kGeomEps) return hits;
+  const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
+  std::vector<std::pair<double, Point>> ordered;
+  for (double sign : {-1.0, 1.0}) {
+    const Point p{s.center.z + sign * h, level};
+    if (auto off = offsetAlongArc(s, angleOf(p, s.center))) ordered.push_back({*off, p});
+  }
+  std::sort(ordered.begin(), ordered.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [off, p] : ordered) {
+    if (hits.empty() || !nearlyEqual(hits.back(), p, 1e-12)) hits.push_back(p);
+  }
+  return hits;
+}
+
+std::vector<Point> apexesAlong(const Segment& s) {
+  std::vector<std::pair<double, Point>> found;
+  if (!s.isArc()) return {};
+  const double r = s.radius();
+  for (int k = 0; k < 4; ++k) {
+    const double a = k * std::numbers::pi / 2;
+    if (auto off = offsetAlongArc(s, a); off && *off > 0 && *off < std::abs(sweep(s))) {
+      found.push_back({*off, {s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)}});
+    }
+  }
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Point> points;
+  for (const auto& f : found) points.push_back(f.second);
+  return points;
+}
+
+Extent extent(const Segment& s) {
+  Extent e{std::min(s.from.z, s.to.z), std::max(s.from.z, s.to.z), std::min(s.from.x, s.to.x),
+           std::max(s.from.x, s.to.x)};
+  for (Point p : apexesAlong(s)) {
+    e.zMin = std::min(e.zMin, p.z);
+    e.zMax = std::max(e.zMax, p.z);
+    e.xMin = std::min(e.xMin, p.x);
+    e.xMax = std::max(e.xMax, p.x);
+  }
+  return e;
+}
+
+std::optional<Point> arcCenterFromRadius(Point from, Point to, double r, SegmentKind dir) {
+  const double chord = distance(from, to);
+  if (chord <= kGeomEps || !std::isfinite(r) || std::abs(r) * 2 < chord - 1e-6) return std::nullopt;
+  const double half = chord / 2;
+  const double h = std::sqrt(std::max(0.0, r * r - half * half));
+  const Point mid = 0.5 * (from + to);
+  const Point unit = (1.0 / chord) * (to - from);
+  const Point right{unit.x, -unit.z};  // direction rotated by −90° (to the right of travel)
+  // A clockwise arc of at most 180° has its centre to the right of the chord; R < 0 asks for the
+  // larger arc, whose centre is on the other side.
+  double side = dir == SegmentKind::ArcCW ? 1.0 : -1.0;
+  if (r < 0) side = -side;
+  return mid + (side * h) * right;
+}
+
+}  // namespace cyclecert

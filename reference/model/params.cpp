@@ -1,0 +1,97 @@
+#include "reference/model/params.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace cyclecert {
+
+const std::vector<ParamSpec>& MachineParams::catalogue() {
+  // Defaults are the controller's shipped values (FANUC 0i-F: all zero); profiles override them.
+  static const std::vector<ParamSpec> specs = {
+      {"5132", "", false, 0.0, "mm (radius)",
+       "Depth of cut Δd of G71/G72 when the first cycle block gives none; a programmed Δd overwrites it",
+       {"G71.DD.MODAL", "G72.DD"}},
+      {"5133", "", false, 0.0, "mm (radius)",
+       "Retract amount e of G71/G72 when the first cycle block gives none; a programmed e overwrites it",
+       {"G71.E.MODAL", "G72.DD"}},
+      {"5145", "", false, 0.0, "mm",
+       "Allowed non-monotonic motion on the plane's 1st axis (Z) before alarm PS0064",
+       {"G71.T1.ALARM"}},
+      {"5146", "", false, 0.0, "mm (radius)",
+       "Allowed non-monotonic motion on the plane's 2nd axis (X) before alarm PS0329",
+       {"G71.T1.ALARM"}},
+      {"5105#1", "RF1", true, 0.0, "bit",
+       "1: type I G71/G72 makes no semi-finish pass after the last rough cut",
+       {"G71.T1.SEMIFIN"}},
+      {"5108#1", "DTP", true, 0.0, "bit",
+       "1: type I G71/G72 return straight from the shape's end point to the cycle start",
+       {"G71.DTP", "G72.STEP8"}},
+  };
+  return specs;
+}
+
+namespace {
+bool sameName(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
+         });
+}
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+}  // namespace
+
+const ParamSpec* MachineParams::find(std::string_view name) {
+  name = trimmed(name);
+  for (const ParamSpec& p : catalogue()) {
+    if (sameName(p.number, name) || (!p.mnemonic.empty() && sameName(p.mnemonic, name))) return &p;
+  }
+  return nullptr;
+}
+
+MachineParams::MachineParams() {
+  for (const ParamSpec& p : catalogue()) values_[p.number] = p.defaultValue;
+}
+
+static const ParamSpec& require(std::string_view name) {
+  const ParamSpec* p = MachineParams::find(name);
+  if (!p) {
+    throw UnknownParam("unknown parameter '" + std::string(name) +
+                       "' (see `cyclecert params`; name it by number like 5105#1 or mnemonic like RF1)");
+  }
+  return *p;
+}
+
+double MachineParams::get(std::string_view name) const { return values_.at(require(name).number); }
+
+void MachineParams::set(std::string_view name, double value) {
+  const ParamSpec& p = require(name);
+  const std::string label = p.mnemonic.empty() ? p.number : p.number + " (" + p.mnemonic + ")";
+  if (!std::isfinite(value)) throw std::invalid_argument("parameter " + label + ": value must be a finite number");
+  if (p.isBit && value != 0 && value != 1) {
+    throw std::invalid_argument("parameter " + label + " is a bit: expected 0 or 1");
+  }
+  if (!p.isBit && value < 0) throw std::invalid_argument("parameter " + label + ": expected a value ≥ 0");
+  values_[p.number] = value;
+}
+
+void MachineParams::setFromText(std::string_view assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string_view::npos) {
+    throw std::invalid_argument("parameter '" + std::string(assignment) + "': expected NAME=VALUE");
+  }
+  const std::string_view value = trimmed(assignment.substr(eq + 1));
+  double v = 0;
+  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+  if (value.empty() || ec != std::errc() || end != value.data() + value.size()) {
+    throw std::invalid_argument("parameter '" + std::string(assignment) + "': expected a number after '='");
+  }
+  set(assignment.substr(0, eq), v);
+}
+
+}  // namespace cyclecert

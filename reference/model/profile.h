@@ -1,0 +1,25 @@
+#pragma once
+// A profile: dialect + controller model. It decides what the documents leave to the controller:
+// parameter defaults, which shape-program G codes are tolerated, and the alarm texts.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "reference/model/params.h"
+
+namespace cyclecert {
+
+struct Profile {
+  std::string name;         // "fanuc-0i-f", "gsk"
+  std::string description;
+  std::string seed;         // the source document the profile follows
+  MachineParams defaults;   // parameter values before the case's or the CLI's settings
+  // GSK (seed 001) accepts G40/G41/G42 inside ns…nf and ignores them during roughing; FANUC 0i-F
+  // raises PS0325 unless NT1 (issue 3).
+  bool toleratesTnrcInShape = false;
+};
+
+const Profile* findProfile(std::string_view name);
+const std::vector<Profile>& allProfiles();
+
+}  // namespace cyclecert

@@ -1,0 +1,67 @@
+#pragma once
+// A parsed ISO-6983 (G-code) program: blocks of address words, each word remembering where it
+// stood in the source, so that every error and alarm can name file, line and column.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cyclecert {
+
+struct SourceLoc {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+struct Word {
+  char letter = 0;          // upper case address letter
+  double value = 0;         // the number as written (no unit conversion, no scaling)
+  bool hasDecimalPoint = false;
+  std::string text;         // the source text of the word, e.g. "X-0.6"
+  int line = 0;
+  int column = 0;
+};
+
+struct Block {
+  int line = 0;                    // source line where the block starts
+  std::optional<long> sequence;    // N number
+  std::vector<Word> words;         // in source order, N and O excluded
+  std::string comment;             // text of (...) comments, joined
+  bool blockDelete = false;        // leading '/'
+  std::string text;                // the block's source text
+
+  const Word* find(char letter) const;            // first word with that address
+  std::vector<const Word*> all(char letter) const;
+  bool has(char letter) const { return find(letter) != nullptr; }
+  // True when a G word with this code is present; code is ×10 (G74.1 -> 741, G01 -> 10).
+  bool hasG(int codeTimes10) const;
+};
+
+struct Program {
+  std::string file;
+  std::optional<long> number;  // O number
+  std::vector<Block> blocks;
+
+  // Index of the first block with sequence number n, or nothing.
+  std::optional<std::size_t> findSequence(long n) const;
+};
+
+// Malformed source text: where, and what was expected there.
+class ParseError : public std::runtime_error {
+ public:
+  ParseError(SourceLoc loc, std::string expected, std::string found);
+  const SourceLoc& loc() const { return loc_; }
+  const std::string& expected() const { return expected_; }
+  const std::string& found() const { return found_; }
+
+ private:
+  SourceLoc loc_;
+  std::string expected_;
+  std::string found_;
+};
+
+// G-code value ×10 rounded, so G74.1 compares as 741 and G01 as 10.
+int gCode10(double value);
+
+}  // namespace cyclecert

@@ -1,0 +1,63 @@
+#pragma once
+// The canonical result of any engine: moves in physical coordinates (mm, x = radius, plane mapped
+// onto ZX), or an alarm. The reference annotates each move with its phase and the rule IDs behind it.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "reference/model/geometry.h"
+
+namespace cyclecert {
+
+enum class MoveKind { Rapid, Feed };
+
+struct Move {
+  MoveKind kind = MoveKind::Rapid;
+  SegmentKind shape = SegmentKind::Line;
+  Point to;
+  std::optional<Point> center;  // arcs only
+  std::optional<double> feed;   // feeds only (mm/min or mm/rev as programmed)
+  std::string phase;            // approach | pass | semi-finish | return (reference only)
+  int pass = 0;                 // pass number for phase "pass" (1-based), else 0
+  std::vector<std::string> rules;
+};
+
+// A controller alarm: the code (e.g. "PS0064"), its message, and the program line it names.
+struct Alarm {
+  std::string code;
+  std::string message;
+  int line = 0;
+};
+
+struct Warning {
+  int line = 0;
+  std::string message;
+};
+
+// Where one canned cycle's moves sit in the toolpath.
+struct CycleRecord {
+  std::string code;  // "G71", "G72"
+  int line = 0;      // line of the block with P and Q
+  Point start;       // cycle start point A
+  std::size_t firstMove = 0;
+  std::size_t moveCount = 0;
+  std::vector<Segment> shape;  // the finish shape A → B → C of ns…nf
+  Point allowance;             // the rough profile is `shape` shifted by this (Δw, Δu/2)
+};
+
+struct Toolpath {
+  std::string profile;
+  std::string plane = "G18";  // the program's plane; coordinates are mapped onto (z = 1st, x = 2nd axis)
+  Point start;                // tool position before the first move
+  std::vector<Move> moves;
+  std::optional<Alarm> alarm;
+  std::vector<Warning> warnings;
+  std::vector<CycleRecord> cycles;
+
+  // The position before move i (the previous move's end, or `start`).
+  Point from(std::size_t i) const { return i == 0 ? start : moves[i - 1].to; }
+  // Move i as a geometric segment.
+  Segment segment(std::size_t i) const;
+};
+
+}  // namespace cyclecert

@@ -1,0 +1,102 @@
+#include "reference/model/toolpath_json.h"
+
+#include <cmath>
+
+namespace cyclecert {
+
+using nlohmann::json;
+
+std::string kindName(MoveKind k) { return k == MoveKind::Rapid ? "rapid" : "feed"; }
+
+std::string shapeName(SegmentKind s) {
+  switch (s) {
+    case SegmentKind::Line: return "line";
+    case SegmentKind::ArcCW: return "arc_cw";
+    case SegmentKind::ArcCCW: return "arc_ccw";
+  }
+  return "line";
+}
+
+json toJson(Point p) { return json{{"x", p.x}, {"z", p.z}}; }
+
+json toJson(const Move& m) {
+  json j{{"kind", kindName(m.kind)}, {"shape", shapeName(m.shape)}, {"to", toJson(m.to)}};
+  if (m.center) j["center"] = toJson(*m.center);
+  if (m.feed) j["feed"] = *m.feed;
+  if (!m.phase.empty()) j["phase"] = m.phase;
+  if (m.pass > 0) j["pass"] = m.pass;
+  if (!m.rules.empty()) j["rules"] = m.rules;
+  return j;
+}
+
+json toJson(const Toolpath& t) {
+  json moves = json::array();
+  for (const Move& m : t.moves) moves.push_back(toJson(m));
+  json warnings = json::array();
+  for (const Warning& w : t.warnings) warnings.push_back({{"line", w.line}, {"message", w.message}});
+  json cycles = json::array();
+  for (const CycleRecord& c : t.cycles) {
+    json shape = json::array();
+    for (const Segment& s : c.shape) {
+      json seg{{"shape", shapeName(s.kind)}, {"from", toJson(s.from)}, {"to", toJson(s.to)}, {"line", s.sourceLine}};
+      if (s.isArc()) seg["center"] = toJson(s.center);
+      shape.push_back(seg);
+    }
+    cycles.push_back({{"code", c.code}, {"line", c.line}, {"start", toJson(c.start)},
+                      {"first_move", c.firstMove}, {"move_count", c.moveCount},
+                      {"shape", shape}, {"allowance", toJson(c.allowance)}});
+  }
+  json alarm = nullptr;
+  if (t.alarm) alarm = {{"code", t.alarm->code}, {"message", t.alarm->message}, {"line", t.alarm->line}};
+  return json{{"profile", t.profile}, {"units", "mm"},   {"plane", t.plane},
+              {"start", toJson(t.start)}, {"moves", moves}, {"alarm", alarm},
+              {"warnings", warnings},      {"cycles", cycles}};
+}
+
+namespace {
+[[noreturn]] void fail(const std::string& where, const std::string& expected) {
+  throw ToolpathFormatError(where + ": expected " + expected);
+}
+
+double finiteNumber(const json& j, const std::string& where) {
+  if (!j.is_number()) fail(where, "a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(where, "a finite number");
+  return v;
+}
+}  // namespace
+
+Point pointFromJson(const json& j, const std::string& where) {
+  if (!j.is_object()) fail(where, "an object {\"x\": radius, \"z\": z}");
+  for (const char* axis : {"x", "z"}) {
+    if (!j.contains(axis)) fail(where + "/" + axis, "a number (field missing)");
+  }
+  return {finiteNumber(j["z"], where + "/z"), finiteNumber(j["x"], where + "/x")};
+}
+
+Move moveFromJson(const json& j, const std::string& where) {
+  if (!j.is_object()) fail(where, "a move object");
+  Move m;
+  if (!j.contains("kind") || !j["kind"].is_string()) fail(where + "/kind", "\"rapid\" or \"feed\"");
+  const std::string kind = j["kind"];
+  if (kind == "rapid") m.kind = MoveKind::Rapid;
+  else if (kind == "feed") m.kind = MoveKind::Feed;
+  else fail(where + "/kind", "\"rapid\" or \"feed\", found \"" + kind + "\"");
+  const std::string shape = j.value("shape", std::string("line"));
+  if (shape == "line") m.shape = SegmentKind::Line;
+  else if (shape == "arc_cw") m.shape = SegmentKind::ArcCW;
+  else if (shape == "arc_ccw") m.shape = SegmentKind::ArcCCW;
+  else fail(where + "/shape", "\"line\", \"arc_cw\" or \"arc_ccw\", found \"" + shape + "\"");
+  if (!j.contains("to")) fail(where + "/to", "a point (field missing)");
+  m.to = pointFromJson(j["to"], where + "/to");
+  if (m.shape != SegmentKind::Line) {
+    if (!j.contains("center")) fail(where + "/center", "a point for an arc (field missing)");
+    m.center = pointFromJson(j["center"], where + "/center");
+  }
+  if (j.contains("feed")) m.feed = finiteNumber(j["feed"], where + "/feed");
+  if (j.contains("phase") && j["phase"].is_string()) m.phase = j["phase"];
+  if (j.contains("pass") && j["pass"].is_number_integer()) m.pass = j["pass"];
+  return m;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,39 @@
+#include "reference/model/profile.h"
+
+namespace cyclecert {
+
+namespace {
+Profile fanuc0iF() {
+  Profile p;
+  p.name = "fanuc-0i-f";
+  p.description = "FANUC Series 0i-F lathe (T series), G code system A, diameter programming";
+  p.seed = "000_036281bf73fad5d1.txt";
+  return p;
+}
+
+Profile gsk() {
+  Profile p;
+  p.name = "gsk";
+  p.description = "GSK-style lathe controller of seed 001 (FANUC-compatible parameter numbers)";
+  p.seed = "001_f6c35fe49e180329.txt";
+  // G72.STEP8: this manual returns straight from C' to A, which FANUC calls DTP=1.
+  p.defaults.set("DTP", 1);
+  // G72.NSNF.GCODES: G40/G41/G42 are allowed in ns…nf and only take effect in G70.
+  p.toleratesTnrcInShape = true;
+  return p;
+}
+}  // namespace
+
+const std::vector<Profile>& allProfiles() {
+  static const std::vector<Profile> profiles = {fanuc0iF(), gsk()};
+  return profiles;
+}
+
+const Profile* findProfile(std::string_view name) {
+  for (const Profile& p : allProfiles()) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,471 @@
+// SVG picture of a toolpath (see toolpath_svg.h). Everything is transformed into pixel space here
+// and written with fixed precision, so stroke widths and text sizes are in pixels.
+#include "reports/svg/toolpath_svg.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <optional>
+#include <set>
+#include <vector>
+
+namespace cyclecert {
+
+namespace {
+
+// ---- canvas layout (pixels) -------------------------------------------------------------------
+
+constexpr double kCanvasWidth = 900;
+constexpr double kCanvasHeight = 600;
+constexpr double kPlotLeft = 90;     // room for the diameter labels
+constexpr double kPlotRight = 875;
+constexpr double kPlotTop = 80;      // room for the title and the alarm
+constexpr double kPlotBottom = 545;  // room for the legend
+constexpr double kLegendY = 578;
+constexpr double kLabelSpacing = 14;  // minimum vertical distance between diameter labels
+constexpr std::size_t kMaxDiameterLabels = 12;
+
+constexpr const char* kFinishColour = "#222222";
+constexpr const char* kRoughColour = "#e08a00";
+constexpr const char* kRapidColour = "#d62728";
+constexpr const char* kFeedColour = "#1f4fd6";
+constexpr const char* kAxisColour = "#666666";
+constexpr const char* kAlarmColour = "#c00000";
+constexpr const char* kRapidDash = "6 4";
+constexpr const char* kRoughDash = "4 3";
+constexpr const char* kAxisDash = "10 3 2 3";  // dash-dot
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// ---- numbers ----------------------------------------------------------------------------------
+
+bool isFinite(Point p) { return std::isfinite(p.z) && std::isfinite(p.x); }
+
+// Fixed 3 decimals, locale independent; non-finite values are written as 0, -0 as 0, and
+// absurdly large values (far off the canvas) are clamped so that the text stays short.
+std::string num(double v) {
+  if (!std::isfinite(v) || std::fabs(v) < 0.0005) v = 0;
+  v = std::clamp(v, -1e9, 1e9);
+  std::array<char, 64> buf{};
+  auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::fixed, 3);
+  if (ec != std::errc{}) return "0";
+  return std::string(buf.data(), end);
+}
+
+// A value for people: at most 3 decimals, trailing zeros dropped ("54", "54.5").
+std::string shortNum(double v) {
+  std::string s = num(v);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+// ---- arcs, in world coordinates (own helpers: only Segment fields are used) -------------------
+
+double dist(Point a, Point b) { return std::hypot(a.z - b.z, a.x - b.x); }
+bool samePoint(Point a, Point b) { return dist(a, b) <= kGeomEps; }
+double angleOf(Point centre, Point p) { return std::atan2(p.x - centre.x, p.z - centre.z); }
+
+// Angle reduced into [0, 2π).
+double wrap(double a) {
+  double r = std::fmod(a, kTwoPi);
+  return r < 0 ? r + kTwoPi : r;
+}
+
+bool drawableArc(const Segment& s) {
+  return s.isArc() && isFinite(s.center) && dist(s.center, s.from) > kGeomEps;
+}
+
+// Unsigned angle swept from `from` to `to` in the arc's direction, in (0, 2π]; equal end points
+// mean a full circle.
+double sweepMagnitude(const Segment& s) {
+  const double a0 = angleOf(s.center, s.from);
+  const double a1 = angleOf(s.center, s.to);
+  const double d = s.kind == SegmentKind::ArcCCW ? wrap(a1 - a0) : wrap(a0 - a1);
+  return d < 1e-12 ? kTwoPi : d;
+}
+
+// Whether the arc passes through the direction `angle` (seen from its centre).
+bool arcContainsAngle(const Segment& s, double angle) {
+  const double a0 = angleOf(s.center, s.from);
+  const double d = s.kind == SegmentKind::ArcCCW ? wrap(angle - a0) : wrap(a0 - angle);
+  return d <= sweepMagnitude(s);
+}
+
+// ---- bounds and the world→pixel view ----------------------------------------------------------
+
+struct Box {
+  bool empty = true;
+  double zMin = 0, zMax = 0, xMin = 0, xMax = 0;
+
+  void add(Point p) {
+    if (!isFinite(p)) return;
+    if (empty) {
+      zMin = zMax = p.z;
+      xMin = xMax = p.x;
+      empty = false;
+      return;
+    }
+    zMin = std::min(zMin, p.z);
+    zMax = std::max(zMax, p.z);
+    xMin = std::min(xMin, p.x);
+    xMax = std::max(xMax, p.x);
+  }
+
+  void add(const Segment& s) {
+    add(s.from);
+    add(s.to);
+    if (!drawableArc(s)) return;
+    const double r = dist(s.center, s.from);
+    for (int k = 0; k < 4; ++k) {  // the arc's apexes on both axes
+      const double angle = k * std::numbers::pi / 2;
+      if (arcContainsAngle(s, angle))
+        add(Point{s.center.z + r * std::cos(angle), s.center.x + r * std::sin(angle)});
+    }
+  }
+};
+
+// Equal scales on both axes; the drawing is centred in the plot area.
+class View {
+ public:
+  explicit View(Box box) {
+    if (box.empty) box.add(Point{});
+    double spanZ = box.zMax - box.zMin;
+    double spanX = box.xMax - box.xMin;
+    // A margin of 5% of the larger span (1 mm for a single point) keeps lines off the frame.
+    const double pad = std::max(0.05 * std::max(spanZ, spanX), 1.0);
+    spanZ += 2 * pad;
+    spanX += 2 * pad;
+    const double plotW = kPlotRight - kPlotLeft;
+    const double plotH = kPlotBottom - kPlotTop;
+    scale_ = std::min(plotW / spanZ, plotH / spanX);
+    if (!std::isfinite(scale_) || scale_ <= 0) scale_ = 1;
+    const double midZ = (box.zMin + box.zMax) / 2;
+    const double midX = (box.xMin + box.xMax) / 2;
+    offsetPx_ = (kPlotLeft + kPlotRight) / 2 - midZ * scale_;
+    offsetPy_ = (kPlotTop + kPlotBottom) / 2 + midX * scale_;
+  }
+
+  double px(double z) const { return offsetPx_ + z * scale_; }
+  double py(double x) const { return offsetPy_ - x * scale_; }  // X up: the y flip
+  double length(double mm) const { return mm * scale_; }
+  // Whether a world level is inside the plot area.
+  bool zVisible(double z) const { return px(z) >= kPlotLeft && px(z) <= kPlotRight; }
+  bool xVisible(double x) const { return py(x) >= kPlotTop && py(x) <= kPlotBottom; }
+
+ private:
+  double scale_ = 1;
+  double offsetPx_ = 0;
+  double offsetPy_ = 0;
+};
+
+// ---- path data ----------------------------------------------------------------------------------
+
+std::string coords(const View& v, Point p) { return num(v.px(p.z)) + " " + num(v.py(p.x)); }
+
+// One SVG elliptical-arc command to `to`. After the y flip, clockwise in the Z-right/X-up plot is
+// clockwise on screen, which is SVG's positive-angle direction: sweep-flag 1 for CW, 0 for CCW.
+std::string arcCommand(const View& v, double radius, bool largeArc, SegmentKind kind, Point to) {
+  const std::string r = num(v.length(radius));
+  const char* sweepFlag = kind == SegmentKind::ArcCW ? "1" : "0";
+  return "A " + r + " " + r + " 0 " + (largeArc ? "1 " : "0 ") + sweepFlag + " " + coords(v, to);
+}
+
+// The drawing commands of one segment, without the initial move-to.
+std::string segmentCommands(const View& v, const Segment& s) {
+  if (!drawableArc(s)) return "L " + coords(v, s.to);
+  const double r = dist(s.center, s.from);
+  const double sweep = sweepMagnitude(s);
+  if (sweep < kTwoPi - 1e-9) return arcCommand(v, r, sweep > std::numbers::pi, s.kind, s.to);
+  // A full circle (or all but a hair of one): SVG draws nothing for an arc whose end points
+  // coincide, so go via the diametrically opposite point.
+  const Point opposite{2 * s.center.z - s.from.z, 2 * s.center.x - s.from.x};
+  return arcCommand(v, r, false, s.kind, opposite) + " " + arcCommand(v, r, false, s.kind, s.to);
+}
+
+std::string segmentPathData(const View& v, const Segment& s) {
+  return "M " + coords(v, s.from) + " " + segmentCommands(v, s);
+}
+
+// One path for a whole contour; a new sub-path starts wherever the segments are not connected.
+std::string contourPathData(const View& v, const Contour& c) {
+  std::string d;
+  std::optional<Point> pen;
+  for (const Segment& s : c.segments) {
+    if (!pen || !samePoint(*pen, s.from)) d += (d.empty() ? "M " : " M ") + coords(v, s.from);
+    d += " " + segmentCommands(v, s);
+    pen = s.to;
+  }
+  return d;
+}
+
+// ---- elements -----------------------------------------------------------------------------------
+
+struct Stroke {
+  const char* colour;
+  double width;
+  const char* dash = nullptr;  // stroke-dasharray, none when null
+};
+
+std::string strokeAttributes(const Stroke& st) {
+  std::string a = " fill=\"none\" stroke=\"" + std::string(st.colour) + "\" stroke-width=\"" +
+                  num(st.width) + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"";
+  if (st.dash) a += " stroke-dasharray=\"" + std::string(st.dash) + "\"";
+  return a;
+}
+
+std::string pathElement(const std::string& cls, const std::string& d, const Stroke& st) {
+  return "<path class=\"" + cls + "\" d=\"" + d + "\"" + strokeAttributes(st) + "/>\n";
+}
+
+std::string lineElement(const std::string& cls, double x1, double y1, double x2, double y2,
+                        const Stroke& st) {
+  return "<line class=\"" + cls + "\" x1=\"" + num(x1) + "\" y1=\"" + num(y1) + "\" x2=\"" +
+         num(x2) + "\" y2=\"" + num(y2) + "\"" + strokeAttributes(st) + "/>\n";
+}
+
+struct TextStyle {
+  double size = 12;
+  const char* colour = "#222222";
+  const char* anchor = "start";
+  bool bold = false;
+};
+
+std::string textElement(const std::string& cls, double x, double y, std::string_view content,
+                        const TextStyle& ts) {
+  std::string e = "<text class=\"" + cls + "\" x=\"" + num(x) + "\" y=\"" + num(y) +
+                  "\" font-size=\"" + num(ts.size) + "\" fill=\"" + ts.colour +
+                  "\" text-anchor=\"" + ts.anchor + "\"";
+  if (ts.bold) e += " font-weight=\"bold\"";
+  return e + ">" + svgEscape(content) + "</text>\n";
+}
+
+// ---- what is drawn ------------------------------------------------------------------------------
+
+// Move i as a segment; an arc without a centre is drawn as a line.
+Segment moveSegment(const Toolpath& path, std::size_t i) {
+  const Move& m = path.moves[i];
+  Segment s;
+  s.kind = m.center ? m.shape : SegmentKind::Line;
+  s.from = path.from(i);
+  s.to = m.to;
+  if (m.center) s.center = *m.center;
+  return s;
+}
+
+// The points marked "A": each cycle's start point, or the toolpath's start when it has no cycles.
+std::vector<Point> startPoints(const Toolpath& path) {
+  std::vector<Point> points;
+  for (const CycleRecord& c : path.cycles) points.push_back(c.start);
+  if (points.empty()) points.push_back(path.start);
+  return points;
+}
+
+Box drawingBounds(const PlotInput& in) {
+  Box box;
+  for (const Segment& s : in.finish.segments) box.add(s);
+  for (const Segment& s : in.rough.segments) box.add(s);
+  box.add(in.path.start);
+  for (std::size_t i = 0; i < in.path.moves.size(); ++i) box.add(moveSegment(in.path, i));
+  for (Point p : startPoints(in.path)) box.add(p);
+  return box;
+}
+
+std::string axisLines(const View& v) {
+  std::string out;
+  const Stroke spindle{kAxisColour, 1, kAxisDash};
+  const Stroke zZero{"#aaaaaa", 0.8, "2 4"};
+  const TextStyle label{12, kAxisColour, "start", true};
+  if (v.xVisible(0)) {  // the spindle axis, dash-dot
+    out += lineElement("axis", kPlotLeft, v.py(0), kPlotRight, v.py(0), spindle);
+    out += textElement("axis-label", kPlotRight + 4, v.py(0) + 4, "Z", label);
+  }
+  if (v.zVisible(0)) {  // the line z = 0, fainter
+    out += lineElement("axis", v.px(0), kPlotTop, v.px(0), kPlotBottom, zZero);
+    out += textElement("axis-label", v.px(0) + 4, kPlotTop + 10, "X", label);
+  }
+  return out;
+}
+
+std::string contourPath(const View& v, const Contour& c, const std::string& cls, const Stroke& st) {
+  if (c.empty()) return {};
+  return pathElement(cls, contourPathData(v, c), st);
+}
+
+std::string toolpathMoves(const View& v, const Toolpath& path) {
+  std::string out = "<g id=\"toolpath\">\n";
+  const Stroke rapid{kRapidColour, 1.2, kRapidDash};
+  const Stroke feed{kFeedColour, 1.4};
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    const bool isRapid = path.moves[i].kind == MoveKind::Rapid;
+    out += pathElement(isRapid ? "rapid" : "feed", segmentPathData(v, moveSegment(path, i)),
+                       isRapid ? rapid : feed);
+  }
+  return out + "</g>\n";
+}
+
+// Where a pass number goes: just behind the start of the pass's first cut (opposite to the cut's
+// direction on screen), so that it sits outside the cut and off the infeed line.
+std::string passLabel(const View& v, Point from, Point to, int pass) {
+  const double x = v.px(from.z);
+  const double y = v.py(from.x);
+  const double dx = v.px(to.z) - x;
+  const double dy = v.py(to.x) - y;
+  TextStyle style{11, kFeedColour, "middle", true};
+  if (std::fabs(dx) >= std::fabs(dy)) {  // a cut along Z (G71): beside the start
+    style.anchor = dx < 0 ? "start" : "end";
+    return textElement("pass-label", dx < 0 ? x + 5 : x - 5, y + 4, std::to_string(pass), style);
+  }
+  // A cut along X (G72): above or below the start.
+  return textElement("pass-label", x, dy > 0 ? y - 5 : y + 13, std::to_string(pass), style);
+}
+
+// The pass number at the first cutting feed of each pass.
+std::string passLabels(const View& v, const Toolpath& path) {
+  std::string out = "<g id=\"pass-labels\">\n";
+  std::set<int> labelled;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    const Move& m = path.moves[i];
+    if (m.kind != MoveKind::Feed || m.phase != "pass" || !labelled.insert(m.pass).second) continue;
+    out += passLabel(v, path.from(i), m.to, m.pass);
+  }
+  return out + "</g>\n";
+}
+
+std::string startMarkers(const View& v, const Toolpath& path) {
+  std::string out;
+  for (Point p : startPoints(path)) {
+    out += "<circle class=\"start\" cx=\"" + num(v.px(p.z)) + "\" cy=\"" + num(v.py(p.x)) +
+           "\" r=\"4\" fill=\"#000000\"/>\n";
+    out += textElement("start-label", v.px(p.z) + 6, v.py(p.x) - 6, "A", {14, "#000000", "start", true});
+  }
+  return out;
+}
+
+// A distinct x level of the finish contour, with its left-most vertex (where the guide line ends).
+struct Level {
+  double x;
+  double zLeft;
+};
+
+std::vector<Level> finishLevels(const Contour& finish) {
+  std::vector<Level> levels;
+  auto addVertex = [&](Point p) {
+    if (!isFinite(p)) return;
+    for (Level& l : levels) {
+      if (std::fabs(l.x - p.x) < 1e-6) {
+        l.zLeft = std::min(l.zLeft, p.z);
+        return;
+      }
+    }
+    levels.push_back({p.x, p.z});
+  };
+  for (const Segment& s : finish.segments) {
+    addVertex(s.from);
+    addVertex(s.to);
+  }
+  std::sort(levels.begin(), levels.end(), [](const Level& a, const Level& b) { return a.x > b.x; });
+  return levels;
+}
+
+// Keeps labels at least kLabelSpacing px apart (top to bottom), then at most kMaxDiameterLabels,
+// spread evenly over the range.
+std::vector<Level> readableLevels(const View& v, const std::vector<Level>& levels) {
+  std::vector<Level> spaced;
+  for (const Level& l : levels) {
+    if (spaced.empty() || v.py(l.x) - v.py(spaced.back().x) >= kLabelSpacing) spaced.push_back(l);
+  }
+  if (spaced.size() <= kMaxDiameterLabels) return spaced;
+  std::vector<Level> kept;
+  const std::size_t n = spaced.size();
+  for (std::size_t k = 0; k < kMaxDiameterLabels; ++k)
+    kept.push_back(spaced[k * (n - 1) / (kMaxDiameterLabels - 1)]);
+  return kept;
+}
+
+std::string diameterLabels(const View& v, const Contour& finish) {
+  std::string out = "<g id=\"diameters\">\n";
+  const Stroke guide{"#bbbbbb", 0.6, "1 3"};
+  const TextStyle style{11, "#333333", "end", false};
+  for (const Level& l : readableLevels(v, finishLevels(finish))) {
+    const double y = v.py(l.x);
+    out += lineElement("diameter-guide", kPlotLeft - 4, y, v.px(l.zLeft), y, guide);
+    out += textElement("diameter", kPlotLeft - 7, y + 4, "\u00D8" + shortNum(2 * l.x), style);
+  }
+  return out + "</g>\n";
+}
+
+std::string legend() {
+  struct Entry {
+    const char* label;
+    Stroke stroke;
+  };
+  const std::array<Entry, 4> entries{{{"finish contour", {kFinishColour, 2}},
+                                      {"rough contour", {kRoughColour, 1, kRoughDash}},
+                                      {"rapid", {kRapidColour, 1.2, kRapidDash}},
+                                      {"feed", {kFeedColour, 1.4}}}};
+  std::string out = "<g id=\"legend\">\n";
+  double x = kPlotLeft;
+  for (const Entry& e : entries) {
+    out += lineElement("legend-sample", x, kLegendY - 4, x + 30, kLegendY - 4, e.stroke);
+    out += textElement("legend-label", x + 36, kLegendY, e.label, {12, "#222222", "start", false});
+    x += 160;
+  }
+  return out + "</g>\n";
+}
+
+std::string alarmBanner(const Alarm& alarm) {
+  std::string text = "ALARM " + alarm.code + ": " + alarm.message;
+  if (alarm.line > 0) text += " (line " + std::to_string(alarm.line) + ")";
+  return "<rect class=\"alarm-frame\" x=\"2\" y=\"2\" width=\"" + num(kCanvasWidth - 4) +
+         "\" height=\"" + num(kCanvasHeight - 4) + "\" fill=\"none\" stroke=\"" + kAlarmColour +
+         "\" stroke-width=\"4\"/>\n" +
+         textElement("alarm", 20, 56, text, {16, kAlarmColour, "start", true});
+}
+
+}  // namespace
+
+std::string svgEscape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      case '\t': case '\n': case '\r': out += c; break;
+      default: out += (static_cast<unsigned char>(c) < 0x20) ? '?' : c;
+    }
+  }
+  return out;
+}
+
+std::string renderToolpathSvg(const PlotInput& in) {
+  const View view(drawingBounds(in));
+  const std::string w = num(kCanvasWidth);
+  const std::string h = num(kCanvasHeight);
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + w + "\" height=\"" +
+         h + "\" viewBox=\"0 0 " + w + " " + h + "\" font-family=\"sans-serif\">\n";
+  out += "<title>" + svgEscape(in.title) + "</title>\n";
+  out += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h +
+         "\" fill=\"#ffffff\"/>\n";
+  out += axisLines(view);
+  out += diameterLabels(view, in.finish);
+  out += contourPath(view, in.rough, "rough", {kRoughColour, 1, kRoughDash});
+  out += contourPath(view, in.finish, "finish", {kFinishColour, 2});
+  out += toolpathMoves(view, in.path);
+  out += passLabels(view, in.path);
+  out += startMarkers(view, in.path);
+  out += legend();
+  out += textElement("title", 20, 30, in.title, {18, "#000000", "start", true});
+  if (in.path.alarm) out += alarmBanner(*in.path.alarm);
+  return out + "</svg>\n";
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,37 @@
+#pragma once
+// A self-contained SVG 1.1 picture of one toolpath over its finish and rough contours, for people:
+// Z to the right, X (radius) up, equal scales, on a fixed 900×600 px canvas.
+//
+// What it shows: the title; the alarm (code, message, line) in red when the toolpath has one; the
+// finish contour (solid, dark) and the rough contour (thin, dashed, orange); every move as one
+// <path> element inside <g id="toolpath"> (rapids dashed red, feeds solid blue, arcs as real SVG
+// arcs); the pass number next to the first cutting feed of each pass; the cycle start point(s)
+// marked "A" (each CycleRecord's start, else Toolpath::start); the spindle axis x = 0 (dash-dot)
+// and the line z = 0 when in view; diameter labels "Ø54" for the x levels of the finish contour's
+// vertices (at most 12, never overlapping); and a legend.
+//
+// The document never contains NaN or infinity (non-finite coordinates are left out of the scaling
+// and written as 0), and degenerate input (nothing to draw, a single point) still gives a valid
+// document.
+#include <string>
+#include <string_view>
+
+#include "reference/model/contour.h"
+#include "reference/model/toolpath.h"
+
+namespace cyclecert {
+
+struct PlotInput {
+  std::string title;
+  Contour finish;
+  Contour rough;  // the finish contour shifted by the allowances (drawn as given)
+  Toolpath path;
+};
+
+std::string renderToolpathSvg(const PlotInput& in);
+
+// Escapes text for XML character data and attribute values: & < > " ' become entities; control
+// characters that XML 1.0 forbids (all below 0x20 except tab, LF, CR) become '?'.
+std::string svgEscape(std::string_view text);
+
+}  // namespace cyclecert
