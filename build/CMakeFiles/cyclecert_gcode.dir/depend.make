@@ -1,2 +1,0 @@
-# Empty dependencies file for cyclecert_gcode.
-# This may be replaced when dependencies are built.

@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libcyclecert_reports.a"
-)

@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build/cyclecert-tests[1]_tests.cmake")
-  include("/work/main/build/cyclecert-tests[1]_tests.cmake")
-else()
-  add_test(cyclecert-tests_NOT_BUILT cyclecert-tests_NOT_BUILT)
-endif()
