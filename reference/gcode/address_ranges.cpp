@@ -1,6 +1,7 @@
 #include "reference/gcode/address_ranges.h"
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "reference/model/alarms.h"
@@ -24,6 +25,7 @@ void checkCycleAddress(const Word& w, CycleAddress role, bool inch) {
   const bool integral = role != CycleAddress::SequenceNumber || w.value == std::floor(w.value);
   if (w.value >= r.min && w.value <= r.max && integral) return;
   std::ostringstream range;
+  range << std::setprecision(12);
   range << w.text << " at column " << w.column << " is outside " << r.min << "…" << r.max;
   if (role == CycleAddress::SequenceNumber) range << " (an integer sequence number)";
   if (role == CycleAddress::DepthOfCut && w.value < r.min) {

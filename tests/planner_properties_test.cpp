@@ -1,0 +1,197 @@
+// RapidCheck properties of the type I planner on random monotone contours (lines and quarter arcs),
+// written as G71 or G72 programs: every pass is at most Δd deeper than the previous level, every
+// cut ends on the rough contour (or at C' where the level is beyond it), the semi-finish pass runs
+// on the rough contour, all feeds are the cycle's F, and the path ends at the start point.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "harness/reference_plan.h"
+
+namespace cyclecert {
+namespace {
+
+// A type I contour in the cycle frame (cut along z towards −z, depth along x towards −x): B at
+// (0, b), then segments moving −z and +x. Lengths are on a 0.01 mm grid so the program text is exact.
+struct FrameSegment {
+  int kind;  // 0 line, 1 convex quarter arc (G03 in G71), 2 concave quarter arc (G02 in G71)
+  int dz, dx;  // hundredths of a mm; arcs use dz == dx
+};
+
+struct RandomCycle {
+  bool g72 = false;
+  bool headRapid = true;
+  int b = 0;            // B's depth coordinate, hundredths
+  int startAbove = 0;   // A.x − C.x, hundredths (≥ 0: LIMIT.HEIGHT holds)
+  int startAhead = 0;   // A.z − B.z, hundredths (≥ 0)
+  std::vector<FrameSegment> segments;
+  int dd = 100, e = 50, du = 0, dw = 0;  // hundredths (du as a radius)
+  bool rf1 = false, dtp = false;
+};
+
+double mm(int hundredths) { return hundredths / 100.0; }
+
+rc::Gen<FrameSegment> genSegment() {
+  return rc::gen::apply(
+      [](int kind, int a, int b) {
+        if (kind == 0) return FrameSegment{0, a, b};
+        return FrameSegment{kind, a, a};
+      },
+      rc::gen::inRange(0, 3), rc::gen::inRange(0, 800), rc::gen::inRange(0, 800));
+}
+
+rc::Gen<RandomCycle> genCycle() {
+  return rc::gen::apply(
+      [](bool g72, bool headRapid, int b, int above, int ahead, std::vector<FrameSegment> segs, int dd, int e,
+         int du, int dw, bool rf1, bool dtp) {
+        RandomCycle c;
+        c.g72 = g72;
+        c.headRapid = headRapid;
+        c.b = b;
+        c.startAbove = above;
+        c.startAhead = ahead;
+        // Zero-length lines are dropped by the interpreter; keep at least one real segment.
+        segs.erase(std::remove_if(segs.begin(), segs.end(), [](const FrameSegment& s) { return s.dz == 0 && s.dx == 0; }),
+                   segs.end());
+        if (segs.size() > 12) segs.resize(12);
+        if (segs.empty()) segs.push_back({0, 500, 300});
+        c.segments = segs;
+        c.dd = dd;
+        c.e = e;
+        c.du = du;
+        c.dw = dw;
+        c.rf1 = rf1;
+        c.dtp = dtp;
+        return c;
+      },
+      rc::gen::arbitrary<bool>(), rc::gen::arbitrary<bool>(), rc::gen::inRange(0, 2000), rc::gen::inRange(1, 1500),
+      rc::gen::inRange(0, 300), rc::gen::container<std::vector<FrameSegment>>(genSegment()),
+      rc::gen::inRange(20, 400), rc::gen::inRange(0, 100), rc::gen::inRange(0, 60), rc::gen::inRange(0, 30),
+      rc::gen::arbitrary<bool>(), rc::gen::arbitrary<bool>());
+}
+
+// Frame → physical program coordinates. G71: z = frame z, x = frame x (diameter in the program).
+// G72: physical x = frame z (shifted positive), physical z = frame x.
+struct Emitter {
+  const RandomCycle& c;
+  int zOffset;  // keeps physical x positive for G72
+
+  std::string axisWords(int fz, int fx) const {
+    std::ostringstream s;
+    s.precision(12);
+    if (!c.g72) s << "X" << 2 * mm(fx) << " Z" << mm(fz);
+    else s << "X" << 2 * mm(fz + zOffset) << " Z" << mm(fx);
+    return s.str();
+  }
+  // Exchanging the axes mirrors the plane: G72 swaps G02 and G03.
+  std::string arcCode(int kind) const {
+    const bool convexCcw = kind == 1;
+    return (convexCcw != c.g72) ? "G03" : "G02";
+  }
+};
+
+std::string programFor(const RandomCycle& c, int zOffset) {
+  const Emitter em{c, zOffset};
+  int z = c.startAhead, x = c.b;  // B: block ns moves the depth axis only
+  std::vector<std::pair<int, int>> points;
+  for (const auto& s : c.segments) {
+    z -= s.dz;
+    x += s.dx;
+    points.push_back({z, x});
+  }
+  const int cX = x;
+  std::ostringstream p;
+  p.precision(12);
+  p << "G00 " << em.axisWords(c.startAhead, cX + c.startAbove) << ";\n";
+  if (!c.g72) p << "G71 U" << mm(c.dd) << " R" << mm(c.e) << ";\nG71 P10 Q20 U" << 2 * mm(c.du) << " W" << mm(c.dw);
+  else p << "G72 W" << mm(c.dd) << " R" << mm(c.e) << ";\nG72 P10 Q20 U" << 2 * mm(c.dw) << " W" << mm(c.du);
+  p << " F0.2;\n";
+  // Head block: depth axis only (type I).
+  if (!c.g72) p << "N10 " << (c.headRapid ? "G00" : "G01") << " X" << 2 * mm(c.b) << ";\n";
+  else p << "N10 " << (c.headRapid ? "G00" : "G01") << " Z" << mm(c.b) << ";\n";
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    const auto& s = c.segments[i];
+    p << (i + 1 == c.segments.size() ? "N20 " : "");
+    if (s.kind == 0) p << "G01 " << em.axisWords(points[i].first, points[i].second);
+    else p << em.arcCode(s.kind) << " " << em.axisWords(points[i].first, points[i].second) << " R" << mm(s.dz);
+    p << ";\n";
+  }
+  return p.str();
+}
+
+// The toolpath back in the cycle frame.
+Point toFrame(Point p, const RandomCycle& c, int zOffset) {
+  return c.g72 ? Point{p.x - mm(zOffset), p.z} : p;
+}
+
+// True when p lies on one of the segments (exactly at its level: cut ends are computed at the level).
+bool onContour(Point p, const std::vector<Segment>& segments) {
+  for (const Segment& s : segments) {
+    for (Point hit : intersectWithLevelX(s, p.x)) {
+      if (std::abs(hit.z - p.z) < 1e-6) return true;
+    }
+  }
+  return false;
+}
+
+RC_GTEST_PROP(PlannerProperties, TypeIPassesAreBoundedAndEndOnTheRoughContour, ()) {
+  const RandomCycle c = *genCycle();
+  const int zOffset = 10000;  // 100 mm
+  std::vector<std::pair<std::string, double>> params = {{"RF1", c.rf1 ? 1.0 : 0.0}, {"DTP", c.dtp ? 1.0 : 0.0}};
+  const std::string program = programFor(c, zOffset);
+  RC_LOG() << program;
+  const Toolpath t = planWithReference({program, "prop.nc", "fanuc-0i-f", params});
+  RC_ASSERT(!t.alarm.has_value());
+  RC_ASSERT(t.cycles.size() == 1u);
+
+  // The rough contour in the frame, from the recorded finish shape and allowance.
+  std::vector<Segment> rough;
+  for (Segment s : t.cycles[0].shape) {
+    s = s.shifted(t.cycles[0].allowance);
+    if (c.g72) {
+      s = transposed(s);
+      s = s.shifted({-mm(zOffset), 0});
+    }
+    rough.push_back(s);
+  }
+  const Point aPrime = rough.front().from;
+  const Point bPrime = rough.front().to;
+  const Point cPrime = rough.back().to;
+  const double dd = mm(c.dd);
+  const std::vector<Segment> body(rough.begin() + 1, rough.end());  // B' → C', without the head
+
+  double lastLevel = aPrime.x;
+  Point at = toFrame(t.start, c, zOffset);
+  for (const Move& m : t.moves) {
+    const Point to = toFrame(m.to, c, zOffset);
+    if (m.kind == MoveKind::Feed) RC_ASSERT(std::abs(*m.feed - 0.2) < 1e-12);
+    const bool cut = m.phase == "pass" && m.kind == MoveKind::Feed && std::abs(to.x - at.x) < 1e-9 && to.z < at.z - 1e-9;
+    // An infeed to a new pass level (at A'.z): at most Δd deeper than the level before it.
+    if (m.phase == "pass" && std::abs(to.z - aPrime.z) < 1e-9 && to.x < lastLevel - 1e-9) {
+      RC_ASSERT(lastLevel - to.x <= dd + 1e-9);
+      lastLevel = to.x;
+    }
+    if (cut) {
+      RC_ASSERT(std::abs(to.x - lastLevel) < 1e-9);  // cuts run at the current level
+      if (to.x > cPrime.x + 1e-9) {
+        RC_ASSERT(std::abs(to.z - cPrime.z) < 1e-6);  // level beyond C': the cut ends at C'.z
+      } else {
+        RC_ASSERT(onContour(to, body));
+      }
+    }
+    if (m.phase == "semi-finish" && m.kind == MoveKind::Feed) RC_ASSERT(onContour(to, body));
+    at = to;
+  }
+  // The material left between the deepest pass and B' is at most Δd.
+  RC_ASSERT(lastLevel - bPrime.x <= dd + 1e-9);
+  // Path ends at the start point.
+  RC_ASSERT(nearlyEqual(t.from(t.moves.size()), t.start, 1e-9));
+  RC_ASSERT(std::none_of(t.moves.begin(), t.moves.end(), [&](const Move& m) { return m.phase == "semi-finish"; }) == c.rf1);
+}
+
+}  // namespace
+}  // namespace cyclecert
