@@ -1,0 +1,172 @@
+// The `cyclecert` command as a user and a CI job meet it: help on every command, exit codes,
+// outputs written, and clear errors for bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exitCode;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cyclecert-cli-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+
+  static std::string read(const std::string& file) {
+    std::ifstream in(file);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  CliRun run(const std::string& args) const {
+    const std::string errFile = path("stderr.txt");
+    const std::string command = std::string(CYCLECERT_CLI) + " " + args + " 2>" + errFile;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+    const int status = ::pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, read(errFile)};
+  }
+
+  fs::path dir_;
+};
+
+const char* kShaft =
+    "G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\nG01 Z-10;\nN20 X40 Z-20;\n";
+
+TEST_F(Cli, HelpOnEveryCommand) {
+  for (const std::string args : {"--help", "plan --help", "params --help", "profiles --help", "help plan"}) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exitCode, 0) << args;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << args;
+  }
+  EXPECT_NE(run("plan --help").out.find("--param NAME=VALUE"), std::string::npos);
+}
+
+TEST_F(Cli, UsageErrorsExitWith2) {
+  EXPECT_EQ(run("").exitCode, 2);
+  EXPECT_EQ(run("frobnicate").exitCode, 2);
+  EXPECT_EQ(run("plan").exitCode, 2);
+  EXPECT_EQ(run("plan " + path("missing.nc")).exitCode, 2);
+  const std::string program = write("p.nc", kShaft);
+  CliRun r = run("plan " + program + " --bogus");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("unknown option --bogus"), std::string::npos);
+  r = run("plan " + program + " --profile nosuch");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("unknown profile 'nosuch'"), std::string::npos);
+  r = run("plan " + program + " --param RF7=1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("RF7"), std::string::npos);
+  r = run("plan " + program + " --param RF1=2");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("0 or 1"), std::string::npos);
+}
+
+TEST_F(Cli, PlanWritesJsonAndAWellFormedSvg) {
+  const std::string program = write("p.nc", kShaft);
+  const CliRun r = run("plan " + program + " --json " + path("t.json") + " --svg " + path("t.svg"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("planned 1 cycle(s)"), std::string::npos);
+  const auto j = nlohmann::json::parse(read(path("t.json")));
+  EXPECT_EQ(j["units"], "mm");
+  EXPECT_EQ(j["profile"], "fanuc-0i-f");
+  EXPECT_TRUE(j["alarm"].is_null());
+  ASSERT_FALSE(j["moves"].empty());
+  EXPECT_EQ(j["moves"][0]["kind"], "rapid");
+  EXPECT_EQ(j["moves"][0]["to"]["x"], 20.2);  // A' = X40/2 + U0.4/2
+  boost::property_tree::ptree tree;
+  std::istringstream svg(read(path("t.svg")));
+  EXPECT_NO_THROW(boost::property_tree::read_xml(svg, tree));
+  EXPECT_EQ(tree.count("svg"), 1u);
+}
+
+TEST_F(Cli, JsonGoesToStandardOutputByDefault) {
+  const CliRun r = run("plan " + write("p.nc", kShaft));
+  ASSERT_EQ(r.exitCode, 0);
+  EXPECT_NO_THROW(nlohmann::json::parse(r.out));
+}
+
+TEST_F(Cli, NumberAndMnemonicParametersGiveTheSamePlan) {
+  const std::string program = write("p.nc", kShaft);
+  const CliRun byNumber = run("plan " + program + " --param 5105#1=1");
+  const CliRun byName = run("plan " + program + " --param RF1=1");
+  const CliRun neither = run("plan " + program);
+  ASSERT_EQ(byNumber.exitCode, 0);
+  EXPECT_EQ(byNumber.out, byName.out);
+  EXPECT_NE(byNumber.out, neither.out);  // RF1 removes the semi-finish pass
+}
+
+TEST_F(Cli, AlarmExitsWith1AndStillWritesTheJson) {
+  const std::string program = write("a.nc", "G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 X20;\nN20 G01 X40 Z-20;\n");
+  const CliRun r = run("plan " + program + " --json " + path("a.json"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.out.find("alarm PS0065 at line 4"), std::string::npos);
+  const auto j = nlohmann::json::parse(read(path("a.json")));
+  EXPECT_EQ(j["alarm"]["code"], "PS0065");
+  EXPECT_EQ(j["alarm"]["line"], 4);
+}
+
+TEST_F(Cli, MalformedProgramNamesFileLineAndColumn) {
+  const std::string program = write("bad.nc", "G00 X40 Z2;\nG71 U2 R#1;\n");
+  const CliRun r = run("plan " + program);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find(program + ":2:9: expected an address letter, a number, a comment or the end of the block, found #"), std::string::npos) << r.err;
+  const CliRun bad = run("plan " + write("nan.nc", "G00 Xnan Z2;\n"));
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find(":1:6: expected a finite number after address X, found nan"), std::string::npos) << bad.err;
+}
+
+TEST_F(Cli, NotYetSupportedExitsWith3) {
+  const CliRun r = run("plan " + write("t2.nc", "G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0 F0.2;\nN10 G00 X20 W0;\nN20 G01 X40 Z-20;\n"));
+  EXPECT_EQ(r.exitCode, 3);
+  EXPECT_NE(r.err.find("type II"), std::string::npos);
+}
+
+TEST_F(Cli, PlanACaseReportsWhetherTheExpectationIsMet) {
+  const CliRun r = run("plan --case specs/cases/gsk/g72/o0005.json --json " + path("o.json"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("case gsk/g72/o0005: expectation met"), std::string::npos) << r.out;
+  const CliRun corrupt = run("plan --case " + write("c.json", "{\"id\": 3"));
+  EXPECT_EQ(corrupt.exitCode, 2);
+  EXPECT_NE(corrupt.err.find("c.json: (document): expected valid JSON"), std::string::npos) << corrupt.err;
+}
+
+TEST_F(Cli, ParamsAndProfilesListTheirCatalogues) {
+  const CliRun params = run("params");
+  EXPECT_EQ(params.exitCode, 0);
+  EXPECT_NE(params.out.find("5105#1  RF1"), std::string::npos) << params.out;
+  EXPECT_NO_THROW(nlohmann::json::parse(run("params --json").out));
+  const CliRun profiles = run("profiles");
+  EXPECT_NE(profiles.out.find("gsk"), std::string::npos);
+  EXPECT_NE(profiles.out.find("5108#1 (DTP) = 1"), std::string::npos) << profiles.out;
+}
+
+}  // namespace
