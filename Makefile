@@ -5,7 +5,7 @@
 BUILD      ?= build
 BUILD_TYPE ?= RelWithDebInfo
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
-DEB_PACKAGES := librapidcheck-dev libgtest-dev nlohmann-json3-dev libboost-dev libbenchmark-dev cmake g++ make
+DEB_PACKAGES := librapidcheck-dev libgtest-dev nlohmann-json3-dev libboost-dev libbenchmark-dev cmake g++ make python3 python3-jsonschema
 
 .PHONY: all bootstrap configure build test run bench sanitize clean
 

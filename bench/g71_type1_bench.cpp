@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "reference/cycles/type1_roughing.h"
 #include "reference/gcode/parser.h"
 #include "reference/interpreter/program_runner.h"
 #include "reference/model/profile.h"
@@ -44,6 +45,42 @@ void BM_G71Type1(benchmark::State& state) {
   state.counters["moves"] = static_cast<double>(moves);
   state.counters["segments"] = segments;
 }
+
+// The eight steps alone, on the same staircase already in the cycle frame: the share of the
+// program interpretation (modal walk, shape reading, checks) is the difference to BM_G71Type1.
+void BM_Type1StepsOnly(benchmark::State& state) {
+  const int segments = static_cast<int>(state.range(0));
+  const int passes = static_cast<int>(state.range(1));
+  Type1Cycle c;
+  c.code = "G71";
+  c.start = {2, passes + 1.0};
+  c.headEnd = {2, 0};
+  const double rise = static_cast<double>(passes) / segments;
+  Point at = c.headEnd;
+  for (int i = 1; i <= segments; ++i) {
+    const Point next = at + Point{-0.5, i % 2 ? rise * 2 : 0.0};
+    c.body.push_back({SegmentKind::Line, at, next, {}, 0});
+    at = next;
+  }
+  c.allowance = {0.1, 0.2};
+  c.depthOfCut = 1;
+  c.retract = 0.2;
+  c.feed = 0.2;
+  std::size_t moves = 0;
+  for (auto _ : state) {
+    moves = planType1(c).size();
+    benchmark::DoNotOptimize(moves);
+  }
+  state.counters["moves"] = static_cast<double>(moves);
+}
+
+BENCHMARK(BM_Type1StepsOnly)
+    ->Args({10, 10})
+    ->Args({100, 100})
+    ->Args({1000, 100})
+    ->Args({10000, 100})
+    ->Args({10000, 1000})
+    ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK(BM_G71Type1)
     ->Args({10, 10})
