@@ -46,6 +46,14 @@ void BM_G71Type1(benchmark::State& state) {
   state.counters["segments"] = segments;
 }
 
+// Contour sizes (segments × passes) every benchmark here runs.
+void segmentsByPasses(benchmark::internal::Benchmark* b) {
+  for (const auto& [segments, passes] : {std::pair{10, 10}, {100, 100}, {1000, 100}, {10000, 100}, {10000, 1000}}) {
+    b->Args({segments, passes});
+  }
+  b->Unit(benchmark::kMicrosecond);
+}
+
 // The eight steps alone, on the same staircase already in the cycle frame: the share of the
 // program interpretation (modal walk, shape reading, checks) is the difference to BM_G71Type1.
 void BM_Type1StepsOnly(benchmark::State& state) {
@@ -74,21 +82,9 @@ void BM_Type1StepsOnly(benchmark::State& state) {
   state.counters["moves"] = static_cast<double>(moves);
 }
 
-BENCHMARK(BM_Type1StepsOnly)
-    ->Args({10, 10})
-    ->Args({100, 100})
-    ->Args({1000, 100})
-    ->Args({10000, 100})
-    ->Args({10000, 1000})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Type1StepsOnly)->Apply(segmentsByPasses);
 
-BENCHMARK(BM_G71Type1)
-    ->Args({10, 10})
-    ->Args({100, 100})
-    ->Args({1000, 100})
-    ->Args({10000, 100})
-    ->Args({10000, 1000})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_G71Type1)->Apply(segmentsByPasses);
 
 }  // namespace
 
