@@ -37,24 +37,17 @@ void selectTypeI(const CycleCall& call, const ShapeProgram& shape) {
 
 // G71.LIMIT.HEIGHT: with U(+) no part of the shape may stand above the cycle start point, with
 // U(−) none below it.
-void checkLimitHeight(const Type1Cycle& cycle, const SecondBlock& sb, int nsLine) {
-  if (sb.secondAllowanceProgrammed == 0) return;
+void checkLimitHeight(const Type1Cycle& cycle, int nsLine) {
+  const double du = cycle.allowance.x;
+  if (du == 0) return;
   const double startX = cycle.start.x;
-  const auto beyond = [&](double x) {
-    return sb.allowanceSecondSign ? x > startX + kGeomEps : x < startX - kGeomEps;
-  };
-  const std::string side = sb.allowanceSecondSign ? "above" : "below";
-  if (beyond(cycle.headEnd.x)) {
-    throw CycleAlarm(alarm::kOverStartPoint, nsLine, "with U" + std::string(sb.allowanceSecondSign ? "(+)" : "(-)") +
-                                                         " the shape may not go " + side + " the cycle start point");
-  }
+  const auto beyond = [&](double x) { return du > 0 ? x > startX + kGeomEps : x < startX - kGeomEps; };
+  const std::string why = std::string("with U") + (du > 0 ? "(+) the shape may not go above" : "(-) the shape may not go below") +
+                          " the cycle start point";
+  if (beyond(cycle.headEnd.x)) throw CycleAlarm(alarm::kOverStartPoint, nsLine, why);
   for (const Segment& s : cycle.body) {
     const Extent e = extent(s);
-    if (beyond(e.xMax) || beyond(e.xMin)) {
-      throw CycleAlarm(alarm::kOverStartPoint, s.sourceLine,
-                       "with U" + std::string(sb.allowanceSecondSign ? "(+)" : "(-)") + " the shape may not go " +
-                           side + " the cycle start point");
-    }
+    if (beyond(e.xMax) || beyond(e.xMin)) throw CycleAlarm(alarm::kOverStartPoint, s.sourceLine, why);
   }
 }
 
@@ -79,7 +72,7 @@ CycleOutcome planG71(const CycleCall& call) {
   cycle.feed = sb.feed;
   applyType1Parameters(call, cycle);
 
-  checkLimitHeight(cycle, sb, shape.nsLine);
+  checkLimitHeight(cycle, shape.nsLine);
   // G71.T1.MONO, G71.CHECK: checked on the finish shape before any move.
   checkType1Monotonic(cycle, {alarm::kNotMonotonicFirst, call.params.get("5145"), std::string_view(&axes.first, 1)},
                       {alarm::kNotMonotonicSecond, call.params.get("5146"), std::string_view(&axes.second, 1)});

@@ -35,8 +35,6 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
   if (const Word* du = b.find(axes.secondInc)) {
     checkCycleAddress(*du, CycleAddress::Allowance, call.modal.inch);
     s.allowanceSecond = physicalLength(du->value, axes.secondDiameter, call.modal);
-    s.allowanceSecondSign = du->value >= 0;
-    s.secondAllowanceProgrammed = du->value;
   }
   if (const Word* dw = b.find(axes.firstInc)) {
     checkCycleAddress(*dw, CycleAddress::Allowance, call.modal.inch);

@@ -24,8 +24,6 @@ struct SecondBlock {
   const Word* q = nullptr;
   double allowanceFirst = 0;   // Δw (along the plane's 1st axis)
   double allowanceSecond = 0;  // Δu/2 on a diameter axis, Δu otherwise (along the 2nd axis)
-  bool allowanceSecondSign = true;  // Δu ≥ 0 (G71.LIMIT.HEIGHT looks at its sign)
-  double secondAllowanceProgrammed = 0;
   double feed = 0;
 };
 
