@@ -3,7 +3,6 @@
 #include <regex>
 
 #include "reference/gcode/parser.h"
-#include "reference/interpreter/program_runner.h"
 #include "reference/model/profile.h"
 
 namespace cyclecert {
@@ -26,11 +25,14 @@ Toolpath planWithReference(const PlanRequest& request) {
   MachineParams params = profile->defaults;
   for (const auto& [name, value] : request.params) params.set(name, value);
   const Program program = parseProgram(request.programText, request.file);
-  return planProgram(program, *profile, params);
+  return planProgram(program, *profile, params, request.options);
 }
 
 Toolpath planSpecCase(const SpecCase& c) {
-  return planWithReference({c.program, c.file + "#/program", c.profile, c.params});
+  RunOptions options;
+  options.mdi = c.mdi;
+  if (c.tool) options.tool = *c.tool;
+  return planWithReference({c.program, c.file + "#/program", c.profile, c.params, options});
 }
 
 PlotInput plotInputFor(const Toolpath& path, const std::string& title) {

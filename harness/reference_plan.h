@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "harness/spec_case.h"
+#include "reference/interpreter/program_runner.h"
 #include "reference/model/toolpath.h"
 #include "reports/svg/toolpath_svg.h"
 
@@ -15,6 +16,7 @@ struct PlanRequest {
   std::string file;      // for error messages
   std::string profile;   // empty: from a "(profile: NAME)" header comment, else fanuc-0i-f
   std::vector<std::pair<std::string, double>> params;  // by number or mnemonic, applied in order
+  RunOptions options;    // MDI mode, tool offset
 };
 
 // Throws ParseError (malformed program), UnknownProfile, UnknownParam / std::invalid_argument

@@ -65,6 +65,14 @@ void readExpectation(const json& expect, SpecCase& c) {
     }
   }
   c.expectedMoves = std::move(parsed);
+  if (expect.contains("warnings")) {
+    const json& w = expect["warnings"];
+    if (!w.is_array()) throw SpecError(c.file, "/expect/warnings", "an array of strings");
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      if (!w[i].is_string()) throw SpecError(c.file, "/expect/warnings/" + std::to_string(i), "a string");
+      c.expectedWarnings.push_back(w[i].get<std::string>());
+    }
+  }
   if (expect.contains("tolerance")) {
     if (!expect["tolerance"].is_number() || expect["tolerance"].get<double>() <= 0) {
       throw SpecError(c.file, "/expect/tolerance", "a positive number");
@@ -102,6 +110,21 @@ SpecCase parseSpecCase(const std::string& text, const std::string& file) {
       if (!value.is_number()) throw SpecError(file, "/params/" + name, "a number");
       c.params.emplace_back(name, value.get<double>());
     }
+  }
+  if (j.contains("tool")) {
+    const json& t = j["tool"];
+    if (!t.is_object() || !t.contains("nose_radius") || !t["nose_radius"].is_number() ||
+        t["nose_radius"].get<double>() < 0) {
+      throw SpecError(file, "/tool/nose_radius", "a nose radius ≥ 0 (mm)");
+    }
+    if (!t.contains("tip") || !t["tip"].is_number_integer() || t["tip"].get<int>() < 0 || t["tip"].get<int>() > 9) {
+      throw SpecError(file, "/tool/tip", "an imaginary tip direction 0…9");
+    }
+    c.tool = ToolOffset{t["nose_radius"].get<double>(), t["tip"].get<int>()};
+  }
+  if (j.contains("mode")) {
+    if (j["mode"] != "mdi" && j["mode"] != "memory") throw SpecError(file, "/mode", "\"memory\" or \"mdi\"");
+    c.mdi = j["mode"] == "mdi";
   }
   readExpectation(required(j, "expect", file), c);
   return c;

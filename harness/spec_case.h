@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
@@ -26,7 +27,10 @@ struct SpecCase {
   std::string program;
   std::optional<std::vector<Move>> expectedMoves;
   double tolerance = 0.001;
+  std::vector<std::string> expectedWarnings;  // substrings, each in one of the warnings
   std::optional<ExpectedAlarm> expectedAlarm;
+  std::optional<ToolOffset> tool;             // the active tool's nose radius and tip direction
+  bool mdi = false;                           // the program runs in MDI mode
   std::string derivation;
 };
 

@@ -1,5 +1,7 @@
 #include "harness/spec_check.h"
 
+#include <algorithm>
+
 #include "harness/toolpath_compare.h"
 
 namespace cyclecert {
@@ -19,6 +21,11 @@ std::optional<std::string> unmetExpectation(const SpecCase& c, const Toolpath& a
   if (actual.alarm) {
     return "expected a toolpath, got alarm " + actual.alarm->code + " at line " + std::to_string(actual.alarm->line) +
            ": " + actual.alarm->message;
+  }
+  for (const std::string& w : c.expectedWarnings) {
+    const bool found = std::any_of(actual.warnings.begin(), actual.warnings.end(),
+                                   [&](const Warning& x) { return x.message.find(w) != std::string::npos; });
+    if (!found) return "expected a warning containing \"" + w + "\"";
   }
   return firstDivergence(*c.expectedMoves, actual.moves, c.tolerance);
 }

@@ -145,9 +145,9 @@ TEST_F(Cli, MalformedProgramNamesFileLineAndColumn) {
 }
 
 TEST_F(Cli, NotYetSupportedExitsWith3) {
-  const CliRun r = run("plan " + write("t2.nc", "G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0 F0.2;\nN10 G00 X20 W0;\nN20 G01 X40 Z-20;\n"));
+  const CliRun r = run("plan " + write("g73.nc", "G0 X70 Z2;\nG73 U5 W0 R4;\nG73 P10 Q11 U0.2 W0.1 F0.1;\nN10 G01 X50 Z0;\nN11 G1 Z-50;\n"));
   EXPECT_EQ(r.exitCode, 3);
-  EXPECT_NE(r.err.find("type II"), std::string::npos);
+  EXPECT_NE(r.err.find("line 2: G73 pattern repeating cycle is not planned by the reference yet"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, PlanACaseReportsWhetherTheExpectationIsMet) {

@@ -2,6 +2,8 @@
 // blocks the controller refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "harness/reference_plan.h"
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
@@ -11,7 +13,7 @@ namespace {
 
 Toolpath plan(const std::string& program, const std::string& profile = "fanuc-0i-f",
               std::vector<std::pair<std::string, double>> params = {}) {
-  return planWithReference({program, "test.nc", profile, std::move(params)});
+  return planWithReference({program, "test.nc", profile, std::move(params), {}});
 }
 
 const char* kShaft =
@@ -109,9 +111,39 @@ TEST(Interpreter, NoFeedAnywhereIsPS0011) {
   EXPECT_EQ(t.alarm->code, "PS0011");
 }
 
-TEST(Interpreter, TypeIIIsReportedAsNotSupported) {
-  EXPECT_THROW(plan("G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0 F0.2;\nN10 G00 X20 W0;\nN20 G01 X40 Z-20;\n"),
-               NotSupported);
+TEST(Interpreter, CyclesTheReferenceCannotPlanAreNotSupported) {
+  EXPECT_THROW(plan("G0 X70 Z2;\nG73 U5 W0 R4;\nG73 P10 Q11 U0.2 W0.1 F0.1;\nN10 G01 X50 Z0;\nN11 G01 Z-50;\n"), NotSupported);
+  EXPECT_THROW(plan("G00 X70 Z10;\nG74.1 X66 Z0 P30000 Q50000 H-10 D-20 A45 B60;\n"), NotSupported);
+}
+
+TEST(Interpreter, HeadBlockWithBothAxesSelectsTypeII) {
+  const Toolpath t = plan("G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0 F0.2;\nN10 G00 X20 W0;\nN20 G01 X40 Z-20;\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->message;
+  // Type II follows the shape after each cut (G71.T2.FOLLOW) where type I retracts at 45°.
+  EXPECT_TRUE(std::any_of(t.moves.begin(), t.moves.end(), [](const Move& m) {
+    return std::find(m.rules.begin(), m.rules.end(), "G71.T2.FOLLOW") != m.rules.end();
+  }));
+}
+
+TEST(Interpreter, G70FinishesAlongTheShapeWithItsOwnFeedAndReturns) {
+  const Toolpath t = plan(std::string(kShaft) + "G70 P10 Q20;\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->message;
+  ASSERT_EQ(t.cycles.size(), 2u);
+  EXPECT_EQ(t.cycles[1].code, "G70");
+  const std::size_t first = t.cycles[1].firstMove;
+  ASSERT_EQ(t.cycles[1].moveCount, 4u);  // X20 rapid, Z-10, X40 Z-20, back to A
+  EXPECT_EQ(t.moves[first].kind, MoveKind::Rapid);
+  EXPECT_TRUE(nearlyEqual(t.moves[first + 2].to, {-20, 20}));
+  EXPECT_TRUE(nearlyEqual(t.moves.back().to, {2, 20}));
+}
+
+TEST(Interpreter, CyclesInMdiModeArePS0067) {
+  RunOptions mdi;
+  mdi.mdi = true;
+  const Toolpath t = planWithReference({kShaft, "mdi.nc", "gsk", {}, mdi});
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "PS0067");
+  EXPECT_EQ(t.alarm->line, 2);
 }
 
 TEST(Interpreter, CompensationBeforeTheCycleIsWarnedAbout) {

@@ -144,7 +144,7 @@ RC_GTEST_PROP(PlannerProperties, TypeIPassesAreBoundedAndEndOnTheRoughContour, (
   std::vector<std::pair<std::string, double>> params = {{"RF1", c.rf1 ? 1.0 : 0.0}, {"DTP", c.dtp ? 1.0 : 0.0}};
   const std::string program = programFor(c, zOffset);
   RC_LOG() << program;
-  const Toolpath t = planWithReference({program, "prop.nc", "fanuc-0i-f", params});
+  const Toolpath t = planWithReference({program, "prop.nc", "fanuc-0i-f", params, {}});
   RC_ASSERT(!t.alarm.has_value());
   RC_ASSERT(t.cycles.size() == 1u);
 

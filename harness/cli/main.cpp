@@ -1,6 +1,7 @@
 // cyclecert — the command line. Exit codes (for CI):
 //   0 success · 1 the controller alarmed (outputs still written) · 2 bad usage or unreadable input
 //   3 the program needs something the reference does not plan yet
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -51,6 +52,9 @@ Options:
                        --param RF1=1 (repeatable; see `cyclecert params`); applied after the case's
   --case CASE.json     plan a spec case: its program, profile and parameters; reports whether the
                        reference meets the case's expectation
+  --nose-radius R      the active tool's nose radius in mm, for G41/G42 (default 0)
+  --tip T              its imaginary tool-nose direction 0…9 (FANUC chart, X up, Z right)
+  --mdi                run the program as in MDI mode (the cycles alarm: G72.MDI)
   --json OUT           write the toolpath JSON to OUT ("-" for standard output)
   --svg OUT            write an SVG plot (contour, rough contour, rapids dashed, feeds solid)
   --help               this help
@@ -103,7 +107,26 @@ void writeFile(const std::string& path, const std::string& text) {
 struct PlanArgs {
   std::string program, casePath, profile, jsonOut, svgOut;
   std::vector<std::string> params;
+  bool mdi = false;
+  std::optional<double> noseRadius;
+  std::optional<int> tip;
 };
+
+double numberArg(const std::string& option, const std::string& text, double min, double max) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(v) || v < min || v > max) {
+    std::ostringstream s;
+    s << option << " expects a number from " << min << " to " << max << ", got '" << text << "'";
+    throw UsageError(s.str());
+  }
+  return v;
+}
 
 PlanArgs parsePlanArgs(const std::vector<std::string>& args) {
   PlanArgs p;
@@ -118,6 +141,13 @@ PlanArgs parsePlanArgs(const std::vector<std::string>& args) {
     else if (a == "--case") p.casePath = value();
     else if (a == "--json") p.jsonOut = value();
     else if (a == "--svg") p.svgOut = value();
+    else if (a == "--mdi") p.mdi = true;
+    else if (a == "--nose-radius") p.noseRadius = numberArg(a, value(), 0, 100);
+    else if (a == "--tip") {
+      const double t = numberArg(a, value(), 0, 9);
+      if (t != std::floor(t)) throw UsageError("--tip expects a whole number 0…9");
+      p.tip = static_cast<int>(t);
+    }
     else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option " + a);
     else if (p.program.empty()) p.program = a;
     else throw UsageError("more than one program given ('" + p.program + "', '" + a + "')");
@@ -148,13 +178,18 @@ int commandPlan(const std::vector<std::string>& args) {
   std::string title;
   if (!a.casePath.empty()) {
     specCase = loadSpecCase(a.casePath);
-    request = {specCase->program, a.casePath + "#/program", specCase->profile, specCase->params};
+    request = {specCase->program, a.casePath + "#/program", specCase->profile, specCase->params, {}};
+    request.options.mdi = specCase->mdi;
+    if (specCase->tool) request.options.tool = *specCase->tool;
     title = specCase->id + " — " + specCase->title;
   } else {
-    request = {readFile(a.program), a.program, "", {}};
+    request = {readFile(a.program), a.program, "", {}, {}};
     title = a.program;
   }
   if (!a.profile.empty()) request.profile = a.profile;
+  if (a.mdi) request.options.mdi = true;
+  if (a.noseRadius) request.options.tool.noseRadius = *a.noseRadius;
+  if (a.tip) request.options.tool.tip = *a.tip;
   for (auto& p : parsedParams(a.params)) request.params.push_back(p);
 
   const Toolpath path = planWithReference(request);

@@ -8,6 +8,9 @@ namespace cyclecert {
 void applyG71FirstBlock(const CycleCall& call);
 CycleOutcome planG71(const CycleCall& call);
 
+// G70 finishing cycle (G70.EX).
+CycleOutcome planG70(const CycleCall& call);
+
 // G72 facing roughing (seed 001).
 void applyG72FirstBlock(const CycleCall& call);
 CycleOutcome planG72(const CycleCall& call);

@@ -47,4 +47,14 @@ void checkType1Monotonic(const Type1Cycle& cycle, const AxisCheck& cutAxis, cons
   }
 }
 
+void checkMonotonicAlongCut(const std::vector<Segment>& shape, int cutDirection, const AxisCheck& cutAxis) {
+  if (shape.empty()) return;
+  ProgressTracker alongCut(cutDirection * shape.front().from.z, cutAxis);
+  for (const Segment& s : shape) {
+    std::vector<Point> points = apexesAlong(s);
+    points.push_back(s.to);
+    for (Point p : points) alongCut.visit(cutDirection * p.z, s.sourceLine);
+  }
+}
+
 }  // namespace cyclecert

@@ -3,6 +3,9 @@
 #include "reference/gcode/address_ranges.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
+#include "reference/cycles/type2_roughing.h"
+
+#include <cmath>
 
 namespace cyclecert {
 
@@ -48,25 +51,93 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
   return s;
 }
 
-void applyType1Parameters(const CycleCall& call, Type1Cycle& cycle) {
-  cycle.depthOfCut = call.params.get("5132");
-  cycle.retract = call.params.get("5133");
-  if (cycle.depthOfCut <= 0) {
+double depthOfCut(const CycleCall& call, const std::string& code) {
+  const double dd = call.params.get("5132");
+  if (dd <= 0) {
     throw CycleAlarm(alarm::kCuttingAmount, call.block().line,
-                     "depth of cut Δd is 0: program it in the first " + cycle.code + " block or set parameter 5132");
+                     "depth of cut Δd is 0: program it in the first " + code + " block or set parameter 5132");
   }
-  cycle.semiFinish = !call.params.bit("RF1");
-  cycle.directReturn = call.params.bit("DTP");
+  return dd;
 }
 
-std::vector<Move> movesInPlane(std::vector<Move> moves, bool transposeFrame) {
-  if (!transposeFrame) return moves;
+namespace {
+
+Point toFrame(Point p, const RoughingFrame& f) { return f.transposed ? transposed(p) : p; }
+
+std::vector<Segment> toFrame(const std::vector<Segment>& segments, const RoughingFrame& f) {
+  if (!f.transposed) return segments;
+  std::vector<Segment> out;
+  out.reserve(segments.size());
+  for (const Segment& s : segments) out.push_back(transposed(s));
+  return out;
+}
+
+// Moves planned in the cycle frame, back in the plane.
+std::vector<Move> movesInPlane(std::vector<Move> moves, const RoughingFrame& f) {
+  if (!f.transposed) return moves;
   for (Move& m : moves) {
     m.to = transposed(m.to);
     if (m.center) m.center = transposed(*m.center);
     m.shape = reversedKind(m.shape);
   }
   return moves;
+}
+
+CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb, std::vector<Move> moves) {
+  CycleOutcome out;
+  out.moves = std::move(moves);
+  out.resumeAt = resumeIndexAfterCycle(call, shape);
+  out.shape = shape.finishShape();
+  out.allowance = {sb.allowanceFirst, sb.allowanceSecond};
+  return out;
+}
+
+}  // namespace
+
+CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
+                       const RoughingFrame& frame) {
+  Type1Cycle cycle;
+  cycle.code = frame.code;
+  cycle.start = toFrame(shape.start, frame);
+  cycle.headEnd = toFrame(shape.headEnd, frame);
+  cycle.body = toFrame(shape.body, frame);
+  cycle.allowance = toFrame(Point{sb.allowanceFirst, sb.allowanceSecond}, frame);
+  cycle.headIsRapid = shape.headIsRapid;
+  cycle.feed = sb.feed;
+  cycle.depthOfCut = depthOfCut(call, frame.code);
+  cycle.retract = call.params.get("5133");
+  cycle.semiFinish = !call.params.bit("RF1");
+  cycle.directReturn = call.params.bit("DTP");
+  // G71.T1.MONO, G71.CHECK: checked on the finish shape before any move.
+  checkType1Monotonic(cycle, frame.cutAxis, frame.depthAxis);
+  return outcome(call, shape, sb, movesInPlane(planType1(cycle), frame));
+}
+
+CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
+                        const RoughingFrame& frame) {
+  Type2Cycle cycle;
+  cycle.code = frame.code;
+  cycle.start = toFrame(shape.start, frame);
+  cycle.shape = toFrame(shape.finishShape(), frame);
+  cycle.allowance = toFrame(Point{sb.allowanceFirst, sb.allowanceSecond}, frame);
+  cycle.headIsRapid = shape.headIsRapid;
+  cycle.feed = sb.feed;
+  cycle.depthOfCut = depthOfCut(call, frame.code);
+  cycle.retract = call.params.get("5133");
+  cycle.clearance = call.params.get("5134");
+  cycle.semiFinish = !call.params.bit("RF2");
+  cycle.followAlongCut = call.params.bit("R16") || call.params.bit("NSP");  // G71.NSP: NSP implies R16
+  cycle.levelByLevel = call.profile.pocketsLevelByLevel;
+  // G71.T2.MONO: only the cut axis must be monotonic.
+  checkMonotonicAlongCut(cycle.shape, cycle.cutDirection(), frame.cutAxis);
+  CycleOutcome out = outcome(call, shape, sb, movesInPlane(planType2(cycle), frame));
+  // G71.T2.DW0 / G72.T2: an allowance along the cut axis with pockets may cut into a side wall.
+  if (std::abs(cycle.allowance.z) > kGeomEps && type2HasPocketWall(cycle)) {
+    const std::string rule = frame.code == "G72" ? "G72.T2" : "G71.T2.DW0";
+    out.warnings.push_back({call.block().line, rule + ": type II with pockets and a finishing allowance along the "
+                                                   "cut axis: the tool may cut into a side wall (normally the allowance is 0)"});
+  }
+  return out;
 }
 
 }  // namespace cyclecert

@@ -4,6 +4,7 @@
 // ranges (G72.RANGE), and the type I plan in the cycle frame.
 
 #include "reference/cycles/cycle_call.h"
+#include "reference/cycles/monotonic_check.h"
 #include "reference/cycles/shape_program.h"
 #include "reference/cycles/type1_roughing.h"
 
@@ -30,10 +31,22 @@ struct SecondBlock {
 // Reads and range-checks the block with P and Q. Throws CycleAlarm (PS0061, PS0003, PS0011).
 SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format);
 
-// Type I parameters from the machine parameters in force: Δd (PS0062 if not positive), e, RF1, DTP.
-void applyType1Parameters(const CycleCall& call, Type1Cycle& cycle);
+// How a cycle sits in the plane: G71 cuts along the plane's 1st axis; G72 along its 2nd, so it plans
+// with the axes exchanged. The monotonic checks name the plane's axes (PS0064 1st, PS0329 2nd).
+struct RoughingFrame {
+  std::string code;       // "G71", "G72"
+  bool transposed;        // G72
+  AxisCheck cutAxis;      // monotonic check along the cut axis
+  AxisCheck depthAxis;    // type I: the shape must retreat along the depth axis
+};
 
-// Moves of a plan in the cycle frame, mapped back to the plane (G72 plans with the axes exchanged).
-std::vector<Move> movesInPlane(std::vector<Move> moves, bool transposeFrame);
+// The two types share the format, the parameters and the checks before any move.
+CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
+                       const RoughingFrame& frame);
+CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
+                        const RoughingFrame& frame);
+
+// Δd from parameter 5132 (programmed values overwrite it): PS0062 if not positive.
+double depthOfCut(const CycleCall& call, const std::string& code);
 
 }  // namespace cyclecert

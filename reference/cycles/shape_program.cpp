@@ -7,8 +7,6 @@
 
 namespace cyclecert {
 
-namespace {
-
 std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which) {
   const auto index = call.program.findSequence(static_cast<long>(w.value));
   if (!index) {
@@ -19,6 +17,8 @@ std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which) 
   return *index;
 }
 
+namespace {
+
 // G72.NSNF.GCODES: the only G codes a shape program may contain.
 bool usableInShape(int g10) {
   static const std::set<int> allowed = {0, 10, 20, 30, 40, 960, 970, 980, 990, 400, 410, 420};
@@ -27,14 +27,16 @@ bool usableInShape(int g10) {
 
 bool isTnrcCode(int g10) { return g10 == 400 || g10 == 410 || g10 == 420; }
 
-void checkUsableInShape(const CycleCall& call, const Block& b) {
+}  // namespace
+
+void checkUsableInShape(const Block& b, bool tnrcAllowed) {
   for (const Word* g : b.all('G')) {
     const int g10 = gCode10(g->value);
     if (!usableInShape(g10)) {
       throw CycleAlarm(alarm::kUnavailableInShape, b.line, g->text + " cannot be used between P and Q");
     }
     // G71.TNRC.PLACE: G40/G41/G42 belong before the cycle and after the shape (NT1 is issue 3).
-    if (isTnrcCode(g10) && !call.profile.toleratesTnrcInShape) {
+    if (isTnrcCode(g10) && !tnrcAllowed) {
       throw CycleAlarm(alarm::kUnavailableInShape, b.line,
                        g->text + ": nose-radius compensation must be commanded outside the shape program");
     }
@@ -53,8 +55,6 @@ int motionCode(const Block& b, int modal) {
   }
   return modal;
 }
-
-}  // namespace
 
 ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& q) {
   ShapeProgram shape;
@@ -84,7 +84,8 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
   shape.headEnd = shape.start;  // a head block without motion leaves B at A
   for (std::size_t i = shape.nsIndex; i <= shape.nfIndex; ++i) {
     const Block& b = call.program.blocks[i];
-    checkUsableInShape(call, b);
+    // G71.TNRC.NT1: with NT1 = 1 compensation codes in a roughing shape are ignored without alarm.
+    checkUsableInShape(b, call.profile.toleratesTnrcInShape || call.params.bit("NT1"));
     s.motion = motionCode(b, s.motion);
     if (!hasAxisWord(b)) continue;
     const auto seg = motionSegment(b, s.motion, s);

@@ -27,6 +27,16 @@ struct ShapeProgram {
 //  PS0325 for commands not usable in a shape program (G72.NSNF.GCODES, G71.TNRC.PLACE).
 ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& q);
 
+// The block found by a P or Q word (PS0063 naming the cycle block when there is none).
+std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which);
+
+// G72.NSNF.GCODES, G71.TNRC.PLACE: PS0325 for a command a shape program may not contain. G40/G41/G42
+// are allowed when `tnrcAllowed` (the profile tolerates them, NT1 for roughing, NT2 for G70).
+void checkUsableInShape(const Block& b, bool tnrcAllowed);
+
+// The group-01 motion code (0…3) a block commands, or `modal` when it commands none.
+int motionCode(const Block& b, int modal);
+
 // G72.NSNF.FOLLOW: execution resumes after nf when ns directly follows the cycle block,
 // otherwise after the cycle block.
 std::size_t resumeIndexAfterCycle(const CycleCall& call, const ShapeProgram& shape);

@@ -11,33 +11,41 @@ namespace cyclecert {
 
 namespace {
 
-// G codes of a FANUC lathe (system A) that the reference knows but does not plan: it warns and
-// leaves the position where it was (cycles return to their start point).
-const std::map<int, std::string>& unplannedGCodes() {
+// G codes of a FANUC lathe (system A) that the reference knows but does not model: it warns and
+// leaves the position where it was.
+const std::map<int, std::string>& unmodelledGCodes() {
   static const std::map<int, std::string> codes = {
-      {700, "G70 finishing cycle"}, {730, "G73 pattern repeating cycle"},
-      {740, "G74 end-face peck drilling cycle"}, {741, "G74.1 axial groove cycle"},
-      {750, "G75 outer diameter grooving cycle"}, {760, "G76 threading cycle"},
-      {900, "G90 outer diameter cutting cycle"}, {920, "G92 threading cycle"},
-      {940, "G94 end-face turning cycle"}, {280, "G28 reference position return"},
-      {500, "G50 coordinate system setting"}, {320, "G32 threading"}, {650, "G65 macro call"},
-      {530, "G53 machine coordinate system"}, {540, "G54 work coordinate system"},
+      {280, "G28 reference position return"}, {500, "G50 coordinate system setting"}, {320, "G32 threading"},
+      {650, "G65 macro call"}, {530, "G53 machine coordinate system"}, {540, "G54 work coordinate system"},
       {100, "G10 data setting"}, {270, "G27 reference position check"}, {300, "G30 2nd reference return"},
   };
   return codes;
 }
 
-// Codes the runner applies itself (motion, plane, units, compensation, speed/feed modes, dwell).
+// Canned cycles the reference cannot plan yet: the program is reported as not supported, never
+// planned without them.
+const std::map<int, std::string>& unplannedCycles() {
+  static const std::map<int, std::string> codes = {
+      {730, "G73 pattern repeating cycle"}, {740, "G74 end-face peck drilling cycle"},
+      {741, "G74.1 axial groove cycle"},    {750, "G75 outer diameter grooving cycle"},
+      {760, "G76 threading cycle"},         {900, "G90 outer diameter cutting cycle"},
+      {920, "G92 threading cycle"},         {940, "G94 end-face turning cycle"},
+  };
+  return codes;
+}
+
+// Codes the runner applies itself (motion, plane, units, compensation, speed/feed modes, dwell)
+// and the cycles it plans.
 const std::set<int>& modelledGCodes() {
   static const std::set<int> codes = {0, 10, 20, 30, 40, 170, 180, 190, 200, 210, 400, 410, 420,
-                                      960, 970, 980, 990, 710, 720};
+                                      960, 970, 980, 990, 700, 710, 720};
   return codes;
 }
 
 class ProgramRunner {
  public:
-  ProgramRunner(const Program& program, const Profile& profile, const MachineParams& params)
-      : program_(program), profile_(profile), params_(params) {
+  ProgramRunner(const Program& program, const Profile& profile, const MachineParams& params, const RunOptions& options)
+      : program_(program), profile_(profile), params_(params), options_(options) {
     path_.profile = profile.name;
   }
 
@@ -58,11 +66,14 @@ class ProgramRunner {
     int cycle = 0;
     for (const Word* g : b.all('G')) {
       const int g10 = gCode10(g->value);
-      if (!modelledGCodes().count(g10) && !unplannedGCodes().count(g10)) {
+      if (const auto it = unplannedCycles().find(g10); it != unplannedCycles().end()) {
+        throw NotSupported(b.line, it->second + " is not planned by the reference yet");
+      }
+      if (!modelledGCodes().count(g10) && !unmodelledGCodes().count(g10)) {
         throw CycleAlarm(alarm::kImproperGCode, b.line, g->text + " is not a G code of this controller");
       }
       applyModalCode(g10);
-      if (g10 == 710 || g10 == 720) cycle = g10;
+      if (g10 == 700 || g10 == 710 || g10 == 720) cycle = g10;
     }
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
@@ -70,8 +81,8 @@ class ProgramRunner {
     }
     if (cycle) return executeCycle(i, cycle);
     for (const Word* g : b.all('G')) {
-      if (auto it = unplannedGCodes().find(gCode10(g->value)); it != unplannedGCodes().end()) {
-        path_.warnings.push_back({b.line, it->second + " is not planned by the reference; position unchanged"});
+      if (auto it = unmodelledGCodes().find(gCode10(g->value)); it != unmodelledGCodes().end()) {
+        path_.warnings.push_back({b.line, it->second + " is not modelled by the reference; position unchanged"});
         return i + 1;
       }
     }
@@ -94,7 +105,9 @@ class ProgramRunner {
   std::size_t executeCycle(std::size_t i, int cycle) {
     const Block& b = program_.blocks[i];
     const CycleCall call{program_, i, state_, params_, profile_};
-    if (!b.has('P') && !b.has('Q')) {
+    // G72.MDI, HNC.G71.MDI: the shape program must be in memory.
+    if (options_.mdi) throw CycleAlarm(alarm::kNotInMdi, b.line, "G" + std::to_string(cycle / 10) + " cannot run in MDI mode");
+    if (cycle != 700 && !b.has('P') && !b.has('Q')) {
       cycle == 710 ? applyG71FirstBlock(call) : applyG72FirstBlock(call);
       return i + 1;
     }
@@ -102,8 +115,8 @@ class ProgramRunner {
       path_.warnings.push_back({b.line, "nose-radius compensation (G41/G42) is not applied to the shape yet"});
     }
     if (!started_) startPath();
-    CycleOutcome out = cycle == 710 ? planG71(call) : planG72(call);
-    CycleRecord record{cycle == 710 ? "G71" : "G72", b.line, state_.planePoint(), path_.moves.size(),
+    CycleOutcome out = cycle == 700 ? planG70(call) : cycle == 710 ? planG71(call) : planG72(call);
+    CycleRecord record{"G" + std::to_string(cycle / 10), b.line, state_.planePoint(), path_.moves.size(),
                        out.moves.size(), std::move(out.shape), out.allowance};
     path_.cycles.push_back(record);
     for (Move& m : out.moves) path_.moves.push_back(std::move(m));
@@ -138,6 +151,7 @@ class ProgramRunner {
   const Program& program_;
   const Profile& profile_;
   MachineParams params_;
+  RunOptions options_;
   ModalState state_;
   Toolpath path_;
   bool started_ = false;
@@ -146,8 +160,9 @@ class ProgramRunner {
 
 }  // namespace
 
-Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params) {
-  return ProgramRunner(program, profile, params).run();
+Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params,
+                     const RunOptions& options) {
+  return ProgramRunner(program, profile, params, options).run();
 }
 
 }  // namespace cyclecert

@@ -5,12 +5,21 @@
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 #include "reference/model/program.h"
+#include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
 
+// How the program is run: from memory or in MDI mode (G72.MDI), and with which tool offset
+// (nose radius and imaginary tip direction, for G41/G42).
+struct RunOptions {
+  bool mdi = false;
+  ToolOffset tool;
+};
+
 // A controller alarm ends the run: the toolpath keeps the moves made before it and names the alarm.
 // Throws NotSupported for what the reference cannot plan yet (e.g. type II).
-Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params);
+Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params,
+                     const RunOptions& options = {});
 
 }  // namespace cyclecert

@@ -18,6 +18,8 @@ std::string alarmTitle(std::string_view code) {
       {alarm::kHeadNotG00G01, "G00/G01 IS NOT IN THE FIRST BLOCK OF SHAPE PROGRAM"},
       {alarm::kOverStartPoint, "FINISHING SHAPE WHICH OVER OF STARTING POINT"},
       {alarm::kUnavailableInShape, "UNAVAILABLE COMMAND IS IN SHAPE PROGRAM"},
+      {alarm::kTnrcNotCancelled, "TOOL NOSE RADIUS COMPENSATION IS NOT CANCELLED"},
+      {alarm::kNotInMdi, "MULTIPLE REPETITIVE CYCLE IS NOT ALLOWED IN MDI MODE"},
       {alarm::kNotMonotonicSecond, "FINISHING SHAPE IS NOT A MONOTONOUS CHANGE (SECOND AXIS)"},
   };
   const auto it = titles.find(code);

@@ -23,6 +23,8 @@ inline constexpr std::string_view kHeadNotG00G01 = "PS0065";
 inline constexpr std::string_view kOverStartPoint = "PS0322";
 inline constexpr std::string_view kUnavailableInShape = "PS0325";
 inline constexpr std::string_view kNotMonotonicSecond = "PS0329";  // 2nd plane axis (X)
+inline constexpr std::string_view kTnrcNotCancelled = "PS0538";    // G70 shape end block without G40 (NT2)
+inline constexpr std::string_view kNotInMdi = "PS0067";            // multiple repetitive cycle in MDI mode
 }  // namespace alarm
 
 // The controller's title for an alarm code ("FINISHING SHAPE IS NOT MONOTONOUS (FIRST AXIS)").

@@ -17,6 +17,9 @@ struct Profile {
   // GSK (seed 001) accepts G40/G41/G42 inside ns…nf and ignores them during roughing; FANUC 0i-F
   // raises PS0325 unless NT1 (issue 3).
   bool toleratesTnrcInShape = false;
+  // G71.T2.ORDER: 0i-F roughs a pocket to its bottom before the next (depth first); 0i-C cuts
+  // every pocket at one level before going deeper.
+  bool pocketsLevelByLevel = false;
 };
 
 const Profile* findProfile(std::string_view name);

@@ -11,6 +11,14 @@ Profile fanuc0iF() {
   return p;
 }
 
+Profile fanuc0iC() {
+  Profile p = fanuc0iF();
+  p.name = "fanuc-0i-c";
+  p.description = "FANUC Series 0i-C lathe: as 0i-F, but type II roughs pockets level by level";
+  p.pocketsLevelByLevel = true;  // G71.T2.ORDER: seed 000 contrasts 0i-F's order with 0i-C's
+  return p;
+}
+
 Profile gsk() {
   Profile p;
   p.name = "gsk";
@@ -25,7 +33,7 @@ Profile gsk() {
 }  // namespace
 
 const std::vector<Profile>& allProfiles() {
-  static const std::vector<Profile> profiles = {fanuc0iF(), gsk()};
+  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk()};
   return profiles;
 }
 

@@ -1,0 +1,269 @@
+#include "reference/cycles/type2_roughing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "reference/cycles/pocket_profile.h"
+
+namespace cyclecert {
+
+namespace {
+
+constexpr double kEps = 1e-9;
+int signOf(double v) { return v > kEps ? 1 : (v < -kEps ? -1 : 0); }
+
+std::vector<Segment> roughProfileOf(const Type2Cycle& c) {
+  std::vector<Segment> rough;
+  for (const Segment& s : c.shape) rough.push_back(s.shifted(c.allowance));
+  return rough;
+}
+
+// A node of the cut tree (G71.T2.ORDER): the root (the start level), an interval cut at a pass
+// level, or a bottom cut along a valley bottom (G71.T2.VALLEY).
+struct CutNode {
+  enum Kind { Root, Interval, Bottom } kind = Root;
+  double depth = 0;
+  double parentDepth = 0;
+  ProfilePos start, end;
+  bool openEnd = false;
+  int level = 0;   // k of the pass level δₖ (bottoms: the first level at or below them)
+  int parent = -1;
+  std::vector<int> children;
+};
+
+class Type2Planner {
+ public:
+  explicit Type2Planner(const Type2Cycle& c)
+      : c_(c),
+        d_(c.depthDirection()),
+        cut_(c.cutDirection()),
+        aPrime_(c.start + c.allowance),
+        profile_(roughProfileOf(c), 1, aPrime_, d_, cut_) {}
+
+  std::vector<Move> plan() {
+    buildCutTree();
+    emit(MoveKind::Rapid, aPrime_, "approach", {"G71.OP"});
+    for (int node : cutOrder()) cutNode(node);
+    returnToStart();
+    if (c_.semiFinish) {
+      semiFinishPass();
+      returnToStart();
+    }
+    return std::move(moves_);
+  }
+
+ private:
+  // ---- the cut tree ---------------------------------------------------------------------------
+
+  // Pass levels δₖ = k·Δd; intervals at δₖ hang under the interval at δₖ₋₁ that contains them, and
+  // a valley bottom with δₖ₋₁ < depth ≤ δₖ under the interval at δₖ₋₁ around it.
+  void buildCutTree() {
+    nodes_.push_back(CutNode{});  // the root: level 0 over the whole profile
+    nodes_[0].start = {0, aPrime_};
+    nodes_[0].end = {profile_.pieces().size() - 1, profile_.pieces().back().to};
+    std::vector<int> previousLevel = {0};
+    const double deepest = profile_.deepest();
+    for (int k = 1; (k - 1) * c_.depthOfCut < deepest - kEps; ++k) {
+      const double level = k * c_.depthOfCut;
+      const double above = level - c_.depthOfCut;
+      std::vector<int> thisLevel;
+      for (const ProfileInterval& in : profile_.intervalsAt(level)) {
+        thisLevel.push_back(addNode({CutNode::Interval, level, above, in.start, in.end, in.openEnd, k, -1, {}},
+                                    previousLevel));
+      }
+      for (const ValleyBottom& b : profile_.valleyBottoms()) {
+        if (b.depth > above + kEps && b.depth <= level + kEps) {
+          addNode({CutNode::Bottom, b.depth, above, b.start, b.end, false, k, -1, {}}, previousLevel);
+        }
+      }
+      previousLevel = thisLevel;
+    }
+  }
+
+  // Adds a node under the candidate parent whose range contains it.
+  int addNode(CutNode node, const std::vector<int>& candidates) {
+    for (int p : candidates) {
+      const CutNode& parent = nodes_[p];
+      if (parent.kind == CutNode::Root ||
+          (progress(parent.start) <= progress(node.start) + kEps && progress(node.end) <= progress(parent.end) + kEps)) {
+        node.parent = p;
+        break;
+      }
+    }
+    if (node.parent < 0) node.parent = 0;  // cannot happen for a z-monotonic profile; keep the tree whole
+    node.parentDepth = nodes_[node.parent].depth;
+    nodes_.push_back(node);
+    const int id = static_cast<int>(nodes_.size()) - 1;
+    nodes_[node.parent].children.push_back(id);
+    return id;
+  }
+
+  double progress(const ProfilePos& p) const { return profile_.progress(p.p); }
+
+  // G71.T2.ORDER: depth first (0i-F: a pocket to its bottom, then the next) or level by level (0i-C).
+  std::vector<int> cutOrder() {
+    for (CutNode& n : nodes_) {
+      std::stable_sort(n.children.begin(), n.children.end(),
+                       [&](int a, int b) { return progress(nodes_[a].start) < progress(nodes_[b].start) - kEps; });
+    }
+    std::vector<int> order;
+    if (!c_.levelByLevel) {
+      appendDepthFirst(0, order);
+      return order;
+    }
+    for (std::size_t i = 1; i < nodes_.size(); ++i) order.push_back(static_cast<int>(i));
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      if (nodes_[a].level != nodes_[b].level) return nodes_[a].level < nodes_[b].level;
+      return progress(nodes_[a].start) < progress(nodes_[b].start) - kEps;
+    });
+    return order;
+  }
+
+  void appendDepthFirst(int node, std::vector<int>& order) const {
+    for (int child : nodes_[node].children) {
+      order.push_back(child);
+      appendDepthFirst(child, order);
+    }
+  }
+
+  // The level of the nearest node containing both cuts: above it everything between them is cut.
+  double commonDepth(int a, int b) const {
+    std::vector<int> ancestorsOfA;
+    for (int n = a; n >= 0; n = nodes_[n].parent) ancestorsOfA.push_back(n);
+    for (int n = nodes_[b].parent; n >= 0; n = nodes_[n].parent) {
+      if (std::find(ancestorsOfA.begin(), ancestorsOfA.end(), n) != ancestorsOfA.end()) return nodes_[n].depth;
+    }
+    return 0;
+  }
+
+  // ---- the motion of one cut --------------------------------------------------------------------
+
+  void cutNode(int id) {
+    const CutNode& n = nodes_[id];
+    ++pass_;
+    const std::vector<Segment> nearWall = profile_.wallAbove(n.start, n.parentDepth);
+    const Point q = nearWall.empty() ? n.start.p : nearWall.front().from;
+    const bool infeedAlongHead = headAlongDepth() && onHeadLine(q) &&
+                                 std::all_of(nearWall.begin(), nearWall.end(), [&](const Segment& s) { return onHeadLine(s.to); });
+    travelTo(q, commonDepth(previous_, id), infeedAlongHead, n.start.p);
+    if (!infeedAlongHead) followPath(nearWall, {"G71.T2.FOLLOW"});
+    emit(MoveKind::Feed, n.end.p, "pass", {cutRule(), "G71.T2.ORDER"});
+    leave(n);
+    previous_ = id;
+  }
+
+  // Travel above what still stands, then down to the entry point (G71.T2.POCKET.EXIT (20), (21)).
+  void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart) {
+    // Before the first cut the tool stands at A', outside the stock: no travel up.
+    const double travel = pass_ == 1 ? depthOf(current()) : std::min(depthOf(current()), commonDepth - c_.retract);
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass", {"G71.T2.POCKET.EXIT"});
+    emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
+    if (infeedAlongHead) {
+      // The type I infeed along a head block parallel to the depth axis (G72.STEP2).
+      emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, cutStart, "pass", {"G72.STEP2", "G71.HEAD.G0G1"});
+      return;
+    }
+    const double approach = commonDepth - c_.clearance;
+    if (approach > depthOf(current()) + kEps && approach < depthOf(q) - kEps) {
+      emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, "pass", {"G71.T2.POCKET.EXIT"});
+    }
+    emit(MoveKind::Feed, q, "pass", {"G71.T2.POCKET.EXIT"});
+  }
+
+  // After the cut: 45° from a valley bottom, else up the far wall, then along x to e above the
+  // level above (more than e where the follow stopped early, at a peak or a block along the cut).
+  void leave(const CutNode& n) {
+    if (n.kind == CutNode::Bottom) {
+      const Point p = current();
+      emit(MoveKind::Feed, {p.z - cut_ * c_.retract, p.x - d_ * c_.retract}, "pass", {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
+      return;
+    }
+    if (!n.openEnd) {
+      const auto farWall = profile_.wallAfter(n.end, n.parentDepth, c_.followAlongCut);
+      followPath(farWall, {"G71.T2.FOLLOW", "G71.CHAMFER"});
+    }
+    emit(MoveKind::Feed, {current().z, profile_.xAtDepth(n.parentDepth - c_.retract)}, "pass", {"G71.T2.FOLLOW"});
+  }
+
+  // ---- return and semi-finish ------------------------------------------------------------------
+
+  // G71.T2.RETURN: back to A, passing Δd above a shape that stands as high as the start point.
+  void returnToStart() {
+    const double startDepth = depthOf(c_.start);
+    const double highest = profile_.shallowestAfterHead();
+    const double travel = highest <= startDepth + kEps ? highest - c_.depthOfCut : startDepth;
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "return", {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, {c_.start.z, current().x}, "return", {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, c_.start, "return", {"G71.T2.RETURN"});
+  }
+
+  // G71.T2.RETURN: the semi-finish pass along the whole rough profile, A' first.
+  void semiFinishPass() {
+    emit(MoveKind::Rapid, aPrime_, "semi-finish", {"G71.T2.RETURN"});
+    const std::vector<Segment> rough = roughProfileOf(c_);
+    for (std::size_t i = 0; i < rough.size(); ++i) {
+      const bool rapid = i == 0 && headAlongDepth() && c_.headIsRapid;
+      emitSegment(rough[i], rapid ? MoveKind::Rapid : MoveKind::Feed, "semi-finish", {"G71.T2.RETURN"});
+    }
+  }
+
+  // ---- moves ------------------------------------------------------------------------------------
+
+  bool onHeadLine(Point p) const { return std::abs(p.z - aPrime_.z) <= kEps; }
+  bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kEps; }
+  std::string cutRule() const { return c_.code == "G72" ? "G72.T2" : "G71.OP"; }
+  double depthOf(Point p) const { return profile_.depth(p); }
+  Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
+
+  void followPath(const std::vector<Segment>& path, const std::vector<std::string>& rules) {
+    for (const Segment& s : path) emitSegment(s, MoveKind::Feed, "pass", rules);
+  }
+
+  void emitSegment(const Segment& s, MoveKind kind, const std::string& phase, const std::vector<std::string>& rules) {
+    const std::size_t before = moves_.size();
+    emit(kind, s.to, phase, rules);
+    if (s.isArc() && moves_.size() > before) {
+      moves_.back().shape = s.kind;
+      moves_.back().center = s.center;
+    }
+  }
+
+  void emit(MoveKind kind, Point to, const std::string& phase, std::vector<std::string> rules) {
+    if (distance(current(), to) <= kEps) return;
+    Move m;
+    m.kind = kind;
+    m.to = to;
+    if (kind == MoveKind::Feed) m.feed = c_.feed;
+    m.phase = phase;
+    m.pass = phase == "pass" ? pass_ : 0;
+    m.rules = std::move(rules);
+    moves_.push_back(std::move(m));
+  }
+
+  const Type2Cycle& c_;
+  int d_, cut_;
+  Point aPrime_;
+  PocketProfile profile_;
+  std::vector<CutNode> nodes_;
+  std::vector<Move> moves_;
+  int previous_ = 0;  // the root before the first cut
+  int pass_ = 0;
+};
+
+}  // namespace
+
+int Type2Cycle::depthDirection() const { return signOf(shape.front().to.x - shape.front().from.x); }
+
+int Type2Cycle::cutDirection() const {
+  const int c = signOf(shape.back().to.z - shape.front().from.z);
+  return c != 0 ? c : -1;
+}
+
+std::vector<Move> planType2(const Type2Cycle& cycle) { return Type2Planner(cycle).plan(); }
+
+bool type2HasPocketWall(const Type2Cycle& cycle) {
+  const Point aPrime = cycle.start + cycle.allowance;
+  return PocketProfile(roughProfileOf(cycle), 1, aPrime, cycle.depthDirection(), cycle.cutDirection()).hasPocketWall();
+}
+
+}  // namespace cyclecert
