@@ -48,6 +48,10 @@ void readExpectation(const json& expect, SpecCase& c) {
         }
         alarm.line = a["line"].get<int>();
       }
+      if (a.contains("when")) {
+        if (!a["when"].is_string()) throw SpecError(c.file, "/expect/alarm/when", "\"cycle block\", \"before the cycle\" or \"during the cycle\"");
+        alarm.when = a["when"].get<std::string>();
+      }
     } else {
       throw SpecError(c.file, "/expect/alarm", "an alarm code string or {\"code\": …, \"line\": …}");
     }

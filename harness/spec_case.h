@@ -15,6 +15,7 @@ namespace cyclecert {
 struct ExpectedAlarm {
   std::string code;
   std::optional<int> line;
+  std::optional<std::string> when;  // "cycle block", "before the cycle", "during the cycle"
 };
 
 struct SpecCase {

@@ -16,6 +16,10 @@ std::optional<std::string> unmetExpectation(const SpecCase& c, const Toolpath& a
       return "expected alarm " + c.expectedAlarm->code + " at line " + std::to_string(*c.expectedAlarm->line) +
              ", got it at line " + std::to_string(actual.alarm->line);
     }
+    if (c.expectedAlarm->when && *c.expectedAlarm->when != actual.alarm->when) {
+      return "expected alarm " + c.expectedAlarm->code + " raised " + *c.expectedAlarm->when + ", got it raised " +
+             (actual.alarm->when.empty() ? std::string("(unspecified)") : actual.alarm->when);
+    }
     return std::nullopt;
   }
   if (actual.alarm) {

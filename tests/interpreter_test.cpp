@@ -150,7 +150,26 @@ TEST(Interpreter, CompensationBeforeTheCycleIsWarnedAbout) {
   const Toolpath t = plan("G42;\n" + std::string(kShaft));
   ASSERT_FALSE(t.alarm);
   ASSERT_FALSE(t.warnings.empty());
-  EXPECT_NE(t.warnings[0].message.find("compensation"), std::string::npos);
+  EXPECT_NE(t.warnings[0].message.find("G42 is active but the tool's nose radius is 0"), std::string::npos);
+  EXPECT_FALSE(t.cycles[0].compensated);
+}
+
+TEST(Interpreter, CompensationOffsetsTheShapeTheCycleRoughs) {
+  RunOptions tool;
+  tool.tool = {0.4, 3};
+  const Toolpath t = planWithReference({"G42;\n" + std::string(kShaft), "c.nc", "fanuc-0i-f", {}, tool});
+  ASSERT_FALSE(t.alarm) << t.alarm->message;
+  ASSERT_TRUE(t.cycles[0].compensated);
+  // G71.TNRC.ZERO: A keeps a zero vector; block ns (X20, then Z-10 on the right side, tip 3) ends at
+  // B + r·(0, 1) + r·(−1, −1) = (2 − 0.4, 10).
+  EXPECT_TRUE(nearlyEqual(t.cycles[0].shape[0].from, {2, 20}, 1e-9));
+  EXPECT_TRUE(nearlyEqual(t.cycles[0].shape[0].to, {1.6, 10}, 1e-9));
+  // A radius larger than the shape allows is PS0041.
+  tool.tool = {6, 3};
+  const Toolpath big = planWithReference({"G42;\nG00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\n"
+                                          "G01 Z-10;\nG02 X24 Z-12 R2;\nN20 G01 X40 Z-20;\n", "c.nc", "fanuc-0i-f", {}, tool});
+  ASSERT_TRUE(big.alarm);
+  EXPECT_EQ(big.alarm->code, "PS0041");
 }
 
 TEST(Interpreter, AlarmKeepsTheMovesOfEarlierCycles) {

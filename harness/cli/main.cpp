@@ -5,12 +5,14 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cyclecert_version.h"
 #include "harness/reference_plan.h"
+#include "harness/rule_catalogue.h"
 #include "harness/spec_case.h"
 #include "harness/spec_check.h"
 #include "reference/model/alarms.h"
@@ -32,6 +34,7 @@ Usage: cyclecert <command> [options]
 Commands:
   plan       plan every cycle of a program (or a spec case) with the reference engine;
              write the toolpath as JSON and SVG
+  rules      list the rule catalogue with, per rule, how many spec cases cite it
   params     list the machine parameters, their defaults and the rules they serve
   profiles   list the controller profiles
   help       show this help, or `cyclecert help <command>`
@@ -71,6 +74,18 @@ const char* kParamsHelp = R"HELP(Usage: cyclecert params [--json]
 
 Lists every machine parameter the reference models: number, mnemonic, default, unit, meaning and
 the rule IDs it serves. Profiles may change defaults (see `cyclecert profiles`).
+)HELP";
+
+const char* kRulesHelp = R"HELP(Usage: cyclecert rules [--cycle C] [--uncited] [--json] [--specs DIR]
+
+Lists every rule of specs/rules.json with its source seed and section, its summary, and how many
+spec cases under specs/cases cite it.
+
+Options:
+  --cycle C     only the rules of one cycle (G71, G72, G74.1, LCYC95, …)
+  --uncited     only the rules no spec case cites (exit 1 if there are any)
+  --json        machine-readable output
+  --specs DIR   the specs directory (default: the repository's specs/)
 )HELP";
 
 const char* kProfilesHelp = R"HELP(Usage: cyclecert profiles
@@ -236,6 +251,45 @@ int commandParams(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
+int commandRules(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kRulesHelp;
+    return kExitOk;
+  }
+  std::string cycle, specs = defaultSpecsDir();
+  bool uncitedOnly = false, json = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--uncited") uncitedOnly = true;
+    else if (args[i] == "--json") json = true;
+    else if (args[i] == "--cycle" && i + 1 < args.size()) cycle = args[++i];
+    else if (args[i] == "--specs" && i + 1 < args.size()) specs = args[++i];
+    else throw UsageError("unknown option " + args[i] + " (see `cyclecert rules --help`)");
+  }
+  const RuleCatalogue catalogue = loadRuleCatalogue(specs + "/rules.json");
+  std::map<std::string, int> citations;
+  for (const std::string& file : findSpecCaseFiles(specs + "/cases")) {
+    for (const std::string& rule : loadSpecCase(file).rules) ++citations[rule];
+  }
+  nlohmann::json out = nlohmann::json::array();
+  int uncited = 0;
+  for (const RuleEntry& r : catalogue.rules) {
+    if (!cycle.empty() && r.cycle != cycle) continue;
+    const int n = citations.count(r.id) ? citations.at(r.id) : 0;
+    if (n == 0) ++uncited;
+    if (uncitedOnly && n > 0) continue;
+    if (json) {
+      out.push_back({{"id", r.id}, {"cycle", r.cycle}, {"seed", r.seed}, {"section", r.section},
+                     {"summary", r.summary}, {"cases", n}, {"notes", r.notes}});
+    } else {
+      std::cout << std::left << std::setw(22) << r.id << std::right << std::setw(4) << n << " case(s)  " << r.summary
+                << "\n";
+    }
+  }
+  if (json) std::cout << out.dump(2) << "\n";
+  else std::cout << uncited << " rule(s) cited by no spec case\n";
+  return uncitedOnly && uncited > 0 ? 1 : kExitOk;
+}
+
 int commandProfiles(const std::vector<std::string>& args) {
   if (wantsHelp(args)) {
     std::cout << kProfilesHelp;
@@ -277,6 +331,7 @@ int run(const std::vector<std::string>& argv) {
   }
   if (command == "plan") return commandPlan(args);
   if (command == "params") return commandParams(args);
+  if (command == "rules") return commandRules(args);
   if (command == "profiles") return commandProfiles(args);
   throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
 }

@@ -7,6 +7,7 @@
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 #include "reference/model/program.h"
+#include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
@@ -17,6 +18,7 @@ struct CycleCall {
   const ModalState& modal;  // state when that block is read: position = cycle start A
   MachineParams& params;    // Δd and e are modal and live in parameters 5132/5133
   const Profile& profile;
+  const ToolOffset& tool;   // the active tool's nose radius and imaginary tip (for G41/G42)
 
   const Block& block() const { return program.blocks[blockIndex]; }
 };
@@ -26,6 +28,7 @@ struct CycleOutcome {
   std::vector<Warning> warnings;
   std::vector<Segment> shape;      // finish shape A → B → C, plane coordinates
   Point allowance;                 // shift of the rough profile, plane coordinates
+  bool compensated = false;        // `shape` is the compensated path (G41/G42)
   std::size_t resumeAt = 0;        // index of the block executed after the cycle
 };
 

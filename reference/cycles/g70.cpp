@@ -4,6 +4,9 @@
 #include "reference/cycles/shape_program.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
+#include "reference/model/offset.h"
+
+#include <algorithm>
 
 namespace cyclecert {
 
@@ -31,6 +34,102 @@ void checkCompensationInG70(const CycleCall& call, std::size_t ns, std::size_t n
   }
 }
 
+// One motion of the finishing shape, with the compensation in force for it.
+struct FinishMotion {
+  Segment seg;
+  MoveKind kind;
+  double feed;
+  int compensation;  // 40, 41, 42 during this block
+  bool startUp;      // compensation starts with this block
+};
+
+std::vector<FinishMotion> readFinishMotions(const CycleCall& call, std::size_t ns, std::size_t nf) {
+  std::vector<FinishMotion> motions;
+  ModalState s = call.modal;
+  int compensation = call.modal.tnrc;
+  bool startUpPending = compensation != 40;  // in force at G70: the first motion is the start-up
+  for (std::size_t i = ns; i <= nf; ++i) {
+    const Block& block = call.program.blocks[i];
+    checkUsableInShape(block, call.profile.toleratesTnrcInShape || call.params.bit("NT2"));
+    s.motion = motionCode(block, s.motion);
+    if (const Word* f = block.find('F')) s.feed = f->value * s.unitScale();  // G70.EX: F inside ns…nf applies
+    if (call.params.bit("NT2")) {
+      if (block.hasG(410) || block.hasG(420)) {
+        compensation = block.hasG(410) ? 41 : 42;
+        startUpPending = true;
+      }
+      if (block.hasG(400)) compensation = 40;
+    }
+    if (!hasAxisWord(block)) continue;
+    if (const auto seg = motionSegment(block, s.motion, s)) {
+      if (s.motion != 0 && s.feed <= 0) throw CycleAlarm(alarm::kFeedZero, block.line, "cutting feed with F = 0");
+      motions.push_back({*seg, s.motion == 0 ? MoveKind::Rapid : MoveKind::Feed, s.feed, compensation,
+                         startUpPending && compensation != 40});
+      if (compensation != 40) startUpPending = false;
+    }
+    s.position = targetPosition(block, s);
+  }
+  return motions;
+}
+
+Move finishMove(const Segment& seg, MoveKind kind, double feed) {
+  Move m;
+  m.kind = kind;
+  m.shape = seg.kind;
+  m.to = seg.to;
+  if (seg.isArc()) m.center = seg.center;
+  if (kind == MoveKind::Feed) m.feed = feed;
+  m.phase = "finish";
+  m.rules = {"G70.EX"};
+  return m;
+}
+
+// The motions with compensation applied: each start-up block ends at the compensated position for
+// the block after it, the blocks of a compensated run follow the imaginary tool-nose path, and a
+// block with G40 ends at its programmed point (G71.TNRC.NT2, G71.TNRC.CANCEL).
+std::vector<Move> compensatedFinish(const CycleCall& call, const std::vector<FinishMotion>& motions,
+                                    std::vector<Segment>& shape) {
+  std::vector<Move> moves;
+  std::size_t i = 0;
+  while (i < motions.size()) {
+    const FinishMotion& m = motions[i];
+    if (!m.startUp || call.tool.noseRadius <= 0) {
+      moves.push_back(finishMove(m.seg, m.kind, m.feed));
+      shape.push_back(m.seg);
+      ++i;
+      continue;
+    }
+    std::size_t end = i + 1;
+    while (end < motions.size() && motions[end].compensation == m.compensation && !motions[end].startUp) ++end;
+    const CompensationSide side = m.compensation == 41 ? CompensationSide::Left : CompensationSide::Right;
+    std::vector<Segment> run;
+    for (std::size_t k = i + 1; k < end; ++k) run.push_back(motions[k].seg);
+    Segment startUp = m.seg;
+    try {
+      if (!run.empty()) {
+        startUp.to = startUpPoint(m.seg.to, run.front(), call.tool, side);
+        run = compensatedPath(run, call.tool, side);
+      }
+    } catch (const OffsetError& e) {
+      throw CycleAlarm(alarm::kInterference, e.sourceLine, "the tool-nose radius does not fit the finishing shape");
+    }
+    moves.push_back(finishMove(startUp, m.kind, m.feed));
+    shape.push_back(startUp);
+    for (Segment seg : run) {
+      seg.from = moves.back().to;
+      // Each compensated piece moves like the block it comes from.
+      const FinishMotion* source = &m;
+      for (std::size_t k = i + 1; k < end; ++k) {
+        if (motions[k].seg.sourceLine == seg.sourceLine) source = &motions[k];
+      }
+      moves.push_back(finishMove(seg, source->kind, source->feed));
+      shape.push_back(seg);
+    }
+    i = end;
+  }
+  return moves;
+}
+
 }  // namespace
 
 CycleOutcome planG70(const CycleCall& call) {
@@ -44,29 +143,12 @@ CycleOutcome planG70(const CycleCall& call) {
   checkCompensationInG70(call, ns, nf);
 
   CycleOutcome out;
-  ModalState s = call.modal;
-  const Point start = s.planePoint();
-  for (std::size_t i = ns; i <= nf; ++i) {
-    const Block& block = call.program.blocks[i];
-    checkUsableInShape(block, call.profile.toleratesTnrcInShape || call.params.bit("NT2"));
-    s.motion = motionCode(block, s.motion);
-    if (const Word* f = block.find('F')) s.feed = f->value * s.unitScale();  // G70.EX: F inside ns…nf applies
-    if (!hasAxisWord(block)) continue;
-    if (const auto seg = motionSegment(block, s.motion, s)) {
-      if (s.motion != 0 && s.feed <= 0) throw CycleAlarm(alarm::kFeedZero, block.line, "cutting feed with F = 0");
-      Move m;
-      m.kind = s.motion == 0 ? MoveKind::Rapid : MoveKind::Feed;
-      m.shape = seg->kind;
-      m.to = seg->to;
-      if (seg->isArc()) m.center = seg->center;
-      if (m.kind == MoveKind::Feed) m.feed = s.feed;
-      m.phase = "finish";
-      m.rules = {"G70.EX"};
-      out.moves.push_back(m);
-      out.shape.push_back(*seg);
-    }
-    s.position = targetPosition(block, s);
-  }
+  const std::vector<FinishMotion> motions = readFinishMotions(call, ns, nf);
+  out.moves = compensatedFinish(call, motions, out.shape);
+  out.compensated = call.tool.noseRadius > 0 &&
+                    std::any_of(motions.begin(), motions.end(), [](const FinishMotion& m) { return m.startUp; });
+  const Point start = call.modal.planePoint();
+  // Back to the start point by rapid; compensation is cancelled on the way (G71.TNRC.CANCEL).
   Move back;
   back.to = start;
   back.phase = "return";

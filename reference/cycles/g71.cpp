@@ -58,11 +58,14 @@ void applyG71FirstBlock(const CycleCall& call) { applyFirstBlock(call, g71Format
 
 CycleOutcome planG71(const CycleCall& call) {
   const SecondBlock sb = readSecondBlock(call, g71Format(call));
-  const ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
-  const bool typeII = selectsTypeII(call, shape);
-  checkLimitHeight(shape, sb.allowanceSecond);
-  const RoughingFrame frame = g71Frame(call);
-  return typeII ? planTypeII(call, shape, sb, frame) : planTypeI(call, shape, sb, frame);
+  return withShapeAlarmTiming(call, [&] {
+    ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
+    const bool typeII = selectsTypeII(call, shape);
+    compensateShape(call, shape);
+    checkLimitHeight(shape, sb.allowanceSecond);
+    const RoughingFrame frame = g71Frame(call);
+    return typeII ? planTypeII(call, shape, sb, frame) : planTypeI(call, shape, sb, frame);
+  });
 }
 
 }  // namespace cyclecert

@@ -44,10 +44,13 @@ void applyG72FirstBlock(const CycleCall& call) { applyFirstBlock(call, g72Format
 
 CycleOutcome planG72(const CycleCall& call) {
   const SecondBlock sb = readSecondBlock(call, g72Format(call));
-  const ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
-  const bool typeII = selectsTypeII(call, shape);
-  const RoughingFrame frame = g72Frame(call);
-  return typeII ? planTypeII(call, shape, sb, frame) : planTypeI(call, shape, sb, frame);
+  return withShapeAlarmTiming(call, [&] {
+    ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
+    const bool typeII = selectsTypeII(call, shape);
+    compensateShape(call, shape);
+    const RoughingFrame frame = g72Frame(call);
+    return typeII ? planTypeII(call, shape, sb, frame) : planTypeI(call, shape, sb, frame);
+  });
 }
 
 }  // namespace cyclecert

@@ -29,8 +29,10 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
   s.p = b.find('P');
   s.q = b.find('Q');
   if (!s.p || !s.q) {
-    throw CycleAlarm(alarm::kPQMissing, b.line,
-                     format.code + " block has " + (s.p ? "P but no Q" : "Q but no P") + " (both are required)");
+    CycleAlarm a(alarm::kPQMissing, b.line,
+                 format.code + " block has " + (s.p ? "P but no Q" : "Q but no P") + " (both are required)");
+    a.setWhen("cycle block");
+    throw a;
   }
   checkCycleAddress(*s.p, CycleAddress::SequenceNumber, call.modal.inch);
   checkCycleAddress(*s.q, CycleAddress::SequenceNumber, call.modal.inch);
@@ -46,7 +48,9 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
   // G71.FST: the F of the cycle blocks, or the modal F before them (the runner keeps it).
   s.feed = call.modal.feed;
   if (s.feed <= 0) {
-    throw CycleAlarm(alarm::kFeedZero, b.line, "no cutting feed F in the cycle blocks or before them");
+    CycleAlarm a(alarm::kFeedZero, b.line, "no cutting feed F in the cycle blocks or before them");
+    a.setWhen("cycle block");
+    throw a;
   }
   return s;
 }
@@ -54,8 +58,10 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
 double depthOfCut(const CycleCall& call, const std::string& code) {
   const double dd = call.params.get("5132");
   if (dd <= 0) {
-    throw CycleAlarm(alarm::kCuttingAmount, call.block().line,
-                     "depth of cut Δd is 0: program it in the first " + code + " block or set parameter 5132");
+    CycleAlarm a(alarm::kCuttingAmount, call.block().line,
+                 "depth of cut Δd is 0: program it in the first " + code + " block or set parameter 5132");
+    a.setWhen("cycle block");
+    throw a;
   }
   return dd;
 }
@@ -89,6 +95,7 @@ CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const Sec
   out.resumeAt = resumeIndexAfterCycle(call, shape);
   out.shape = shape.finishShape();
   out.allowance = {sb.allowanceFirst, sb.allowanceSecond};
+  out.compensated = shape.compensated;
   return out;
 }
 
@@ -127,6 +134,7 @@ CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const 
   cycle.clearance = call.params.get("5134");
   cycle.semiFinish = !call.params.bit("RF2");
   cycle.followAlongCut = call.params.bit("R16") || call.params.bit("NSP");  // G71.NSP: NSP implies R16
+  cycle.noRepeatedPath = call.params.bit("NSP");
   cycle.levelByLevel = call.profile.pocketsLevelByLevel;
   // G71.T2.MONO: only the cut axis must be monotonic.
   checkMonotonicAlongCut(cycle.shape, cycle.cutDirection(), frame.cutAxis);

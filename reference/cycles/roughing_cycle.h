@@ -7,6 +7,7 @@
 #include "reference/cycles/monotonic_check.h"
 #include "reference/cycles/shape_program.h"
 #include "reference/cycles/type1_roughing.h"
+#include "reference/model/alarms.h"
 
 namespace cyclecert {
 
@@ -45,6 +46,18 @@ CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const S
                        const RoughingFrame& frame);
 CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
                         const RoughingFrame& frame);
+
+// Runs `plan` (reading and checking the shape, then planning) and dates the shape's alarms:
+// "before the cycle" with FCK (5104#2) = 1, else "during the cycle" (G71.CHECK, G71.CHECK.FCK).
+template <class Plan>
+CycleOutcome withShapeAlarmTiming(const CycleCall& call, Plan plan) {
+  try {
+    return plan();
+  } catch (CycleAlarm& a) {
+    if (a.alarm().when.empty()) a.setWhen(call.params.bit("FCK") ? "before the cycle" : "during the cycle");
+    throw;
+  }
+}
 
 // Δd from parameter 5132 (programmed values overwrite it): PS0062 if not positive.
 double depthOfCut(const CycleCall& call, const std::string& code);

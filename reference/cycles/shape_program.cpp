@@ -4,15 +4,20 @@
 
 #include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
+#include "reference/model/offset.h"
 
 namespace cyclecert {
 
 std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which) {
   const auto index = call.program.findSequence(static_cast<long>(w.value));
   if (!index) {
-    throw CycleAlarm(alarm::kSequenceNotFound, call.block().line,
-                     std::string(1, which) + " names sequence number N" + w.text.substr(1) +
-                         ", which is not in the program");
+    CycleAlarm a(alarm::kSequenceNotFound, call.block().line,
+                 std::string(1, which) + " names sequence number N" + w.text.substr(1) + ", which is not in the program");
+    // The cycle starts at block P, so a missing P is found at once; a missing Q only when the shape
+    // runs out, unless QSR or FCK check it first (G71.CHECK.QSR, G71.CHECK.FCK).
+    const bool preChecked = which == 'P' || call.params.bit("QSR") || call.params.bit("FCK");
+    a.setWhen(preChecked ? "before the cycle" : "during the cycle");
+    throw a;
   }
   return *index;
 }
@@ -97,6 +102,23 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
     if (seg) shape.body.push_back(*seg);
   }
   return shape;
+}
+
+void compensateShape(const CycleCall& call, ShapeProgram& shape) {
+  if (call.modal.tnrc == 40 || call.tool.noseRadius <= 0 || shape.body.empty()) return;
+  const CompensationSide side = call.modal.tnrc == 41 ? CompensationSide::Left : CompensationSide::Right;
+  try {
+    shape.headEnd = startUpPoint(shape.headEnd, shape.body.front(), call.tool, side);
+    shape.body = compensatedPath(shape.body, call.tool, side);
+  } catch (const OffsetError& e) {
+    CycleAlarm a(alarm::kInterference, e.sourceLine,
+                 e.problem == OffsetProblem::ArcVanishes ? "an arc is smaller than the tool-nose radius"
+                                                         : "the tool-nose radius does not fit a concave corner");
+    throw a;
+  }
+  // The compensated path joins B (the start-up end) exactly.
+  if (!shape.body.empty()) shape.body.front().from = shape.headEnd;
+  shape.compensated = true;
 }
 
 std::vector<Segment> ShapeProgram::finishShape() const {

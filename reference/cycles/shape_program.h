@@ -16,6 +16,7 @@ struct ShapeProgram {
   Point start;                   // A
   Point headEnd;                 // B
   std::vector<Segment> body;     // B → C
+  bool compensated = false;      // B and the body are the compensated path (G41/G42 at the cycle)
 
   // The whole finish shape A → B → C (the head block as a line).
   std::vector<Segment> finishShape() const;
@@ -36,6 +37,13 @@ void checkUsableInShape(const Block& b, bool tnrcAllowed);
 
 // The group-01 motion code (0…3) a block commands, or `modal` when it commands none.
 int motionCode(const Block& b, int modal);
+
+// G71.TNRC.CANCEL, G71.TNRC.ZERO, G71.CHECK: with G41/G42 in force at the cycle, the cycle works
+// on the compensated shape: A stays where it is (compensation is cancelled on the way to the start
+// point), block ns is the start-up (its end B moves to the compensated position for the next
+// block), and the body is the path of the imaginary tool-nose point. PS0041 when the nose radius
+// does not fit the shape.
+void compensateShape(const CycleCall& call, ShapeProgram& shape);
 
 // G72.NSNF.FOLLOW: execution resumes after nf when ns directly follows the cycle block,
 // otherwise after the cycle block.

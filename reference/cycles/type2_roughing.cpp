@@ -42,11 +42,16 @@ class Type2Planner {
 
   std::vector<Move> plan() {
     buildCutTree();
-    emit(MoveKind::Rapid, aPrime_, "approach", {"G71.OP"});
     for (int node : cutOrder()) cutNode(node);
-    returnToStart();
+    const bool pockets = profile_.hasPocketWall();
+    if (c_.semiFinish && c_.noRepeatedPath && !pockets) {
+      // G71.NSP, no pocket: A–B is not repeated — straight on to B' above what stands, no return to A.
+      travelToHeadEnd();
+    } else {
+      returnToStart();
+    }
     if (c_.semiFinish) {
-      semiFinishPass();
+      semiFinishPass(c_.noRepeatedPath && pockets);
       returnToStart();
     }
     return std::move(moves_);
@@ -154,8 +159,7 @@ class Type2Planner {
 
   // Travel above what still stands, then down to the entry point (G71.T2.POCKET.EXIT (20), (21)).
   void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart) {
-    // Before the first cut the tool stands at A', outside the stock: no travel up.
-    const double travel = pass_ == 1 ? depthOf(current()) : std::min(depthOf(current()), commonDepth - c_.retract);
+    const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
     emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass", {"G71.T2.POCKET.EXIT"});
     emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
     if (infeedAlongHead) {
@@ -164,7 +168,7 @@ class Type2Planner {
       return;
     }
     const double approach = commonDepth - c_.clearance;
-    if (approach > depthOf(current()) + kEps && approach < depthOf(q) - kEps) {
+    if (approach > depthOf(current()) + kEps) {
       emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, "pass", {"G71.T2.POCKET.EXIT"});
     }
     emit(MoveKind::Feed, q, "pass", {"G71.T2.POCKET.EXIT"});
@@ -188,21 +192,32 @@ class Type2Planner {
   // ---- return and semi-finish ------------------------------------------------------------------
 
   // G71.T2.RETURN: back to A, passing Δd above a shape that stands as high as the start point.
-  void returnToStart() {
+  double returnDepth() const {
     const double startDepth = depthOf(c_.start);
     const double highest = profile_.shallowestAfterHead();
-    const double travel = highest <= startDepth + kEps ? highest - c_.depthOfCut : startDepth;
-    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "return", {"G71.T2.RETURN"});
+    return highest <= startDepth + kEps ? highest - c_.depthOfCut : startDepth;
+  }
+
+  void returnToStart() {
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, "return", {"G71.T2.RETURN"});
     emit(MoveKind::Rapid, {c_.start.z, current().x}, "return", {"G71.T2.RETURN"});
     emit(MoveKind::Rapid, c_.start, "return", {"G71.T2.RETURN"});
   }
 
-  // G71.T2.RETURN: the semi-finish pass along the whole rough profile, A' first.
-  void semiFinishPass() {
+  // G71.NSP without pockets: from the last cut, above everything, to B' where the semi-finish starts.
+  void travelToHeadEnd() {
+    const Point bPrime = roughProfileOf(c_).front().to;
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, "return", {"G71.NSP"});
+    emit(MoveKind::Rapid, {bPrime.z, current().x}, "return", {"G71.NSP"});
+  }
+
+  // G71.T2.RETURN: the semi-finish pass along the whole rough profile, A' first. With NSP and
+  // pockets, the second pass over A–B is rapid (G71.NSP).
+  void semiFinishPass(bool headRapid) {
     emit(MoveKind::Rapid, aPrime_, "semi-finish", {"G71.T2.RETURN"});
     const std::vector<Segment> rough = roughProfileOf(c_);
     for (std::size_t i = 0; i < rough.size(); ++i) {
-      const bool rapid = i == 0 && headAlongDepth() && c_.headIsRapid;
+      const bool rapid = i == 0 && ((headAlongDepth() && c_.headIsRapid) || headRapid);
       emitSegment(rough[i], rapid ? MoveKind::Rapid : MoveKind::Feed, "semi-finish", {"G71.T2.RETURN"});
     }
   }

@@ -18,6 +18,7 @@ struct Type2Cycle {
   double clearance = 0;        // parameter 5134
   bool semiFinish = true;      // RF2 = 0
   bool followAlongCut = false; // R16 = 1
+  bool noRepeatedPath = false; // NSP = 1
   bool levelByLevel = false;   // fanuc-0i-c pocket order
 
   int depthDirection() const;  // sign of B − A on x (the head block's infeed)

@@ -29,9 +29,13 @@ void checkCycleAddress(const Word& w, CycleAddress role, bool inch) {
   range << w.text << " at column " << w.column << " is outside " << r.min << "…" << r.max;
   if (role == CycleAddress::SequenceNumber) range << " (an integer sequence number)";
   if (role == CycleAddress::DepthOfCut && w.value < r.min) {
-    throw CycleAlarm(alarm::kCuttingAmount, w.line, range.str() + ": the depth of cut must be positive");
+    CycleAlarm a(alarm::kCuttingAmount, w.line, range.str() + ": the depth of cut must be positive");
+    a.setWhen("cycle block");
+    throw a;
   }
-  throw CycleAlarm(alarm::kOutOfRange, w.line, range.str());
+  CycleAlarm a(alarm::kOutOfRange, w.line, range.str());
+  a.setWhen("cycle block");
+  throw a;
 }
 
 }  // namespace cyclecert

@@ -104,24 +104,43 @@ class ProgramRunner {
 
   std::size_t executeCycle(std::size_t i, int cycle) {
     const Block& b = program_.blocks[i];
-    const CycleCall call{program_, i, state_, params_, profile_};
+    const CycleCall call{program_, i, state_, params_, profile_, options_.tool};
     // G72.MDI, HNC.G71.MDI: the shape program must be in memory.
-    if (options_.mdi) throw CycleAlarm(alarm::kNotInMdi, b.line, "G" + std::to_string(cycle / 10) + " cannot run in MDI mode");
+    if (options_.mdi) {
+      CycleAlarm a(alarm::kNotInMdi, b.line, "G" + std::to_string(cycle / 10) + " cannot run in MDI mode");
+      a.setWhen("cycle block");
+      throw a;
+    }
     if (cycle != 700 && !b.has('P') && !b.has('Q')) {
       cycle == 710 ? applyG71FirstBlock(call) : applyG72FirstBlock(call);
       return i + 1;
     }
-    if (state_.tnrc != 40) {
-      path_.warnings.push_back({b.line, "nose-radius compensation (G41/G42) is not applied to the shape yet"});
+    if (state_.tnrc != 40 && options_.tool.noseRadius <= 0) {
+      path_.warnings.push_back({b.line, "G4" + std::to_string(state_.tnrc % 10) +
+                                            " is active but the tool's nose radius is 0: the shape is not offset "
+                                            "(give the tool offset: --nose-radius and --tip, or the case's \"tool\")"});
     }
     if (!started_) startPath();
     CycleOutcome out = cycle == 700 ? planG70(call) : cycle == 710 ? planG71(call) : planG72(call);
     CycleRecord record{"G" + std::to_string(cycle / 10), b.line, state_.planePoint(), path_.moves.size(),
-                       out.moves.size(), std::move(out.shape), out.allowance};
+                       out.moves.size(), std::move(out.shape), out.allowance, out.compensated};
     path_.cycles.push_back(record);
+    markSingleBlockStops(out.moves);
     for (Move& m : out.moves) path_.moves.push_back(std::move(m));
     for (Warning& w : out.warnings) path_.warnings.push_back(std::move(w));
     return out.resumeAt;  // the cycle ends at its start point: the position is unchanged
+  }
+
+  // G72.SINGLE: in single-block mode, CSB (5102#7) = 1 stops after every block the cycle makes;
+  // CSB = 0 at the end of each cutting cycle: the last move of each pass, of the semi-finish pass,
+  // of the finishing pass and of the return.
+  void markSingleBlockStops(std::vector<Move>& moves) const {
+    const bool everyBlock = params_.bit("CSB");
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      const bool lastOfItsCycle = i + 1 == moves.size() || moves[i + 1].phase != moves[i].phase ||
+                                  moves[i + 1].pass != moves[i].pass;
+      moves[i].singleBlockStop = everyBlock || lastOfItsCycle;
+    }
   }
 
   void startPath() {

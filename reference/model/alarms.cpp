@@ -9,6 +9,7 @@ std::string alarmTitle(std::string_view code) {
       {alarm::kOutOfRange, "TOO MANY DIGITS (value outside the address's range)"},
       {alarm::kImproperGCode, "IMPROPER G-CODE"},
       {alarm::kFeedZero, "FEED ZERO (COMMAND)"},
+      {alarm::kInterference, "INTERFERENCE IN TOOL NOSE RADIUS COMPENSATION"},
       {alarm::kRadiusTolerance, "OVER TOLERANCE OF RADIUS"},
       {alarm::kIllegalRadius, "ILLEGAL RADIUS COMMAND"},
       {alarm::kPQMissing, "P OR Q COMMAND IS NOT IN THE MULTIPLE REPETITIVE CYCLES BLOCK"},

@@ -12,6 +12,7 @@ namespace cyclecert {
 namespace alarm {
 inline constexpr std::string_view kOutOfRange = "PS0003";        // too many digits / outside the range table
 inline constexpr std::string_view kImproperGCode = "PS0010";     // G code the controller does not have
+inline constexpr std::string_view kInterference = "PS0041";      // nose radius does not fit the shape (TNRC)
 inline constexpr std::string_view kFeedZero = "PS0011";          // cutting feed with F = 0
 inline constexpr std::string_view kRadiusTolerance = "PS0020";   // I/K arc end not on the circle
 inline constexpr std::string_view kIllegalRadius = "PS0023";     // R arc impossible / arc without R, I, K
@@ -35,6 +36,7 @@ class CycleAlarm : public std::exception {
  public:
   CycleAlarm(std::string_view code, int line, std::string detail);
   const Alarm& alarm() const { return alarm_; }
+  void setWhen(std::string when) { alarm_.when = std::move(when); }
   const char* what() const noexcept override { return alarm_.message.c_str(); }
 
  private:

@@ -20,6 +20,8 @@ struct Move {
   std::string phase;            // approach | pass | semi-finish | return (reference only)
   int pass = 0;                 // pass number for phase "pass" (1-based), else 0
   std::vector<std::string> rules;
+  bool singleBlockStop = false;  // in single-block mode the machine stops after this move (G72.SINGLE)
+  bool stopGiven = false;        // read from JSON that states "stop" (an expectation compares it then)
 };
 
 // A controller alarm: the code (e.g. "PS0064"), its message, and the program line it names.
@@ -27,6 +29,10 @@ struct Alarm {
   std::string code;
   std::string message;
   int line = 0;
+  // When the controller raises it (cycles only): "cycle block" (reading the G71/G72 blocks),
+  // "before the cycle" (QSR/FCK pre-checks: no move yet), "during the cycle" (found while the
+  // cycle runs: on a machine some passes may already have been made). Empty elsewhere.
+  std::string when;
 };
 
 struct Warning {
@@ -43,6 +49,7 @@ struct CycleRecord {
   std::size_t moveCount = 0;
   std::vector<Segment> shape;  // the finish shape A → B → C of ns…nf
   Point allowance;             // the rough profile is `shape` shifted by this (Δw, Δu/2)
+  bool compensated = false;    // `shape` is the imaginary tool-nose path under G41/G42
 };
 
 struct Toolpath {

@@ -26,6 +26,7 @@ json toJson(const Move& m) {
   if (!m.phase.empty()) j["phase"] = m.phase;
   if (m.pass > 0) j["pass"] = m.pass;
   if (!m.rules.empty()) j["rules"] = m.rules;
+  if (m.singleBlockStop) j["stop"] = true;
   return j;
 }
 
@@ -44,10 +45,13 @@ json toJson(const Toolpath& t) {
     }
     cycles.push_back({{"code", c.code}, {"line", c.line}, {"start", toJson(c.start)},
                       {"first_move", c.firstMove}, {"move_count", c.moveCount},
-                      {"shape", shape}, {"allowance", toJson(c.allowance)}});
+                      {"shape", shape}, {"allowance", toJson(c.allowance)}, {"compensated", c.compensated}});
   }
   json alarm = nullptr;
-  if (t.alarm) alarm = {{"code", t.alarm->code}, {"message", t.alarm->message}, {"line", t.alarm->line}};
+  if (t.alarm) {
+    alarm = {{"code", t.alarm->code}, {"message", t.alarm->message}, {"line", t.alarm->line}};
+    if (!t.alarm->when.empty()) alarm["when"] = t.alarm->when;
+  }
   return json{{"profile", t.profile}, {"units", "mm"},   {"plane", t.plane},
               {"start", toJson(t.start)}, {"moves", moves}, {"alarm", alarm},
               {"warnings", warnings},      {"cycles", cycles}};
@@ -96,6 +100,11 @@ Move moveFromJson(const json& j, const std::string& where) {
   if (j.contains("feed")) m.feed = finiteNumber(j["feed"], where + "/feed");
   if (j.contains("phase") && j["phase"].is_string()) m.phase = j["phase"];
   if (j.contains("pass") && j["pass"].is_number_integer()) m.pass = j["pass"];
+  if (j.contains("stop")) {
+    if (!j["stop"].is_boolean()) fail(where + "/stop", "true or false");
+    m.singleBlockStop = j["stop"].get<bool>();
+    m.stopGiven = true;
+  }
   return m;
 }
 
