@@ -7,6 +7,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +32,7 @@ struct RandomCycle {
   std::vector<FrameSegment> segments;
   int dd = 100, e = 50, du = 0, dw = 0;  // hundredths (du as a radius)
   bool rf1 = false, dtp = false;
+  bool typeII = false;  // block ns moves both axes (W0 / U0); segments may go down again (pockets)
 };
 
 double mm(int hundredths) { return hundredths / 100.0; }
@@ -52,7 +54,9 @@ rc::Gen<RandomCycle> genCycle() {
         c.g72 = g72;
         c.headRapid = headRapid;
         c.b = b;
-        c.startAbove = above;
+        // A stands outside the shape grown by the allowances: further above B than the depth-axis
+        // allowance (else the start point itself lies inside it and every move from A "enters" it).
+        c.startAbove = std::max(above, du + 1);
         c.startAhead = ahead;
         // Zero-length lines are dropped by the interpreter; keep at least one real segment.
         segs.erase(std::remove_if(segs.begin(), segs.end(), [](const FrameSegment& s) { return s.dz == 0 && s.dx == 0; }),
@@ -103,16 +107,18 @@ std::string programFor(const RandomCycle& c, int zOffset) {
     x += s.dx;
     points.push_back({z, x});
   }
-  const int cX = x;
+  // A stands above the whole shape (G71.LIMIT.HEIGHT): above its highest point (C for type I).
+  int cX = c.b;
+  for (const auto& pt : points) cX = std::max(cX, pt.second);
   std::ostringstream p;
   p.precision(12);
   p << "G00 " << em.axisWords(c.startAhead, cX + c.startAbove) << ";\n";
   if (!c.g72) p << "G71 U" << mm(c.dd) << " R" << mm(c.e) << ";\nG71 P10 Q20 U" << 2 * mm(c.du) << " W" << mm(c.dw);
   else p << "G72 W" << mm(c.dd) << " R" << mm(c.e) << ";\nG72 P10 Q20 U" << 2 * mm(c.dw) << " W" << mm(c.du);
   p << " F0.2;\n";
-  // Head block: depth axis only (type I).
-  if (!c.g72) p << "N10 " << (c.headRapid ? "G00" : "G01") << " X" << 2 * mm(c.b) << ";\n";
-  else p << "N10 " << (c.headRapid ? "G00" : "G01") << " Z" << mm(c.b) << ";\n";
+  // Head block: the depth axis only (type I), or both axes with W0 / U0 (type II).
+  if (!c.g72) p << "N10 " << (c.headRapid ? "G00" : "G01") << " X" << 2 * mm(c.b) << (c.typeII ? " W0" : "") << ";\n";
+  else p << "N10 " << (c.headRapid ? "G00" : "G01") << (c.typeII ? " U0" : "") << " Z" << mm(c.b) << ";\n";
   for (std::size_t i = 0; i < c.segments.size(); ++i) {
     const auto& s = c.segments[i];
     p << (i + 1 == c.segments.size() ? "N20 " : "");
@@ -121,6 +127,24 @@ std::string programFor(const RandomCycle& c, int zOffset) {
     p << ";\n";
   }
   return p.str();
+}
+
+// Type II contours: lines and quarter arcs going −z, up or down (pockets), never below the axis.
+rc::Gen<RandomCycle> genType2Cycle() {
+  return rc::gen::apply(
+      [](RandomCycle c, std::vector<int> downs) {
+        c.typeII = true;
+        c.rf1 = false;
+        for (std::size_t i = 0; i < c.segments.size() && i < downs.size(); ++i) {
+          if (downs[i] % 3 == 0) c.segments[i].dx = -c.segments[i].dx;  // a third of them go down
+        }
+        // Keep the contour off the spindle axis: raise B by the deepest dip.
+        int x = c.b, lowest = c.b;
+        for (const auto& s : c.segments) lowest = std::min(lowest, x += s.dx);
+        if (lowest < 100) c.b += 100 - lowest;
+        return c;
+      },
+      genCycle(), rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)));
 }
 
 // The toolpath back in the cycle frame.
@@ -191,6 +215,62 @@ RC_GTEST_PROP(PlannerProperties, TypeIPassesAreBoundedAndEndOnTheRoughContour, (
   // Path ends at the start point.
   RC_ASSERT(nearlyEqual(t.from(t.moves.size()), t.start, 1e-9));
   RC_ASSERT(std::none_of(t.moves.begin(), t.moves.end(), [&](const Move& m) { return m.phase == "semi-finish"; }) == c.rf1);
+}
+
+// The least radius of the rough profile at z (its lower envelope), or nothing outside its span.
+std::optional<double> profileFloor(const std::vector<Segment>& rough, double z) {
+  std::optional<double> floor;
+  for (const Segment& s : rough) {
+    for (Point hit : intersectWithLevelX(transposed(s), z)) {
+      floor = floor ? std::min(*floor, hit.z) : hit.z;  // in the transposed frame, hit.z is the radius
+    }
+  }
+  return floor;
+}
+
+RC_GTEST_PROP(PlannerProperties, TypeIIStaysOutOfThePartReachesEveryValleyBottomAndReturns, ()) {
+  const RandomCycle c = *genType2Cycle();
+  const int zOffset = 20000;
+  const std::string program = programFor(c, zOffset);
+  RC_LOG() << program;
+  const Toolpath t = planWithReference({program, "prop2.nc", "fanuc-0i-f", {{"5134", 0.3}}, {}});
+  RC_ASSERT(!t.alarm.has_value());
+  std::vector<Segment> rough;
+  for (Segment s : t.cycles[0].shape) {
+    s = s.shifted(t.cycles[0].allowance);
+    if (c.g72) s = transposed(s).shifted({-mm(zOffset), 0});
+    rough.push_back(s);
+  }
+  // No move enters the part: every sampled point lies on or above the rough profile's floor.
+  Point at = toFrame(t.start, c, zOffset);
+  for (std::size_t i = 0; i < t.moves.size(); ++i) {
+    Segment seg = t.segment(i);
+    seg.from = at;
+    seg.to = toFrame(seg.to, c, zOffset);
+    if (seg.isArc()) seg.center = toFrame(seg.center, c, zOffset);
+    if (c.g72 && seg.isArc()) seg.kind = reversedKind(seg.kind);
+    for (int k = 0; k <= 16; ++k) {
+      const Point p = pointAt(seg, k / 16.0);
+      if (const auto floor = profileFloor(rough, p.z)) RC_ASSERT(p.x >= *floor - 1e-6);
+    }
+    at = seg.to;
+  }
+  // Every valley bottom below A' (a block along z, or a V) is reached by a roughing move.
+  const double top = rough.front().from.x;
+  const auto reached = [&](Point b) {
+    return std::any_of(t.moves.begin(), t.moves.end(), [&](const Move& m) {
+      return m.phase == "pass" && distance(toFrame(m.to, c, zOffset), b) < 1e-6;
+    });
+  };
+  for (std::size_t i = 1; i < rough.size(); ++i) {
+    const Segment& s = rough[i];
+    const bool flat = !s.isArc() && std::abs(s.to.x - s.from.x) < 1e-9 && s.from.x < top - 1e-9;
+    const bool vee = i + 1 < rough.size() && !s.isArc() && !rough[i + 1].isArc() && s.to.x < s.from.x - 1e-9 &&
+                     rough[i + 1].to.x > rough[i + 1].from.x + 1e-9;
+    if (flat) RC_ASSERT(reached(s.to));
+    if (vee) RC_ASSERT(reached(s.to));
+  }
+  RC_ASSERT(nearlyEqual(t.from(t.moves.size()), t.start, 1e-9));
 }
 
 }  // namespace

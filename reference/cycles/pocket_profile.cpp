@@ -12,6 +12,8 @@ constexpr double kEps = 1e-9;
 void appendMonotonicPieces(const Segment& s, std::vector<Segment>& out) {
   Point from = s.from;
   for (Point apex : apexesAlong(s)) {
+    // An apex at an end point (within rounding) splits nothing: no sliver pieces.
+    if (distance(apex, from) <= 1e-7 || distance(apex, s.to) <= 1e-7) continue;
     Segment piece = s;
     piece.from = from;
     piece.to = apex;
@@ -85,7 +87,8 @@ std::vector<ProfileInterval> PocketProfile::intervalsAt(double level) const {
       openedAt.reset();
     }
   }
-  if (openedAt) out.push_back({*openedAt, {pieces_.size() - 1, pieces_.back().to}, true});
+  // Still deeper at C': the interval ends at C' on the cut axis, at the level (the edge of the stock).
+  if (openedAt) out.push_back({*openedAt, {pieces_.size() - 1, {pieces_.back().to.z, xAtDepth(level)}}, true});
   return out;
 }
 

@@ -179,7 +179,10 @@ class Type2Planner {
   void leave(const CutNode& n) {
     if (n.kind == CutNode::Bottom) {
       const Point p = current();
-      emit(MoveKind::Feed, {p.z - cut_ * c_.retract, p.x - d_ * c_.retract}, "pass", {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
+      // 45° by e, but never back past the bottom's near end (a V, or a bottom shorter than e,
+      // would otherwise be left through its near wall).
+      const double back = std::min(c_.retract, distance(n.start.p, n.end.p));
+      emit(MoveKind::Feed, {p.z - cut_ * back, p.x - d_ * c_.retract}, "pass", {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
       return;
     }
     if (!n.openEnd) {
