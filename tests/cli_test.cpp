@@ -159,6 +159,35 @@ TEST_F(Cli, PlanACaseReportsWhetherTheExpectationIsMet) {
   EXPECT_NE(corrupt.err.find("c.json: (document): expected valid JSON"), std::string::npos) << corrupt.err;
 }
 
+TEST_F(Cli, ToolOffsetAndMdiOptions) {
+  const std::string program = write("c.nc", std::string("G42;\n") + kShaft);
+  const CliRun plain = run("plan " + program);
+  const CliRun offset = run("plan " + program + " --nose-radius 0.4 --tip 3");
+  ASSERT_EQ(offset.exitCode, 0) << offset.err;
+  EXPECT_NE(plain.out, offset.out);
+  EXPECT_NE(plain.err.find("nose radius is 0"), std::string::npos) << plain.err;
+  EXPECT_NE(nlohmann::json::parse(offset.out)["cycles"][0]["compensated"], false);
+  EXPECT_EQ(run("plan " + program + " --tip 12").exitCode, 2);
+  EXPECT_EQ(run("plan " + program + " --tip 2.5").exitCode, 2);
+  EXPECT_EQ(run("plan " + program + " --nose-radius -1").exitCode, 2);
+  const CliRun mdi = run("plan " + program + " --mdi");
+  EXPECT_EQ(mdi.exitCode, 1);
+  EXPECT_NE(mdi.err.find("PS0067"), std::string::npos);
+}
+
+TEST_F(Cli, RulesCountsTheCasesCitingEachRule) {
+  const CliRun all = run("rules --cycle G72");
+  ASSERT_EQ(all.exitCode, 0) << all.err;
+  EXPECT_NE(all.out.find("G72.EX.O0005"), std::string::npos);
+  EXPECT_NE(all.out.find("0 rule(s) cited by no spec case"), std::string::npos) << all.out;
+  const auto j = nlohmann::json::parse(run("rules --json --cycle G72").out);
+  ASSERT_TRUE(j.is_array());
+  EXPECT_GE(j[0]["cases"].get<int>(), 1);
+  // Rules of cycles the reference does not plan yet are listed as uncited, and --uncited fails.
+  EXPECT_EQ(run("rules --uncited --cycle G74_1").exitCode, 1);
+  EXPECT_EQ(run("rules --bogus").exitCode, 2);
+}
+
 TEST_F(Cli, ParamsAndProfilesListTheirCatalogues) {
   const CliRun params = run("params");
   EXPECT_EQ(params.exitCode, 0);

@@ -82,7 +82,7 @@ Lists every rule of specs/rules.json with its source seed and section, its summa
 spec cases under specs/cases cite it.
 
 Options:
-  --cycle C     only the rules of one cycle (G71, G72, G74.1, LCYC95, …)
+  --cycle C     only the rules of one cycle (G70, G71, G72, G73, G74_1, LCYC95, CYCLE95, …)
   --uncited     only the rules no spec case cites (exit 1 if there are any)
   --json        machine-readable output
   --specs DIR   the specs directory (default: the repository's specs/)
