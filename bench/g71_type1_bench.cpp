@@ -5,10 +5,8 @@
 #include <sstream>
 #include <string>
 
+#include "bench/plan_loop.h"
 #include "reference/cycles/type1_roughing.h"
-#include "reference/gcode/parser.h"
-#include "reference/interpreter/program_runner.h"
-#include "reference/model/profile.h"
 
 namespace {
 
@@ -34,15 +32,7 @@ void BM_G71Type1(benchmark::State& state) {
   const int segments = static_cast<int>(state.range(0));
   const int passes = static_cast<int>(state.range(1));
   const double dd = 1.0;
-  const Program program = parseProgram(staircaseProgram(segments, passes * dd, dd), "bench.nc");
-  const Profile& profile = *findProfile("fanuc-0i-f");
-  std::size_t moves = 0;
-  for (auto _ : state) {
-    const Toolpath t = planProgram(program, profile, profile.defaults);
-    moves = t.moves.size();
-    benchmark::DoNotOptimize(moves);
-  }
-  state.counters["moves"] = static_cast<double>(moves);
+  planRepeatedly(state, staircaseProgram(segments, passes * dd, dd));
   state.counters["segments"] = segments;
 }
 

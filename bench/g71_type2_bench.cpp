@@ -5,9 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "reference/gcode/parser.h"
-#include "reference/interpreter/program_runner.h"
-#include "reference/model/profile.h"
+#include "bench/plan_loop.h"
 
 namespace {
 
@@ -28,15 +26,7 @@ std::string pocketsProgram(int pockets) {
 
 void BM_G71Type2Pockets(benchmark::State& state) {
   const int pockets = static_cast<int>(state.range(0));
-  const Program program = parseProgram(pocketsProgram(pockets), "bench.nc");
-  const Profile& profile = *findProfile("fanuc-0i-f");
-  std::size_t moves = 0;
-  for (auto _ : state) {
-    const Toolpath t = planProgram(program, profile, profile.defaults);
-    moves = t.moves.size();
-    benchmark::DoNotOptimize(moves);
-  }
-  state.counters["moves"] = static_cast<double>(moves);
+  planRepeatedly(state, pocketsProgram(pockets));
   state.SetComplexityN(pockets);
 }
 

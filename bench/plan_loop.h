@@ -1,0 +1,26 @@
+#pragma once
+// The measured loop every planning benchmark shares: parse once, plan with the reference on the
+// fanuc-0i-f profile as often as Google Benchmark asks, report the number of moves.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "reference/gcode/parser.h"
+#include "reference/interpreter/program_runner.h"
+#include "reference/model/profile.h"
+
+namespace cyclecert {
+
+inline void planRepeatedly(benchmark::State& state, const std::string& programText) {
+  const Program program = parseProgram(programText, "bench.nc");
+  const Profile& profile = *findProfile("fanuc-0i-f");
+  std::size_t moves = 0;
+  for (auto _ : state) {
+    const Toolpath t = planProgram(program, profile, profile.defaults);
+    moves = t.moves.size();
+    benchmark::DoNotOptimize(moves);
+  }
+  state.counters["moves"] = static_cast<double>(moves);
+}
+
+}  // namespace cyclecert
