@@ -19,7 +19,6 @@ struct ModalState {
   bool inch = false;     // G20
   int tnrc = 40;         // G40/G41/G42
   double feed = 0;       // modal F, in mm/min or mm/rev
-  bool feedSeen = false;
 
   PlaneAxes axes() const { return planeAxes(plane); }
   double unitScale() const { return inch ? 25.4 : 1.0; }

@@ -77,7 +77,6 @@ class ProgramRunner {
     }
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
-      state_.feedSeen = true;
     }
     if (cycle) return executeCycle(i, cycle);
     for (const Word* g : b.all('G')) {

@@ -18,7 +18,7 @@ struct RunOptions {
 };
 
 // A controller alarm ends the run: the toolpath keeps the moves made before it and names the alarm.
-// Throws NotSupported for what the reference cannot plan yet (e.g. type II).
+// Throws NotSupported for cycles the reference cannot plan yet (G73, G74.1, …).
 Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params,
                      const RunOptions& options = {});
 
