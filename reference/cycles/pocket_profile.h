@@ -40,6 +40,7 @@ class PocketProfile {
   double xAtDepth(double depth) const { return origin_.x + d_ * depth; }
 
   const std::vector<Segment>& pieces() const { return pieces_; }
+  bool isHeadPiece(std::size_t i) const { return i < headPieces_; }
   bool isAlongCut(std::size_t i) const;  // parallel to the cut axis
 
   double deepest() const;         // largest depth on the profile

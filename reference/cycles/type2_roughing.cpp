@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "reference/cycles/pocket_profile.h"
 
@@ -150,17 +152,34 @@ class Type2Planner {
     const Point q = nearWall.empty() ? n.start.p : nearWall.front().from;
     const bool infeedAlongHead = headAlongDepth() && onHeadLine(q) &&
                                  std::all_of(nearWall.begin(), nearWall.end(), [&](const Segment& s) { return onHeadLine(s.to); });
-    travelTo(q, commonDepth(previous_, id), infeedAlongHead, n.start.p);
+    travelTo(q, commonDepth(previous_, id), infeedAlongHead, n.start.p, returnPointBefore(id, q));
     if (!infeedAlongHead) followPath(nearWall, {"G71.T2.FOLLOW"});
     emit(MoveKind::Feed, n.end.p, "pass", {cutRule(), "G71.T2.ORDER"});
     leave(n);
     previous_ = id;
   }
 
+  // G71.NSP, consecutive pockets: with NSP = 0 the tool goes back to point I — where it stood
+  // above the first of the pockets that share a parent — after each pocket, before the next one;
+  // NSP = 1 goes on from pocket to pocket. Returns I's cut-axis coordinate when the detour applies.
+  std::optional<double> returnPointBefore(int id, Point q) {
+    const CutNode& n = nodes_[id];
+    const bool pocket = n.kind == CutNode::Interval && !profile_.isHeadPiece(n.start.piece);
+    if (!pocket || c_.levelByLevel) return std::nullopt;
+    const auto first = pointI_.find(n.parent);
+    if (first == pointI_.end()) {
+      pointI_[n.parent] = q.z;
+      return std::nullopt;
+    }
+    if (c_.noRepeatedPath) return std::nullopt;
+    return first->second;
+  }
+
   // Travel above what still stands, then down to the entry point (G71.T2.POCKET.EXIT (20), (21)).
-  void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart) {
+  void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart, std::optional<double> viaI) {
     const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
     emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass", {"G71.T2.POCKET.EXIT"});
+    if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, "pass", {"G71.NSP"});
     emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
     if (infeedAlongHead) {
       // The type I infeed along a head block parallel to the depth axis (G72.STEP2).
@@ -264,6 +283,7 @@ class Type2Planner {
   PocketProfile profile_;
   std::vector<CutNode> nodes_;
   std::vector<Move> moves_;
+  std::map<int, double> pointI_;  // parent node → cut coordinate of its first pocket's entry (G71.NSP)
   int previous_ = 0;  // the root before the first cut
   int pass_ = 0;
 };
