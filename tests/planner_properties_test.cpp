@@ -33,6 +33,7 @@ struct RandomCycle {
   int dd = 100, e = 50, du = 0, dw = 0;  // hundredths (du as a radius)
   bool rf1 = false, dtp = false;
   bool typeII = false;  // block ns moves both axes (W0 / U0); segments may go down again (pockets)
+  bool r16 = false, nsp = false, rf2 = false;  // type II parameters
 };
 
 double mm(int hundredths) { return hundredths / 100.0; }
@@ -132,9 +133,12 @@ std::string programFor(const RandomCycle& c, int zOffset) {
 // Type II contours: lines and quarter arcs going −z, up or down (pockets), never below the axis.
 rc::Gen<RandomCycle> genType2Cycle() {
   return rc::gen::apply(
-      [](RandomCycle c, std::vector<int> downs) {
+      [](RandomCycle c, std::vector<int> downs, int flags) {
         c.typeII = true;
         c.rf1 = false;
+        c.r16 = flags & 1;
+        c.nsp = flags & 2;
+        c.rf2 = flags & 4;
         for (std::size_t i = 0; i < c.segments.size() && i < downs.size(); ++i) {
           if (downs[i] % 3 == 0) c.segments[i].dx = -c.segments[i].dx;  // a third of them go down
         }
@@ -144,7 +148,7 @@ rc::Gen<RandomCycle> genType2Cycle() {
         if (lowest < 100) c.b += 100 - lowest;
         return c;
       },
-      genCycle(), rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)));
+      genCycle(), rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)), rc::gen::inRange(0, 8));
 }
 
 // The toolpath back in the cycle frame.
@@ -233,7 +237,9 @@ RC_GTEST_PROP(PlannerProperties, TypeIIStaysOutOfThePartReachesEveryValleyBottom
   const int zOffset = 20000;
   const std::string program = programFor(c, zOffset);
   RC_LOG() << program;
-  const Toolpath t = planWithReference({program, "prop2.nc", "fanuc-0i-f", {{"5134", 0.3}}, {}});
+  const Toolpath t = planWithReference(
+      {program, "prop2.nc", "fanuc-0i-f",
+       {{"5134", 0.3}, {"R16", c.r16 ? 1.0 : 0.0}, {"NSP", c.nsp ? 1.0 : 0.0}, {"RF2", c.rf2 ? 1.0 : 0.0}}, {}});
   RC_ASSERT(!t.alarm.has_value());
   std::vector<Segment> rough;
   for (Segment s : t.cycles[0].shape) {
