@@ -6,7 +6,7 @@
 #include <string>
 
 #include "reference/gcode/parser.h"
-#include "reference/interpreter/program_runner.h"
+#include "reference/engine/program_runner.h"
 #include "reference/model/profile.h"
 
 namespace cyclecert {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "harness/spec_case.h"
-#include "reference/interpreter/program_runner.h"
+#include "reference/engine/program_runner.h"
 #include "reference/model/toolpath.h"
 #include "reports/svg/toolpath_svg.h"
 

@@ -126,6 +126,34 @@ SpecCase parseSpecCase(const std::string& text, const std::string& file) {
     }
     c.tool = ToolOffset{t["nose_radius"].get<double>(), t["tip"].get<int>()};
   }
+  if (j.contains("stock")) {
+    const json& s = j["stock"];
+    CaseStock stock;
+    if (!s.is_object() || !s.contains("kind")) throw SpecError(file, "/stock", "{\"kind\": \"bar\" | \"polygon\", …}");
+    if (s["kind"] == "bar") {
+      for (const char* k : {"diameter", "length"}) {
+        if (!s.contains(k) || !s[k].is_number() || s[k].get<double>() <= 0) throw SpecError(file, std::string("/stock/") + k, "a positive number (mm)");
+      }
+      stock.diameter = s["diameter"];
+      stock.length = s["length"];
+      stock.frontZ = s.value("front_z", 0.0);
+    } else if (s["kind"] == "polygon") {
+      stock.bar = false;
+      if (!s.contains("points") || !s["points"].is_array() || s["points"].size() < 3) {
+        throw SpecError(file, "/stock/points", "at least 3 points {\"x\": radius, \"z\": z}");
+      }
+      for (std::size_t i = 0; i < s["points"].size(); ++i) {
+        try {
+          stock.outline.push_back(pointFromJson(s["points"][i], "/stock/points/" + std::to_string(i)));
+        } catch (const ToolpathFormatError& e) {
+          throw std::runtime_error(file + ": " + e.what());
+        }
+      }
+    } else {
+      throw SpecError(file, "/stock/kind", "\"bar\" or \"polygon\"");
+    }
+    c.stock = stock;
+  }
   if (j.contains("mode")) {
     if (j["mode"] != "mdi" && j["mode"] != "memory") throw SpecError(file, "/mode", "\"memory\" or \"mdi\"");
     c.mdi = j["mode"] == "mdi";

@@ -18,6 +18,13 @@ struct ExpectedAlarm {
   std::optional<std::string> when;  // "cycle block", "before the cycle", "during the cycle"
 };
 
+// The stock a case names: a bar (diameter, length, front face at frontZ) or a polygon (z, x radius).
+struct CaseStock {
+  bool bar = true;
+  double diameter = 0, length = 0, frontZ = 0;
+  std::vector<Point> outline;
+};
+
 struct SpecCase {
   std::string file;
   std::string id;
@@ -32,6 +39,7 @@ struct SpecCase {
   std::optional<ExpectedAlarm> expectedAlarm;
   std::optional<ToolOffset> tool;             // the active tool's nose radius and tip direction
   bool mdi = false;                           // the program runs in MDI mode
+  std::optional<CaseStock> stock;             // explicit stock (else implied by the cycle)
   std::string derivation;
 };
 

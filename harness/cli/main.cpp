@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cyclecert_version.h"
+#include "harness/judging.h"
 #include "harness/reference_plan.h"
 #include "harness/rule_catalogue.h"
 #include "harness/spec_case.h"
@@ -34,6 +35,7 @@ Usage: cyclecert <command> [options]
 Commands:
   plan       plan every cycle of a program (or a spec case) with the reference engine;
              write the toolpath as JSON and SVG
+  judge      judge a toolpath (any engine's, as JSON) with every oracle
   rules      list the rule catalogue with, per rule, how many spec cases cite it
   params     list the machine parameters, their defaults and the rules they serve
   profiles   list the controller profiles
@@ -74,6 +76,26 @@ const char* kParamsHelp = R"HELP(Usage: cyclecert params [--json]
 
 Lists every machine parameter the reference models: number, mnemonic, default, unit, meaning and
 the rule IDs it serves. Profiles may change defaults (see `cyclecert profiles`).
+)HELP";
+
+const char* kJudgeHelp = R"HELP(Usage: cyclecert judge CASE.json TOOLPATH.json [options]
+       cyclecert judge --program FILE.nc [--profile P] [--param N=V]… TOOLPATH.json [options]
+       cyclecert judge CASE.json --reference [options]
+
+Judges a toolpath with every oracle, from the program's finish shape, allowances and stock alone
+(never from the reference planner): no-gouge, rapids-in-air, complete, depth-per-pass, retract,
+returns-to-start, feeds, alarm. TOOLPATH.json is the canonical toolpath JSON (see `cyclecert plan
+--help`; "-" reads standard input); --reference judges the reference engine's own plan.
+
+Options:
+  --profile P, --param NAME=VALUE, --nose-radius R, --tip T, --mdi   as for `plan` (with --program)
+  --epsilon E          tolerance in mm (default: the case's tolerance, else 0.001)
+  --json               findings as JSON on standard output
+  --svg OUT            plot: contour, rough contour, stock, the path, each finding's witness in magenta
+  --help               this help
+
+Exit: 0 no finding, 1 findings, 2 bad usage or bad input (the message names the file, the field and
+the move index), 3 the program needs a cycle the reference does not read yet.
 )HELP";
 
 const char* kRulesHelp = R"HELP(Usage: cyclecert rules [--cycle C] [--uncited] [--json] [--specs DIR]
@@ -290,6 +312,88 @@ int commandRules(const std::vector<std::string>& args) {
   return uncitedOnly && uncited > 0 ? 1 : kExitOk;
 }
 
+int commandJudge(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kJudgeHelp;
+    return kExitOk;
+  }
+  std::string casePath, programPath, toolpathPath, svgOut, profile;
+  std::vector<std::string> params;
+  bool json = false, reference = false, mdi = false;
+  std::optional<double> epsilon, noseRadius;
+  std::optional<int> tip;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--program") programPath = value();
+    else if (a == "--profile") profile = value();
+    else if (a == "--param") params.push_back(value());
+    else if (a == "--svg") svgOut = value();
+    else if (a == "--json") json = true;
+    else if (a == "--reference") reference = true;
+    else if (a == "--mdi") mdi = true;
+    else if (a == "--epsilon") epsilon = numberArg(a, value(), 1e-9, 10);
+    else if (a == "--nose-radius") noseRadius = numberArg(a, value(), 0, 100);
+    else if (a == "--tip") tip = static_cast<int>(numberArg(a, value(), 0, 9));
+    else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option " + a);
+    else if (casePath.empty() && programPath.empty() && a.size() > 5 && a.substr(a.size() - 5) == ".json" && toolpathPath.empty() && !reference && args.size() > 1 && i + 1 < args.size())
+      casePath = a;
+    else if (toolpathPath.empty()) toolpathPath = a;
+    else throw UsageError("unexpected argument '" + a + "'");
+  }
+  // A lone JSON argument with --reference is the case.
+  if (reference && casePath.empty() && programPath.empty()) std::swap(casePath, toolpathPath);
+  if (casePath.empty() == programPath.empty()) throw UsageError("give a CASE.json or --program FILE.nc");
+  if (reference == !toolpathPath.empty()) throw UsageError("give a TOOLPATH.json, or --reference");
+
+  JudgeRequest request;
+  std::string title;
+  if (!casePath.empty()) {
+    const SpecCase c = loadSpecCase(casePath);
+    request = judgeRequestFor(c);
+    title = c.id;
+  } else {
+    request.program = {readFile(programPath), programPath, profile, {}, {}};
+    title = programPath;
+  }
+  if (!profile.empty()) request.program.profile = profile;
+  for (auto& p : parsedParams(params)) request.program.params.push_back(p);
+  if (mdi) request.program.options.mdi = true;
+  if (noseRadius) request.program.options.tool.noseRadius = *noseRadius;
+  if (tip) request.program.options.tool.tip = *tip;
+  if (epsilon) request.settings.epsilon = *epsilon;
+
+  Toolpath path;
+  if (reference) {
+    path = planWithReference(request.program);
+  } else {
+    const std::string text = toolpathPath == "-" ? std::string(std::istreambuf_iterator<char>(std::cin), {}) : readFile(toolpathPath);
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw UsageError(toolpathPath + ": expected a toolpath JSON document: " + e.what());
+    }
+    try {
+      path = toolpathFromJson(j);
+    } catch (const ToolpathFormatError& e) {
+      throw UsageError(toolpathPath + ": " + e.what());
+    }
+    if (!j.contains("start")) path.start = {};
+  }
+  JudgeInput in = judgeInputFor(request, path);
+  if (!reference && !in.program.cycles.empty() && path.start == Point{}) in.path.start = in.program.cycles.front().start;
+  const std::vector<Finding> findings = judge(in);
+  if (json) std::cout << findingsJson(findings).dump(2) << "\n";
+  else if (findings.empty()) std::cout << "no finding: every oracle passes\n";
+  else std::cout << findingsText(findings) << findings.size() << " finding(s)\n";
+  if (!svgOut.empty()) writeFile(svgOut, renderToolpathSvg(judgePlot(in, findings, title)));
+  return findings.empty() ? kExitOk : kExitAlarm;
+}
+
 int commandProfiles(const std::vector<std::string>& args) {
   if (wantsHelp(args)) {
     std::cout << kProfilesHelp;
@@ -332,6 +436,7 @@ int run(const std::vector<std::string>& argv) {
   if (command == "plan") return commandPlan(args);
   if (command == "params") return commandParams(args);
   if (command == "rules") return commandRules(args);
+  if (command == "judge") return commandJudge(args);
   if (command == "profiles") return commandProfiles(args);
   throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
 }

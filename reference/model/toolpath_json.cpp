@@ -108,4 +108,33 @@ Move moveFromJson(const json& j, const std::string& where) {
   return m;
 }
 
+Toolpath toolpathFromJson(const json& j) {
+  if (!j.is_object()) fail("(document)", "a toolpath object with \"moves\"");
+  Toolpath t;
+  if (j.contains("profile") && j["profile"].is_string()) t.profile = j["profile"];
+  if (j.contains("plane") && j["plane"].is_string()) t.plane = j["plane"];
+  if (j.contains("alarm") && !j["alarm"].is_null()) {
+    const json& a = j["alarm"];
+    if (!a.is_object() || !a.contains("code") || !a["code"].is_string()) fail("/alarm", "null or {\"code\": …, \"line\": …}");
+    t.alarm = Alarm{a["code"], a.value("message", std::string()), a.value("line", 0), a.value("when", std::string())};
+  }
+  if (!j.contains("moves")) fail("/moves", "an array of moves (field missing)");
+  if (!j["moves"].is_array()) fail("/moves", "an array of moves");
+  if (j.contains("start")) t.start = pointFromJson(j["start"], "/start");
+  for (std::size_t i = 0; i < j["moves"].size(); ++i) {
+    const std::string where = "/moves/" + std::to_string(i);
+    t.moves.push_back(moveFromJson(j["moves"][i], where));
+    const Move& m = t.moves.back();
+    if (m.center) {
+      const double r0 = distance(t.from(i), *m.center), r1 = distance(m.to, *m.center);
+      if (std::abs(r0 - r1) > 1e-3 * std::max(1.0, r0)) {
+        fail(where + "/center", "the arc's centre at equal distance from its end points (" + std::to_string(r0) +
+                                    " mm from the start, " + std::to_string(r1) + " mm from the end)");
+      }
+    }
+  }
+  if (t.moves.empty() && !t.alarm) fail("/moves", "at least one move (or an alarm)");
+  return t;
+}
+
 }  // namespace cyclecert

@@ -23,6 +23,13 @@ class ToolpathFormatError : public std::runtime_error {
 };
 
 Point pointFromJson(const nlohmann::json& j, const std::string& where);
+
+// A whole toolpath as an engine writes it (only "moves" is required; "start" defaults to the first
+// move's position being reached from an unknown point, so give it). Every error names the field as
+// a JSON pointer, e.g. "/moves/3/center: expected the arc's centre at equal distance from its end
+// points (1.2 mm from the start, 1.5 mm from the end)"; a toolpath with no moves and no alarm is an
+// error too.
+Toolpath toolpathFromJson(const nlohmann::json& j);
 Move moveFromJson(const nlohmann::json& j, const std::string& where);
 
 std::string kindName(MoveKind k);

@@ -269,9 +269,56 @@ Box drawingBounds(const PlotInput& in) {
   for (const Segment& s : in.finish.segments) box.add(s);
   for (const Segment& s : in.rough.segments) box.add(s);
   box.add(in.path.start);
+  for (const auto& outline : in.stock) {
+    for (Point p : outline) box.add(p);
+  }
+  for (const Highlight& h : in.highlights) {
+    for (const auto& region : h.regions) {
+      for (Point p : region) box.add(p);
+    }
+    for (const Segment& s : h.segments) box.add(s);
+    for (Point p : h.points) box.add(p);
+  }
   for (std::size_t i = 0; i < in.path.moves.size(); ++i) box.add(moveSegment(in.path, i));
   for (Point p : startPoints(in.path)) box.add(p);
   return box;
+}
+
+std::string polygonElement(const View& v, const std::vector<Point>& outline, const std::string& cls,
+                           const std::string& fill, const std::string& stroke, double opacity) {
+  std::string points;
+  for (Point p : outline) {
+    if (isFinite(p)) points += coords(v, p) + " ";
+  }
+  if (points.empty()) return {};
+  return "<polygon class=\"" + cls + "\" points=\"" + points + "\" fill=\"" + fill + "\" fill-opacity=\"" +
+         num(opacity) + "\" stroke=\"" + stroke + "\" stroke-width=\"0.8\"/>\n";
+}
+
+std::string stockOutlines(const View& v, const std::vector<std::vector<Point>>& stock) {
+  std::string out;
+  for (const auto& outline : stock) out += polygonElement(v, outline, "stock", "#d9d9d9", "#b0b0b0", 0.5);
+  return out;
+}
+
+// Findings' witnesses in magenta, over everything else.
+std::string highlightElements(const View& v, const std::vector<Highlight>& highlights) {
+  if (highlights.empty()) return {};
+  const char* colour = "#d400d4";
+  std::string out = "<g id=\"findings\">\n";
+  for (const Highlight& h : highlights) {
+    out += "<g class=\"finding\"><title>" + svgEscape(h.label) + "</title>\n";
+    for (const auto& region : h.regions) out += polygonElement(v, region, "witness-region", colour, colour, 0.35);
+    for (const Segment& s : h.segments) out += pathElement("witness-segment", segmentPathData(v, s), {colour, 3.5});
+    for (Point p : h.points) {
+      if (isFinite(p)) {
+        out += "<circle class=\"witness-point\" cx=\"" + num(v.px(p.z)) + "\" cy=\"" + num(v.py(p.x)) +
+               "\" r=\"6\" fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"2.5\"/>\n";
+      }
+    }
+    out += "</g>\n";
+  }
+  return out + "</g>\n";
 }
 
 std::string axisLines(const View& v) {
@@ -455,6 +502,7 @@ std::string renderToolpathSvg(const PlotInput& in) {
   out += "<title>" + svgEscape(in.title) + "</title>\n";
   out += "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" + w + "\" height=\"" + h +
          "\" fill=\"#ffffff\"/>\n";
+  out += stockOutlines(view, in.stock);
   out += axisLines(view);
   out += diameterLabels(view, in.finish);
   out += contourPath(view, in.rough, "rough", {kRoughColour, 1, kRoughDash});
@@ -462,6 +510,7 @@ std::string renderToolpathSvg(const PlotInput& in) {
   out += toolpathMoves(view, in.path);
   out += passLabels(view, in.path);
   out += startMarkers(view, in.path);
+  out += highlightElements(view, in.highlights);
   out += legend();
   out += textElement("title", 20, 30, in.title, {18, "#000000", "start", true});
   if (in.path.alarm) out += alarmBanner(*in.path.alarm);

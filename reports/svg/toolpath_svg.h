@@ -21,11 +21,21 @@
 
 namespace cyclecert {
 
+// Something a finding points at, drawn over everything in a contrasting colour.
+struct Highlight {
+  std::string label;                             // e.g. "no-gouge: move 12"
+  std::vector<std::vector<Point>> regions;       // filled
+  std::vector<Segment> segments;                 // thick strokes
+  std::vector<Point> points;                     // rings
+};
+
 struct PlotInput {
   std::string title;
   Contour finish;
   Contour rough;  // the finish contour shifted by the allowances (drawn as given)
   Toolpath path;
+  std::vector<std::vector<Point>> stock;  // stock outline(s), drawn under everything, lightly filled
+  std::vector<Highlight> highlights;      // findings' witnesses
 };
 
 std::string renderToolpathSvg(const PlotInput& in);

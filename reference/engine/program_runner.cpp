@@ -1,4 +1,4 @@
-#include "reference/interpreter/program_runner.h"
+#include "reference/engine/program_runner.h"
 
 #include <map>
 #include <set>

@@ -1,0 +1,33 @@
+#pragma once
+// Judging a toolpath with the oracles, for a spec case or a program: builds the oracles' input
+// from the program alone (never from the reference planner), runs them, and presents findings for
+// people (text, SVG witnesses) and machines (JSON).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "harness/reference_plan.h"
+#include "harness/spec_case.h"
+#include "oracles/judgement.h"
+#include "reports/svg/toolpath_svg.h"
+
+namespace cyclecert {
+
+struct JudgeRequest {
+  PlanRequest program;                 // text, file, profile, parameters, MDI mode, tool
+  std::optional<CaseStock> stock;      // else implied by the cycle
+  JudgeSettings settings;
+};
+
+JudgeRequest judgeRequestFor(const SpecCase& c);
+
+// The oracles' input for a toolpath (throws ParseError / std::invalid_argument for bad input).
+JudgeInput judgeInputFor(const JudgeRequest& request, Toolpath path);
+
+std::string findingsText(const std::vector<Finding>& findings);
+nlohmann::json findingsJson(const std::vector<Finding>& findings);
+
+// The plot of a judged toolpath: contour, rough contour, stock, path and each finding's witness.
+PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, const std::string& title);
+
+}  // namespace cyclecert

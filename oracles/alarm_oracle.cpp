@@ -1,0 +1,44 @@
+// alarm: the engine alarms exactly where the documented checks require it — it must not plan a
+// shape the rules forbid, nor alarm on one they allow.
+#include <sstream>
+
+#include "oracles/oracles.h"
+
+namespace cyclecert {
+
+namespace {
+
+class AlarmOracle : public Oracle {
+ public:
+  std::string id() const override { return "alarm"; }
+  std::vector<std::string> rules() const override {
+    return {"G71.T1.ALARM", "G71.T2.MONO", "G72.T1.MONO", "G71.HEAD.G0G1", "G71.HEAD.NOX", "G71.LIMIT.HEIGHT", "G72.RANGE"};
+  }
+
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const JudgeInput& in = ctx.in;
+    const std::optional<Alarm> expected = in.program.firstAlarm();
+    const std::optional<Alarm>& got = in.path.alarm;
+    if (expected && !got) {
+      std::ostringstream m;
+      m << "the engine planned what the rules forbid: expected alarm " << expected->code << " at line " << expected->line
+        << " (" << expected->message << ")";
+      out.push_back(finding(*this, std::nullopt, m.str()));
+    } else if (expected && (got->code != expected->code || got->line != expected->line)) {
+      std::ostringstream m;
+      m << "expected alarm " << expected->code << " at line " << expected->line << ", the engine raised " << got->code
+        << " at line " << got->line;
+      out.push_back(finding(*this, std::nullopt, m.str()));
+    } else if (!expected && got) {
+      out.push_back(finding(*this, std::nullopt,
+                            "the engine alarmed (" + got->code + " at line " + std::to_string(got->line) +
+                                ") on cycles the documented checks allow"));
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Oracle> makeAlarmOracle() { return std::make_unique<AlarmOracle>(); }
+
+}  // namespace cyclecert

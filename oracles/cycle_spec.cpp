@@ -1,0 +1,359 @@
+// The oracles' own reading of a program: which roughing cycles it asks for and with what shape,
+// allowances and parameters, and whether the documented checks forbid a cycle. Deliberately
+// written apart from the reference planners (reference/cycles): an oracle that reused the planner's
+// checks would agree with it by construction.
+#include "oracles/cycle_spec.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "reference/gcode/address_ranges.h"
+#include "reference/interpreter/block_motion.h"
+#include "reference/model/alarms.h"
+#include "reference/model/offset.h"
+
+namespace cyclecert {
+
+namespace {
+
+constexpr double kEps = 1e-9;
+int signOf(double v) { return v > kEps ? 1 : (v < -kEps ? -1 : 0); }
+
+Point toFrame(const CycleSpec& c, Point p) { return c.cutsAlongZ() ? p : transposed(p); }
+
+// Applies the modal G codes of a block that change how later words are read.
+void applyModal(const Block& b, ModalState& s) {
+  for (const Word* g : b.all('G')) {
+    const int g10 = gCode10(g->value);
+    if (g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30) s.motion = g10 / 10;
+    if (g10 == 170 || g10 == 180 || g10 == 190) s.plane = g10 / 10;
+    if (g10 == 200) s.inch = true;
+    if (g10 == 210) s.inch = false;
+    if (g10 == 400 || g10 == 410 || g10 == 420) s.tnrc = g10 / 10;
+  }
+  if (const Word* f = b.find('F')) s.feed = f->value * s.unitScale();
+}
+
+Alarm forbidden(std::string code, int line, std::string why) { return Alarm{std::move(code), std::move(why), line, ""}; }
+
+bool isMotionCode(int g10) { return g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30; }
+
+// G72.NSNF.GCODES, G71.TNRC.PLACE: what a shape program may contain.
+std::optional<Alarm> checkShapeCommands(const Block& b, bool compensationAllowed) {
+  for (const Word* g : b.all('G')) {
+    const int g10 = gCode10(g->value);
+    const bool tnrc = g10 == 400 || g10 == 410 || g10 == 420;
+    const bool allowed = isMotionCode(g10) || g10 == 40 || (g10 >= 960 && g10 <= 990 && g10 % 10 == 0) || tnrc;
+    if (!allowed || (tnrc && !compensationAllowed)) return forbidden("PS0325", b.line, g->text + " in the shape program");
+  }
+  for (const Word* m : b.all('M')) {
+    if (m->value == 98 || m->value == 99) return forbidden("PS0325", b.line, "subprogram call in the shape program");
+  }
+  return std::nullopt;
+}
+
+// The documented shape checks, written from the rules (G71.HEAD.G0G1, G71.HEAD.NOX, G71.T1.MONO,
+// G71.T2.MONO, G72.T1.MONO, G71.LIMIT.HEIGHT, G71.T1.ALARM with 5145/5146), in the cycle frame.
+std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool headHasDepthWord,
+                                const MachineParams& p) {
+  if (!head.hasG(0) && !head.hasG(10)) return forbidden("PS0065", head.line, "block ns has no G00/G01");
+  const Point a = toFrame(c, c.start);
+  const Point b = toFrame(c, c.shape.front().to);
+  if (!headHasDepthWord || std::abs(b.x - a.x) <= kEps) {
+    return forbidden("PS0325", head.line, "block ns does not move the depth axis");
+  }
+  const int d = signOf(b.x - a.x);
+  const Point end = toFrame(c, c.shape.back().to);
+  int cut = signOf(end.z - (c.typeII ? a.z : b.z));
+  if (cut == 0) cut = -1;
+  // Tolerances and codes by plane axis: z (1st) 5145 / PS0064, x (2nd) 5146 / PS0329.
+  const double zTol = p.get("5145"), xTol = p.get("5146");
+  const bool g72 = !c.cutsAlongZ();
+  const double cutTol = g72 ? xTol : zTol, depthTol = g72 ? zTol : xTol;
+  const std::string cutCode = g72 ? "PS0329" : "PS0064", depthCode = g72 ? "PS0064" : "PS0329";
+  double furthest = cut * (c.typeII ? a.z : b.z), highest = -d * b.x;
+  for (std::size_t i = c.typeII ? 0 : 1; i < c.shape.size(); ++i) {
+    const Segment s = c.cutsAlongZ() ? c.shape[i] : transposed(c.shape[i]);
+    std::vector<Point> points = apexesAlong(s);
+    points.push_back(s.to);
+    for (Point q : points) {
+      if (cut * q.z < furthest - cutTol - kEps) return forbidden(cutCode, s.sourceLine, "the shape turns back along the cut axis");
+      furthest = std::max(furthest, cut * q.z);
+      if (!c.typeII) {
+        if (-d * q.x < highest - depthTol - kEps) return forbidden(depthCode, s.sourceLine, "the shape goes deeper again");
+        highest = std::max(highest, -d * q.x);
+      }
+    }
+  }
+  // G71.LIMIT.HEIGHT: U(+) nothing above the start point, U(−) nothing below it.
+  if (c.cutsAlongZ() && c.allowance.x != 0) {
+    for (const Segment& s : c.shape) {
+      const Extent e = extent(s);
+      const bool above = c.allowance.x > 0 ? e.xMax > c.start.x + kEps : e.xMin < c.start.x - kEps;
+      if (above) return forbidden("PS0322", s.sourceLine == 0 ? head.line : s.sourceLine, "the shape passes the start point's height");
+    }
+  }
+  return std::nullopt;
+}
+
+class SpecReader {
+ public:
+  SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool)
+      : program_(program), profile_(profile), params_(params), tool_(tool) {}
+
+  ProgramSpec read() {
+    std::size_t i = 0;
+    while (i < program_.blocks.size()) {
+      const Block& b = program_.blocks[i];
+      applyModal(b, state_);
+      const bool g70 = b.hasG(700), g71 = b.hasG(710), g72 = b.hasG(720);
+      if ((g70 || g71 || g72) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
+      if (g70) {
+        readFinishingFeeds(b);
+        checkFinishingCompensation(b);
+      }
+      if ((g71 || g72) && !b.has('P') && !b.has('Q')) {
+        readFirstBlock(b, g71);
+      } else if (g71 || g72) {
+        i = readCycle(i, g71 ? "G71" : "G72");
+        continue;
+      } else if (!g70 && hasAxisWord(b)) {
+        if (!out_.cycles.empty()) out_.motionAfterCycles = true;
+        state_.position = targetPosition(b, state_);
+      }
+      ++i;
+    }
+    return std::move(out_);
+  }
+
+ private:
+  // G70.EX: the F words of the finishing shape apply in G70.
+  void readFinishingFeeds(const Block& b) {
+    out_.hasFinishingCycle = true;
+    const Word* p = b.find('P');
+    const Word* q = b.find('Q');
+    const auto ns = p ? program_.findSequence(static_cast<long>(p->value)) : std::nullopt;
+    const auto nf = q ? program_.findSequence(static_cast<long>(q->value)) : std::nullopt;
+    if (!ns || !nf) return;
+    for (std::size_t i = *ns; i <= *nf && i < program_.blocks.size(); ++i) {
+      if (const Word* f = program_.blocks[i].find('F')) out_.finishingFeeds.push_back(f->value * state_.unitScale());
+    }
+  }
+
+  // G72.RANGE: the P/Q block's words against the address table.
+  std::optional<Alarm> rangeAlarm(const Block& b, const PlaneAxes& axes) const {
+    try {
+      for (char letter : {'P', 'Q'}) {
+        if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::SequenceNumber, state_.inch);
+      }
+      for (char letter : {axes.firstInc, axes.secondInc}) {
+        if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::Allowance, state_.inch);
+      }
+    } catch (const CycleAlarm& a) {
+      return a.alarm();
+    }
+    return std::nullopt;
+  }
+
+  // G71.TNRC.NT2: compensation commanded inside a G70 shape is allowed with NT2 = 1 only if the G70
+  // is commanded in G40 mode (PS0325), block Q has no G41/G42 (PS0325) and has G40 (PS0538); with
+  // NT2 = 0 it is PS0325 (G71.TNRC.PLACE).
+  void checkFinishingCompensation(const Block& b) {
+    const Word* p = b.find('P');
+    const Word* q = b.find('Q');
+    const auto ns = p ? program_.findSequence(static_cast<long>(p->value)) : std::nullopt;
+    const auto nf = q ? program_.findSequence(static_cast<long>(q->value)) : std::nullopt;
+    if (!ns || !nf || *nf < *ns) return;
+    const auto isTnrc = [](const Block& x) { return x.hasG(400) || x.hasG(410) || x.hasG(420); };
+    bool inside = false;
+    for (std::size_t i = *ns; i <= *nf; ++i) inside = inside || isTnrc(program_.blocks[i]);
+    if (!inside || profile_.toleratesTnrcInShape) return;
+    const Block& end = program_.blocks[*nf];
+    std::optional<Alarm> bad;
+    if (!params_.bit("NT2")) {
+      for (std::size_t i = *ns; i <= *nf && !bad; ++i) {
+        if (isTnrc(program_.blocks[i])) bad = forbidden("PS0325", program_.blocks[i].line, "compensation inside the G70 shape");
+      }
+    } else if (state_.tnrc != 40) {
+      bad = forbidden("PS0325", b.line, "G70 with compensation in its shape commanded in G41/G42 mode");
+    } else if (end.hasG(410) || end.hasG(420)) {
+      bad = forbidden("PS0325", end.line, "G41/G42 in the end block of the G70 shape");
+    } else if (!end.hasG(400)) {
+      bad = forbidden("PS0538", end.line, "no G40 in the end block of the G70 shape");
+    }
+    if (bad) finishingAlarms_.push_back(*bad);
+  }
+
+  // Δd and e are modal and live in parameters 5132/5133 (G71.DD.MODAL, G71.E.MODAL, G72.DD).
+  void readFirstBlock(const Block& b, bool g71) {
+    const PlaneAxes axes = state_.axes();
+    try {
+      if (const Word* dd = b.find(g71 ? axes.secondInc : axes.firstInc)) checkCycleAddress(*dd, CycleAddress::DepthOfCut, state_.inch);
+      if (const Word* e = b.find('R')) checkCycleAddress(*e, CycleAddress::Retract, state_.inch);
+    } catch (const CycleAlarm& a) {
+      firstBlockAlarm_ = a.alarm();
+      return;
+    }
+    if (const Word* dd = b.find(g71 ? axes.secondInc : axes.firstInc); dd && dd->value > 0) {
+      params_.set("5132", dd->value * state_.unitScale());
+    }
+    if (const Word* e = b.find('R'); e && e->value >= 0) params_.set("5133", e->value * state_.unitScale());
+  }
+
+  std::size_t readCycle(std::size_t index, const std::string& code) {
+    const Block& b = program_.blocks[index];
+    const PlaneAxes axes = state_.axes();
+    CycleSpec c;
+    c.code = code;
+    c.line = b.line;
+    c.start = state_.planePoint();
+    c.feed = state_.feed;
+    c.depthOfCut = params_.get("5132");
+    c.retract = params_.get("5133");
+    c.directReturn = params_.bit("DTP");
+    if (const Word* du = b.find(axes.secondInc)) c.allowance.x = physicalLength(du->value, axes.secondDiameter, state_);
+    if (const Word* dw = b.find(axes.firstInc)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
+    const Word* p = b.find('P');
+    const Word* q = b.find('Q');
+    const auto ns = p ? program_.findSequence(static_cast<long>(p->value)) : std::nullopt;
+    const auto nf = q ? program_.findSequence(static_cast<long>(q->value)) : std::nullopt;
+    if (firstBlockAlarm_) {
+      c.forbiddenBy = firstBlockAlarm_;
+    } else if (auto bad = rangeAlarm(b, axes)) {
+      c.forbiddenBy = bad;
+    } else if (!p || !q) {
+      c.forbiddenBy = forbidden("PS0061", b.line, "P or Q missing");
+    } else if (!ns || !nf || *nf < *ns) {
+      c.forbiddenBy = forbidden("PS0063", b.line, "block P or Q not found");
+    } else if (c.depthOfCut <= 0) {
+      c.forbiddenBy = forbidden("PS0062", b.line, "no depth of cut");
+    } else if (c.feed <= 0) {
+      c.forbiddenBy = forbidden("PS0011", b.line, "no cutting feed");
+    }
+    if (c.forbiddenBy) {
+      out_.cycles.push_back(std::move(c));
+      return index + 1;
+    }
+    readShape(c, *ns, *nf);
+    out_.cycles.push_back(std::move(c));
+    return *ns == index + 1 ? *nf + 1 : index + 1;  // G72.NSNF.FOLLOW
+  }
+
+  void readShape(CycleSpec& c, std::size_t ns, std::size_t nf) {
+    ModalState s = state_;
+    const Block& head = program_.blocks[ns];
+    const PlaneAxes axes = s.axes();
+    const bool g71 = c.code == "G71";
+    const char depthAbs = g71 ? axes.second : axes.first, depthInc = g71 ? axes.secondInc : axes.firstInc;
+    const char cutAbs = g71 ? axes.first : axes.second, cutInc = g71 ? axes.firstInc : axes.secondInc;
+    c.typeII = head.has(cutAbs) || head.has(cutInc);
+    for (std::size_t i = ns; i <= nf; ++i) {
+      const Block& b = program_.blocks[i];
+      if (auto bad = checkShapeCommands(b, profile_.toleratesTnrcInShape || params_.bit("NT1"))) {
+        c.forbiddenBy = bad;
+        return;
+      }
+      for (const Word* g : b.all('G')) {
+        if (isMotionCode(gCode10(g->value))) s.motion = gCode10(g->value) / 10;
+      }
+      if (!hasAxisWord(b)) continue;
+      const int motion = i == ns ? (head.hasG(10) ? 1 : 0) : s.motion;
+      try {
+        if (auto seg = motionSegment(b, motion, s)) c.shape.push_back(*seg);
+        else if (i == ns) c.shape.push_back(Segment{SegmentKind::Line, s.planePoint(), s.planePoint(), {}, b.line});
+      } catch (const std::exception&) {
+        c.forbiddenBy = forbidden("PS0023", b.line, "impossible arc");
+        return;
+      }
+      s.position = targetPosition(b, s);
+    }
+    if (c.shape.empty()) c.shape.push_back(Segment{SegmentKind::Line, c.start, c.start, {}, head.line});
+    c.semiFinish = !params_.bit(c.typeII ? "RF2" : "RF1");
+    compensate(c);
+    if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_);
+  }
+
+  // G71.TNRC.CANCEL / G71.CHECK: under G41/G42 the cycle works on the imaginary tool-nose path.
+  void compensate(CycleSpec& c) {
+    if (state_.tnrc == 40 || tool_.noseRadius <= 0 || c.shape.size() < 2) return;
+    const CompensationSide side = state_.tnrc == 41 ? CompensationSide::Left : CompensationSide::Right;
+    std::vector<Segment> body(c.shape.begin() + 1, c.shape.end());
+    try {
+      Segment head = c.shape.front();
+      head.to = startUpPoint(head.to, body.front(), tool_, side);
+      body = compensatedPath(body, tool_, side);
+      if (!body.empty()) body.front().from = head.to;
+      c.shape = {head};
+      c.shape.insert(c.shape.end(), body.begin(), body.end());
+    } catch (const OffsetError& e) {
+      c.forbiddenBy = forbidden("PS0041", e.sourceLine, "the nose radius does not fit the shape");
+    }
+  }
+
+  const Program& program_;
+  const Profile& profile_;
+  MachineParams params_;
+  const ToolOffset& tool_;
+  ModalState state_;
+  ProgramSpec out_;
+  std::optional<Alarm> firstBlockAlarm_;  // a first cycle block outside the range table
+
+ public:
+  std::vector<Alarm> finishingAlarms_;    // G70 blocks the rules forbid
+};
+
+}  // namespace
+
+int CycleSpec::depthDirection() const {
+  const Point a = toFrame(*this, start), b = toFrame(*this, shape.front().to);
+  return signOf(b.x - a.x);
+}
+
+int CycleSpec::cutDirection() const {
+  const Point from = toFrame(*this, typeII ? start : shape.front().to), to = toFrame(*this, shape.back().to);
+  const int c = signOf(to.z - from.z);
+  return c != 0 ? c : -1;
+}
+
+std::vector<Segment> CycleSpec::roughProfile() const {
+  std::vector<Segment> rough;
+  rough.reserve(shape.size());
+  for (const Segment& s : shape) rough.push_back(s.shifted(allowance));
+  return rough;
+}
+
+ProgramSpec readProgramSpec(const Program& program, const Profile& profile, const MachineParams& params,
+                            const ToolOffset& tool, bool mdi) {
+  SpecReader reader(program, profile, params, tool);
+  ProgramSpec spec = reader.read();
+  for (const Alarm& a : reader.finishingAlarms_) spec.finishingAlarms.push_back(a);
+  // G72.MDI: the cycles cannot run in MDI mode; the first cycle block alarms.
+  if (mdi && spec.firstCycleBlockLine) spec.mdiAlarm = forbidden("PS0067", *spec.firstCycleBlockLine, "MDI mode");
+  return spec;
+}
+
+const CycleSpec* ProgramSpec::singleRoughingCycle() const {
+  return cycles.size() == 1 && !cycles.front().forbiddenBy ? &cycles.front() : nullptr;
+}
+
+std::optional<Alarm> ProgramSpec::firstAlarm() const {
+  if (mdiAlarm) return mdiAlarm;
+  std::optional<Alarm> first;
+  const auto consider = [&](const Alarm& a) {
+    if (!first || a.line < first->line) first = a;
+  };
+  for (const CycleSpec& c : cycles) {
+    if (c.forbiddenBy) consider(*c.forbiddenBy);
+  }
+  for (const Alarm& a : finishingAlarms) consider(a);
+  return first;
+}
+
+const CycleSpec* ProgramSpec::firstForbidden() const {
+  for (const CycleSpec& c : cycles) {
+    if (c.forbiddenBy) return &c;
+  }
+  return nullptr;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,64 @@
+#pragma once
+// What a program asks of each roughing cycle, read from the program alone — never from a planner —
+// so that the oracles can judge any engine's toolpath: the cycle's start point, finish shape,
+// allowances, Δd, e, F, type and the parameters in force, and whether the rules forbid the shape.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "reference/model/geometry.h"
+#include "reference/model/params.h"
+#include "reference/model/profile.h"
+#include "reference/model/program.h"
+#include "reference/model/tool.h"
+#include "reference/model/toolpath.h"
+
+namespace cyclecert {
+
+struct CycleSpec {
+  std::string code;              // "G71" or "G72"
+  int line = 0;                  // the block with P and Q
+  bool typeII = false;
+  Point start;                   // A, plane coordinates (z = 1st axis, x = 2nd axis, radius)
+  std::vector<Segment> shape;    // the finish shape A → B → … → C (compensated under G41/G42)
+  Point allowance;               // the rough profile is `shape` shifted by this
+  double depthOfCut = 0;         // Δd
+  double retract = 0;            // e
+  double feed = 0;               // F of the cycle
+  bool semiFinish = true;        // RF1 (type I) / RF2 (type II) = 0
+  bool directReturn = false;     // DTP
+  // The frame: G71 cuts along z (the plane's 1st axis), G72 along x.
+  bool cutsAlongZ() const { return code != "G72"; }
+  // Sign of the infeed on the depth axis (from A towards B) and of the cut on the cut axis.
+  int depthDirection() const;
+  int cutDirection() const;
+  std::vector<Segment> roughProfile() const;  // shape shifted by the allowance
+  // Set when the documented checks forbid this cycle (independent of any engine): the alarm the
+  // controller must raise.
+  std::optional<Alarm> forbiddenBy;
+};
+
+struct ProgramSpec {
+  std::vector<CycleSpec> cycles;
+  bool hasFinishingCycle = false;  // a G70 follows: its feeds come from the shape
+  std::vector<double> finishingFeeds;  // the F words of G70 shapes
+  bool motionAfterCycles = false;  // positioning or cutting blocks run after the last cycle
+  std::optional<int> firstCycleBlockLine;  // the first G70/G71/G72 block
+  std::vector<Alarm> finishingAlarms;      // G70 blocks the rules forbid (G71.TNRC.NT2)
+  std::optional<Alarm> mdiAlarm;           // the program runs in MDI mode (G72.MDI)
+
+  // The program's one roughing cycle when it has exactly one that the rules allow (what the
+  // geometric oracles judge), else nullptr.
+  const CycleSpec* singleRoughingCycle() const;
+  // The first cycle the rules forbid, or nullptr.
+  const CycleSpec* firstForbidden() const;
+  // The alarm the controller must stop with: the earliest one in the program, if any.
+  std::optional<Alarm> firstAlarm() const;
+};
+
+// Reads the program's G71/G72 cycles. Throws ParseError for malformed text and std::runtime_error
+// for programs the oracles cannot read (with the reason).
+ProgramSpec readProgramSpec(const Program& program, const Profile& profile, const MachineParams& params,
+                            const ToolOffset& tool, bool mdi = false);
+
+}  // namespace cyclecert

@@ -1,0 +1,143 @@
+// The oracles that judge against the material: no-gouge, rapids-in-air, complete, depth-per-pass.
+// Every verdict tolerates epsilon plus the chord tolerance the arcs were flattened with, so that
+// flattening never produces a finding.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "oracles/material/boost_geometry.h"
+
+#include "oracles/material_replay.h"
+#include "oracles/oracles.h"
+
+namespace cyclecert {
+
+namespace {
+
+double tolerance(const JudgeInput& in) { return in.settings.tolerance(); }
+
+// The material left beyond the target surface, over the target's span along the cut axis: what
+// remains minus the part grown by the allowances, and without what lies outside the span (the
+// cycle does not cut beyond its shape's ends).
+BgRegion leftover(const MaterialReplay& r, double tolerance) {
+  const DepthFrame frame(r.away);
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Segment& s : r.target) {
+    for (Point p : {s.from, s.to}) {
+      lo = std::min(lo, frame.cut(p));
+      hi = std::max(hi, frame.cut(p));
+    }
+  }
+  if (!(hi - lo > 2 * tolerance)) return {};
+  // The span as a band across the depth axis, as wide as the shadows reach.
+  const Point along{r.away.x, -r.away.z};
+  const auto corner = [&](double cut, double depth) { return cut * along + depth * r.away; };
+  const BgRegion span = regionFrom({corner(lo + tolerance, -r.reach), corner(hi - tolerance, -r.reach),
+                                    corner(hi - tolerance, r.reach), corner(lo + tolerance, r.reach)});
+  BgRegion inside;
+  boost::geometry::intersection(without(r.remaining, r.part), span, inside);
+  return inside;
+}
+
+// no-gouge: no move enters the finish shape grown by the allowances by more than the tolerance.
+class NoGougeOracle : public Oracle {
+ public:
+  std::string id() const override { return "no-gouge"; }
+  std::vector<std::string> rules() const override { return {"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD"}; }
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const JudgeInput& in = ctx.in;
+    const MaterialReplay* r = ctx.replay;
+    if (!r) return;
+    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+      const Crossing c = crossingOf(r->part, in.path.segment(i), tolerance(in), in.settings.chordTolerance);
+      if (c.length <= 0) continue;
+      std::ostringstream m;
+      m << "move " << i << " enters the part grown by the allowances over " << c.length << " mm";
+      Finding f = finding(*this, i, m.str());
+      for (const Segment& piece : c.pieces) f.witness.regions.push_back({piece.from, piece.to});
+      f.witness.segment = in.path.segment(i);
+      out.push_back(f);
+    }
+  }
+};
+
+// rapids-in-air: no rapid crosses material that is still there at that moment.
+class RapidsInAirOracle : public Oracle {
+ public:
+  std::string id() const override { return "rapids-in-air"; }
+  std::vector<std::string> rules() const override { return {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN"}; }
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const JudgeInput& in = ctx.in;
+    const MaterialReplay* r = ctx.replay;
+    if (!r) return;
+    for (std::size_t i = 0; i < r->rapidCrossings.size(); ++i) {
+      const Crossing& c = r->rapidCrossings[i];
+      if (c.length <= 0) continue;
+      std::ostringstream m;
+      m << "rapid move " << i << " crosses " << c.length << " mm of material still standing";
+      Finding f = finding(*this, i, m.str());
+      for (const Segment& piece : c.pieces) f.witness.regions.push_back({piece.from, piece.to});
+      f.witness.segment = in.path.segment(i);
+      out.push_back(f);
+    }
+  }
+};
+
+// complete: what remains beyond the target after the last move is no thicker than the rules allow:
+// Δd without the semi-finish pass, the tolerance with it (or after G70).
+class CompleteOracle : public Oracle {
+ public:
+  std::string id() const override { return "complete"; }
+  std::vector<std::string> rules() const override { return {"G71.T1.SEMIFIN", "G72.STEP7", "G71.T2.RETURN", "G71.T2.VALLEY"}; }
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const JudgeInput& in = ctx.in;
+    const MaterialReplay* r = ctx.replay;
+    if (!r) return;
+    const bool finished = r->cycle->semiFinish || in.program.hasFinishingCycle;
+    const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
+    const BgRegion left = leftover(*r, tolerance(in));
+    // Measured against a finely flattened profile: see kMeasuringChord in material_replay.cpp.
+    const auto thickest = thickestAbove(left, r->target, r->away, 1e-7);
+    if (!thickest || thickest->thickness <= allowed) return;
+    std::ostringstream m;
+    m << "after the last move " << thickest->thickness << " mm of material stand above the "
+      << (in.program.hasFinishingCycle ? "finish shape" : "rough profile") << " at (z " << thickest->where.z << ", x "
+      << thickest->where.x << "); at most " << allowed << " may remain";
+    Finding f = finding(*this, std::nullopt, m.str());
+    f.witness.regions = outlinesOf(left);
+    f.witness.point = thickest->where;
+    out.push_back(f);
+  }
+};
+
+// depth-per-pass: no feed removes a layer thicker than Δd (measured along the depth axis).
+class DepthPerPassOracle : public Oracle {
+ public:
+  std::string id() const override { return "depth-per-pass"; }
+  std::vector<std::string> rules() const override { return {"G71.OP", "G72.DD", "G71.DD.MODAL"}; }
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const JudgeInput& in = ctx.in;
+    const MaterialReplay* r = ctx.replay;
+    if (!r) return;
+    const double allowed = r->cycle->depthOfCut + tolerance(in);
+    for (std::size_t i = 0; i < r->removedThickness.size(); ++i) {
+      const auto& t = r->removedThickness[i];
+      if (!t || t->thickness <= allowed) continue;
+      std::ostringstream m;
+      m << "move " << i << " removes a layer " << t->thickness << " mm thick; Δd = " << r->cycle->depthOfCut;
+      Finding f = finding(*this, i, m.str());
+      f.witness.segment = in.path.segment(i);
+      f.witness.point = t->where;
+      out.push_back(f);
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Oracle> makeNoGougeOracle() { return std::make_unique<NoGougeOracle>(); }
+std::unique_ptr<Oracle> makeRapidsInAirOracle() { return std::make_unique<RapidsInAirOracle>(); }
+std::unique_ptr<Oracle> makeCompleteOracle() { return std::make_unique<CompleteOracle>(); }
+std::unique_ptr<Oracle> makeDepthPerPassOracle() { return std::make_unique<DepthPerPassOracle>(); }
+
+}  // namespace cyclecert

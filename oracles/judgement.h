@@ -1,0 +1,77 @@
+#pragma once
+// Engine-independent judgement of a toolpath (DESIGN.md "Oracles"): each oracle has an ID, serves
+// rule IDs and reports findings that name the move index and carry a witness to draw.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "oracles/cycle_spec.h"
+#include "reference/model/toolpath.h"
+
+namespace cyclecert {
+
+// The stock the cycle works on: a bar (diameter, length from a front face), an explicit polygon in
+// plane coordinates (z, x radius), or implied by the cycle (the region between the start point's
+// level and the shape over the shape's span).
+struct Stock {
+  enum Kind { Implied, Bar, Polygon } kind = Implied;
+  double diameter = 0, length = 0, frontZ = 0;  // Bar: x ∈ [0, diameter/2], z ∈ [frontZ − length, frontZ]
+  std::vector<Point> outline;                   // Polygon: closed, counter-clockwise or not
+};
+
+// Geometry a finding points at, for the plots: regions (the gouged part, the material a rapid
+// crossed, what remains), a segment, or a point.
+struct Witness {
+  std::vector<std::vector<Point>> regions;
+  std::optional<Segment> segment;
+  std::optional<Point> point;
+};
+
+struct Finding {
+  std::string oracle;               // "no-gouge", "rapids-in-air", …
+  std::vector<std::string> rules;   // the rule IDs the oracle serves
+  std::optional<std::size_t> move;  // index into the toolpath's moves
+  std::string message;
+  Witness witness;
+};
+
+struct JudgeSettings {
+  double epsilon = 1e-3;         // mm: what the oracles tolerate (the spec cases' tolerance)
+  double chordTolerance = 1e-3;  // mm: arcs are flattened within this
+  // What every verdict tolerates: epsilon plus twice the chord tolerance, since a measure between
+  // two flattened boundaries (a move and the material) can be off by the chord error of each.
+  double tolerance() const { return epsilon + 2 * chordTolerance; }
+};
+
+struct JudgeInput {
+  ProgramSpec program;
+  Stock stock;
+  Toolpath path;
+  JudgeSettings settings;
+};
+
+struct MaterialReplay;  // oracles/material_replay.h
+
+// What the oracles see: the input, and the material replay computed once for all of them (null
+// when the program is not one the geometric oracles judge).
+struct JudgeContext {
+  const JudgeInput& in;
+  const MaterialReplay* replay = nullptr;
+};
+
+class Oracle {
+ public:
+  virtual ~Oracle() = default;
+  virtual std::string id() const = 0;
+  virtual std::vector<std::string> rules() const = 0;
+  virtual void judge(const JudgeContext& ctx, std::vector<Finding>& findings) const = 0;
+};
+
+// Every oracle, in a stable order.
+const std::vector<std::unique_ptr<Oracle>>& allOracles();
+
+// Runs every oracle (or the one named) and returns the findings, oracle by oracle.
+std::vector<Finding> judge(const JudgeInput& in);
+
+}  // namespace cyclecert

@@ -1,0 +1,41 @@
+#pragma once
+// The cycle's frame as the material model sees it: a depth axis (along `away`, which points from the
+// part towards the cycle start side) and a cut axis perpendicular to it. G71 outer turning:
+// away = (0, +1); boring: (0, −1); G72 facing: (±1, 0).
+#include <cmath>
+#include <stdexcept>
+
+#include "reference/model/geometry.h"
+
+namespace cyclecert {
+
+class DepthFrame {
+ public:
+  // `away` need not be unit length; it is normalised. Throws std::invalid_argument when it is zero
+  // or not finite.
+  explicit DepthFrame(Point away) {
+    const double length = std::hypot(away.z, away.x);
+    if (!std::isfinite(length) || length <= kGeomEps) {
+      throw std::invalid_argument("the away direction must be a finite, non-zero vector");
+    }
+    away_ = (1.0 / length) * away;
+    along_ = {away_.x, -away_.z};  // `away` turned by −90°
+  }
+
+  Point away() const { return away_; }
+  Point along() const { return along_; }  // unit vector of the cut axis
+  // Coordinate along the depth axis, growing away from the part.
+  double depth(Point p) const { return p.z * away_.z + p.x * away_.x; }
+  // Coordinate along the cut axis.
+  double cut(Point p) const { return p.z * along_.z + p.x * along_.x; }
+  // The point with p's cut coordinate at the given depth.
+  Point atDepth(Point p, double depthCoordinate) const {
+    return p + (depthCoordinate - depth(p)) * away_;
+  }
+
+ private:
+  Point away_;
+  Point along_;
+};
+
+}  // namespace cyclecert

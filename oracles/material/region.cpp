@@ -1,0 +1,224 @@
+#include "oracles/material/region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "oracles/material/boost_geometry.h"
+
+namespace cyclecert {
+
+namespace bg = boost::geometry;
+
+namespace {
+
+using Ring = BgPolygon::ring_type;
+
+bool isFinite(Point p) { return std::isfinite(p.z) && std::isfinite(p.x); }
+
+void requireFinite(const Segment& s) {
+  if (!isFinite(s.from) || !isFinite(s.to) || (s.isArc() && !isFinite(s.center))) {
+    throw std::invalid_argument("cannot flatten a segment with non-finite coordinates");
+  }
+}
+
+// Largest angle a chord may span so that its sagitta r·(1 − cos(φ/2)) = 2r·sin²(φ/4) stays within
+// the tolerance (the sin² form keeps precision when tolerance ≪ r).
+double largestChordAngle(double radius, double chordTolerance) {
+  const double ratio = chordTolerance / (2 * radius);
+  return ratio >= 1 ? 2 * std::numbers::pi : 4 * std::asin(std::sqrt(ratio));
+}
+
+bool near(const BgPoint& a, const BgPoint& b) {
+  return std::abs(a.x() - b.x()) <= kTidyDistance && std::abs(a.y() - b.y()) <= kTidyDistance;
+}
+
+// Whether `b` adds nothing between `a` and `c`: it lies within kTidyDistance of the line a–c (a
+// collinear point, or the tip of a spike when a and c coincide).
+bool isFlat(const BgPoint& a, const BgPoint& b, const BgPoint& c) {
+  const double ux = c.x() - a.x(), uy = c.y() - a.y();
+  const double length = std::sqrt(ux * ux + uy * uy);
+  if (length <= kTidyDistance) return true;
+  const double cross = ux * (b.y() - a.y()) - uy * (b.x() - a.x());
+  return std::abs(cross) <= kTidyDistance * length;
+}
+
+// The ring's points (closing repetition excluded) with near-duplicates, collinear points and spikes
+// removed, also across the closing point.
+std::vector<BgPoint> tidyPoints(const std::vector<BgPoint>& points) {
+  std::vector<BgPoint> out;
+  out.reserve(points.size());
+  for (const BgPoint& p : points) {
+    while (true) {
+      if (!out.empty() && near(out.back(), p)) break;
+      if (out.size() >= 2 && isFlat(out[out.size() - 2], out.back(), p)) {
+        out.pop_back();
+        continue;
+      }
+      out.push_back(p);
+      break;
+    }
+  }
+  // The ring wraps around: the last point is followed by the first.
+  bool changed = true;
+  while (changed && out.size() >= 3) {
+    changed = false;
+    const std::size_t n = out.size();
+    if (near(out[n - 1], out[0]) || isFlat(out[n - 2], out[n - 1], out[0])) {
+      out.pop_back();
+      changed = true;
+    } else if (isFlat(out[n - 1], out[0], out[1])) {
+      out.erase(out.begin());
+      changed = true;
+    }
+  }
+  if (out.size() < 3) out.clear();
+  return out;
+}
+
+// Whether a ring is too thin to be material: 2·area / perimeter below `width`.
+bool isDust(const std::vector<BgPoint>& open, double width) {
+  double twiceArea = 0, perimeter = 0;
+  for (std::size_t i = 0; i < open.size(); ++i) {
+    const BgPoint& a = open[i];
+    const BgPoint& b = open[(i + 1) % open.size()];
+    twiceArea += a.x() * b.y() - b.x() * a.y();
+    perimeter += std::sqrt((b.x() - a.x()) * (b.x() - a.x()) + (b.y() - a.y()) * (b.y() - a.y()));
+  }
+  return std::abs(twiceArea) < width * perimeter;
+}
+
+double sizeOf(const bg::model::box<BgPoint>& box) {
+  return std::max(box.max_corner().x() - box.min_corner().x(),
+                  box.max_corner().y() - box.min_corner().y());
+}
+
+// Tidies a closed ring in place; leaves it empty when nothing of substance remains.
+void tidyRing(Ring& ring, double dust) {
+  std::vector<BgPoint> open(ring.begin(), ring.end());
+  if (open.size() >= 2 && bg::equals(open.front(), open.back())) open.pop_back();
+  open = tidyPoints(open);
+  ring.clear();
+  if (open.empty() || isDust(open, dust)) return;
+  ring.assign(open.begin(), open.end());
+  ring.push_back(open.front());
+}
+
+}  // namespace
+
+std::vector<Point> flatten(const Segment& s, double chordTolerance) {
+  requireFinite(s);
+  if (!(chordTolerance > 0) || !std::isfinite(chordTolerance)) {
+    throw std::invalid_argument("the chord tolerance must be a positive number");
+  }
+  const double radius = s.radius();
+  if (!s.isArc() || radius <= kGeomEps) return {s.from, s.to};
+  const double span = sweep(s);  // signed: negative for clockwise
+  const double chords = std::ceil(std::abs(span) / largestChordAngle(radius, chordTolerance));
+  if (chords > 1e6) {
+    throw std::invalid_argument("the chord tolerance is too small for an arc of radius " +
+                                std::to_string(radius));
+  }
+  const int n = std::max(1, static_cast<int>(chords));
+  const double start = std::atan2(s.from.x - s.center.x, s.from.z - s.center.z);
+  std::vector<Point> points;
+  points.reserve(n + 1);
+  points.push_back(s.from);
+  for (int k = 1; k < n; ++k) {
+    const double a = start + span * k / n;
+    points.push_back({s.center.z + radius * std::cos(a), s.center.x + radius * std::sin(a)});
+  }
+  points.push_back(s.to);
+  return points;
+}
+
+void appendFlattened(std::vector<Point>& points, const Segment& s, double chordTolerance) {
+  const std::vector<Point> more = flatten(s, chordTolerance);
+  const bool joins = !points.empty() && nearlyEqual(points.back(), more.front(), kTidyDistance);
+  points.insert(points.end(), more.begin() + (joins ? 1 : 0), more.end());
+}
+
+BgRegion regionFrom(const std::vector<Point>& outline) {
+  std::vector<BgPoint> points;
+  points.reserve(outline.size());
+  for (Point p : outline) {
+    if (!isFinite(p)) throw std::invalid_argument("an outline point is not finite");
+    points.push_back(toBg(p));
+  }
+  points = tidyPoints(points);
+  if (points.empty()) return {};
+  BgPolygon polygon;
+  polygon.outer().assign(points.begin(), points.end());
+  bg::correct(polygon);  // closes the ring and makes it clockwise
+  std::string reason;
+  if (!bg::is_valid(polygon, reason)) {
+    throw std::invalid_argument("the outline is not a simple polygon: " + reason);
+  }
+  if (isDust(points, kDustWidth)) return {};
+  return {polygon};
+}
+
+std::vector<std::vector<Point>> outlinesOf(const BgRegion& region) {
+  std::vector<std::vector<Point>> outlines;
+  auto add = [&outlines](const Ring& ring) {
+    std::vector<Point> points;
+    points.reserve(ring.size());
+    for (const BgPoint& p : ring) points.push_back(fromBg(p));
+    if (points.size() >= 2 && points.front() == points.back()) points.pop_back();
+    outlines.push_back(std::move(points));
+  };
+  for (const BgPolygon& polygon : region) {
+    add(polygon.outer());
+    for (const Ring& hole : polygon.inners()) add(hole);
+  }
+  return outlines;
+}
+
+BgRegion eroded(const BgRegion& region, double epsilon) {
+  BgRegion result;
+  if (!(epsilon > 0)) {
+    result = region;
+  } else if (!region.empty()) {
+    namespace strategy = bg::strategy::buffer;
+    const int pointsPerCircle = 72;
+    bg::buffer(region, result, strategy::distance_symmetric<double>(-epsilon),
+               strategy::side_straight(), strategy::join_round(pointsPerCircle),
+               strategy::end_round(pointsPerCircle), strategy::point_circle(pointsPerCircle));
+  }
+  tidy(result);
+  return result;
+}
+
+BgRegion without(const BgRegion& a, const BgRegion& b) {
+  if (a.empty() || b.empty()) return a;
+  using Box = bg::model::box<BgPoint>;
+  Box envelope = bg::return_envelope<Box>(a);
+  const Box envelopeB = bg::return_envelope<Box>(b);
+  if (bg::disjoint(envelope, envelopeB)) return a;
+  BgRegion result;
+  bg::difference(a, b, result);
+  bg::expand(envelope, envelopeB);
+  tidy(result, sizeOf(envelope));
+  return result;
+}
+
+void tidy(BgRegion& region, double operandSize) {
+  if (region.empty()) return;
+  if (operandSize <= 0) operandSize = sizeOf(bg::return_envelope<bg::model::box<BgPoint>>(region));
+  const double dust = std::max(kDustWidth, kBooleanResolution * operandSize);
+  for (BgPolygon& polygon : region) {
+    tidyRing(polygon.outer(), dust);
+    if (polygon.outer().empty()) continue;
+    for (Ring& hole : polygon.inners()) tidyRing(hole, dust);
+    auto& holes = polygon.inners();
+    holes.erase(std::remove_if(holes.begin(), holes.end(), [](const Ring& r) { return r.empty(); }),
+                holes.end());
+  }
+  region.erase(std::remove_if(region.begin(), region.end(),
+                              [](const BgPolygon& p) { return p.outer().empty(); }),
+               region.end());
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,81 @@
+#pragma once
+// Regions of the cycle plane on Boost.Geometry, and the conversions between them and cyclecert's
+// geometry: flattening arcs into chords, outlines to regions and back, erosion, difference.
+//
+// Conventions (used by every file of oracles/material):
+// - A BgPoint is (z, x): get<0> = z (along the spindle, drawn to the right), get<1> = x (radius,
+//   drawn up), so Boost's notion of clockwise is the plot's clockwise (Z right, X up), the same as
+//   ArcCW.
+// - Polygons are Boost's defaults: outer rings clockwise, holes counter-clockwise, closed (the first
+//   point repeated at the end). Every function here returns regions in that orientation.
+// - Arcs become chords between points on the arc, so a flattened arc lies on the arc's centre side,
+//   at most `chordTolerance` (the sagitta) from it; lines stay exact. A flattened figure is within
+//   chordTolerance of the true one (Hausdorff distance), so a distance measured between a flattened
+//   figure and an exact one is off by at most chordTolerance, and between two flattened figures by
+//   at most 2·chordTolerance (by chordTolerance only when both flatten arcs of the same circle, the
+//   usual case of a path following the profile). Verdicts add the tolerance to their ε.
+// - Boost's booleans (1.74) rescale their operands' common envelope onto 10⁷ integer steps to stay
+//   robust, so the points they create are exact to about envelope/10⁷ (6e-6 mm for a 60 mm
+//   envelope): slivers of that width appear where two figures share an edge. Verdicts need an ε well
+//   above it (the oracles' 1e-3 mm is); the model keeps its shadows short (1 mm past the material)
+//   so that the envelope stays the material's.
+// - Regions are kept tidy: consecutive points closer than kTidyDistance merged, points within
+//   kTidyDistance of the line through their neighbours (collinear points, spikes) dropped, and
+//   rings thinner (2·area / perimeter) than kDustWidth or than the booleans' resolution
+//   (kBooleanResolution × the region's size) dropped as noise.
+#include <boost/geometry/geometries/multi_polygon.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#include <vector>
+
+#include "reference/model/geometry.h"
+
+namespace cyclecert {
+
+using BgPoint = boost::geometry::model::d2::point_xy<double>;  // (z, x)
+using BgPolygon = boost::geometry::model::polygon<BgPoint>;     // clockwise outer ring, closed
+using BgRegion = boost::geometry::model::multi_polygon<BgPolygon>;
+
+inline constexpr double kTidyDistance = 1e-10;  // mm: closer points merge, flatter corners vanish
+inline constexpr double kDustWidth = 1e-9;      // mm: rings thinner than this are dropped
+inline constexpr double kBooleanResolution = 1e-7;  // of a region's size: thinner rings are noise
+
+inline BgPoint toBg(Point p) { return {p.z, p.x}; }
+inline Point fromBg(const BgPoint& p) { return {p.x(), p.y()}; }
+
+// The points of `s` from s.from to s.to (both exact): a line gives its two end points; an arc gives
+// the fewest equal chords whose sagitta r·(1 − cos(φ/2)) is ≤ chordTolerance (at least one chord),
+// every point on the arc. A degenerate arc (radius ≤ kGeomEps) gives {from, to}. An arc with
+// from == to and a radius is a full circle (geometry.h's convention). Throws std::invalid_argument
+// for non-finite coordinates, chordTolerance ≤ 0, or more than a million chords.
+std::vector<Point> flatten(const Segment& s, double chordTolerance);
+
+// Appends flatten(s) to `points`, without repeating a first point equal to the last one there.
+void appendFlattened(std::vector<Point>& points, const Segment& s, double chordTolerance);
+
+// The region enclosed by `outline` (closed implicitly; either orientation; repeated points and
+// collinear points allowed). An outline enclosing no area (fewer than three distinct points, all
+// collinear, or thinner than kDustWidth) gives the empty region. Throws std::invalid_argument with
+// Boost's reason when the outline crosses itself, and for non-finite coordinates.
+BgRegion regionFrom(const std::vector<Point>& outline);
+
+// Every ring of `region` as a list of points without the closing repetition: for each polygon its
+// outer ring (clockwise) then its holes (counter-clockwise). Draw with fill-rule evenodd.
+std::vector<std::vector<Point>> outlinesOf(const BgRegion& region);
+
+// `region` shrunk by `epsilon` (Minkowski erosion by a disk: boost::geometry::buffer with distance
+// −epsilon, round joins at concave corners approximated by 72 chords per circle): every point of
+// the result is at least ~epsilon inside `region`. Empty when nothing is left; `region` itself
+// (tidied) when epsilon ≤ 0.
+BgRegion eroded(const BgRegion& region, double epsilon);
+
+// a ∖ b, tidied (no dust where a and b share an edge).
+BgRegion without(const BgRegion& a, const BgRegion& b);
+
+// Merges near-duplicate points, drops collinear points, spikes and dust rings (see the top of this
+// file). Booleans on tidy regions stay small; every function here returns tidy regions.
+// `operandSize`: the size (largest side of the envelope) of the operands of the boolean that made
+// `region`, which sets the booleans' resolution; 0 takes the region's own size.
+void tidy(BgRegion& region, double operandSize = 0);
+
+}  // namespace cyclecert

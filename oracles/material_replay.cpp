@@ -1,0 +1,160 @@
+#include "oracles/material_replay.h"
+
+#include <algorithm>
+
+#include "oracles/material/boost_geometry.h"
+#include "reference/model/offset.h"
+#include <cmath>
+
+namespace cyclecert {
+
+// G71 steps along x, G72 along z; the shadow points back towards the start side.
+Point awayFrom(const CycleSpec& c) {
+  const int d = c.depthDirection();
+  return c.cutsAlongZ() ? Point{0, -static_cast<double>(d)} : Point{-static_cast<double>(d), 0};
+}
+
+BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance) {
+  if (profile.empty()) return {};
+  // The outline: the profile, then down to a bottom line `reach` beyond its deepest point, and back.
+  const DepthFrame frame(away);
+  std::vector<Point> outline;
+  double deepest = INFINITY;
+  for (const Segment& s : profile) {
+    appendFlattened(outline, s, chordTolerance);
+    for (Point p : {s.from, s.to}) deepest = std::min(deepest, frame.depth(p));
+  }
+  const double bottom = deepest - reach;
+  outline.push_back(frame.atDepth(profile.back().to, bottom));
+  outline.push_back(frame.atDepth(profile.front().from, bottom));
+  try {
+    return regionFrom(outline);
+  } catch (const std::invalid_argument&) {
+    return partRegion(profile, away, reach, chordTolerance);  // a profile crossing itself: the union of its chords' regions
+  }
+}
+
+BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
+  const DepthFrame frame(away);
+  const double level = frame.depth(c.start);
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Segment& s : c.shape) {
+    for (Point p : {s.from, s.to}) {
+      lo = std::min(lo, frame.cut(p));
+      hi = std::max(hi, frame.cut(p));
+    }
+  }
+  if (!(hi > lo)) return {};
+  const Point along{away.x, -away.z};
+  const Point unitAway = frame.away();
+  const auto corner = [&](double cut, double depth) { return cut * along + depth * unitAway; };
+  const BgRegion band = regionFrom({corner(lo, level), corner(hi, level), corner(hi, level - reach), corner(lo, level - reach)});
+  return without(band, partRegionOf(c.shape, away, reach, chordTolerance));
+}
+
+namespace {
+
+// Thickness is measured along the depth axis. Where an arc runs nearly parallel to that axis, a
+// chord error of δ becomes a depth error of δ / sin θ, so the profile a thickness is measured
+// against is flattened far finer than the material (whose vertices lie on the arcs exactly).
+constexpr double kMeasuringChord = 1e-7;
+
+BgRegion stockFor(const JudgeInput& in, const CycleSpec& c, Point away, double reach) {
+  switch (in.stock.kind) {
+    case Stock::Bar: return barStock(in.stock.diameter, in.stock.length, in.stock.frontZ);
+    case Stock::Polygon: return polygonStock(in.stock.outline);
+    case Stock::Implied: break;
+  }
+  return impliedStockOf(c, away, reach, in.settings.chordTolerance);
+}
+
+// A length that takes a shadow out of everything in the picture.
+double reachFor(const JudgeInput& in, const CycleSpec& c) {
+  double size = 10;
+  const auto grow = [&](Point p) { size = std::max({size, std::abs(p.z), std::abs(p.x)}); };
+  for (const Segment& s : c.shape) {
+    grow(s.from);
+    grow(s.to);
+  }
+  for (const Move& m : in.path.moves) grow(m.to);
+  for (Point p : in.stock.outline) grow(p);
+  grow({in.stock.frontZ, 0});
+  return 4 * (size + in.stock.diameter + in.stock.length) + 10;
+}
+
+// The tool point is a point: a feed into the material along the depth axis removes no area in the
+// model, but the tool has been there. Crossing pieces that lie on an earlier feed's path are the
+// slot the tool cut, not material.
+Crossing withoutOwnSlot(Crossing c, const Toolpath& path, std::size_t rapid, double tolerance) {
+  Crossing kept;
+  for (const Segment& piece : c.pieces) {
+    bool onFeed = false;
+    for (std::size_t j = 0; j < rapid && !onFeed; ++j) {
+      if (path.moves[j].kind != MoveKind::Feed) continue;
+      const Segment feed = path.segment(j);
+      onFeed = distanceToSegment(piece.from, feed) <= tolerance && distanceToSegment(piece.to, feed) <= tolerance;
+    }
+    if (!onFeed) {
+      kept.pieces.push_back(piece);
+      kept.length += piece.length();
+    }
+  }
+  return kept;
+}
+
+// The pieces of `region` within `tolerance` of the move.
+BgRegion touching(const BgRegion& region, const Segment& move, double tolerance) {
+  boost::geometry::model::linestring<BgPoint> line;
+  for (Point p : flatten(move, tolerance)) line.push_back(toBg(p));
+  BgRegion near;
+  for (const BgPolygon& piece : region) {
+    if (boost::geometry::distance(piece, line) <= tolerance) near.push_back(piece);
+  }
+  return near;
+}
+
+// A move along the finish shape (G70's finishing pass) removes the allowance, not a roughing layer.
+bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move) {
+  if (!in.program.hasFinishingCycle) return false;
+  const double tol = in.settings.tolerance();
+  return distanceToPath(pointAt(move, 0.5), c.shape) <= tol && distanceToPath(move.to, c.shape) <= tol &&
+         distanceToPath(move.from, c.shape) <= tol;
+}
+
+}  // namespace
+
+std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
+  const CycleSpec* c = in.program.singleRoughingCycle();
+  if (!c || in.path.alarm) return std::nullopt;
+  MaterialReplay r;
+  r.cycle = c;
+  r.away = awayFrom(*c);
+  r.reach = reachFor(in, *c);
+  r.stock = stockFor(in, *c, r.away, r.reach);
+  r.target = in.program.hasFinishingCycle ? c->shape : c->roughProfile();
+  // The part region starts after the head block for type I (its A'→B' is the side of the stock).
+  const std::vector<Segment> profile(r.target.begin() + (c->typeII ? 0 : 1), r.target.end());
+  r.part = partRegionOf(profile, r.away, r.reach, in.settings.chordTolerance);
+
+  MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
+  const double tolerance = in.settings.tolerance();
+  r.rapidCrossings.resize(in.path.moves.size());
+  r.removedThickness.resize(in.path.moves.size());
+  for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+    const Segment move = in.path.segment(i);
+    if (in.path.moves[i].kind == MoveKind::Rapid) {
+      r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
+    } else if (!onFinishShape(in, *c, move)) {
+      const BgRegion removed = model.removedBy(move);
+      // The layer is the removed material the move itself touches: material the shadow reaches
+      // beyond a part overhang (a shape turning back within 5145/5146) is not a layer of this pass.
+      const BgRegion layer = touching(removed, move, tolerance);
+      if (!layer.empty()) r.removedThickness[i] = thickestAbove(layer, {move}, r.away, kMeasuringChord);
+    }
+    model.apply(move, in.path.moves[i].kind);
+  }
+  r.remaining = model.remaining();
+  return r;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,43 @@
+#pragma once
+// One replay of a toolpath on the material model, shared by the geometric oracles (no-gouge,
+// rapids-in-air, complete, depth-per-pass): computed once per judgement.
+#include <optional>
+#include <vector>
+
+#include "oracles/judgement.h"
+#include "oracles/material/material.h"
+
+namespace cyclecert {
+
+struct MaterialReplay {
+  const CycleSpec* cycle = nullptr;  // the one roughing cycle judged
+  Point away;                        // from the part towards the start side, along the depth axis
+  double reach = 0;
+  BgRegion stock;
+  std::vector<Segment> target;       // the surface roughing must leave: the rough profile, or the
+                                     // finish shape when a G70 follows
+  BgRegion part;                     // everything beyond `target`: no move may enter it
+  std::vector<Crossing> rapidCrossings;                   // per move: material a rapid crosses (empty for feeds)
+  std::vector<std::optional<Thickest>> removedThickness;  // per move: thickness a feed removes (not on
+                                                          // the finish shape: G70 removes the allowance)
+  BgRegion remaining;                // after the last move
+};
+
+// The part (grown by the allowances, when `profile` is the rough profile): the region the profile
+// encloses with a bottom line `reach` beyond its deepest point. A profile that turns back a little
+// (within 5145/5146) keeps the undercut beneath its overhang outside the part.
+BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance);
+
+// The stock a cycle implies: between the start point's level and the finish shape over the shape's
+// span along the cut axis — built as that band minus the part region, so that a shape touching
+// the start level (a collar) splits it cleanly.
+BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance);
+
+// Direction from the part towards the cycle's start side along its depth axis.
+Point awayFrom(const CycleSpec& c);
+
+// Nothing when the program is not one the geometric oracles judge (not exactly one roughing cycle
+// the rules allow, or the engine alarmed). Throws std::invalid_argument for an unusable stock.
+std::optional<MaterialReplay> replayMaterial(const JudgeInput& in);
+
+}  // namespace cyclecert
