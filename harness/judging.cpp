@@ -86,7 +86,7 @@ PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, 
       plot.rough.segments.push_back(s.shifted(c.allowance));
     }
   }
-  if (const CycleSpec* c = in.program.singleRoughingCycle()) {
+  if (in.program.singleRoughingCycle()) {
     try {
       // The plot shows the stock the oracles used (a reach of 0 leaves the implied band at its shape).
       const auto replay = replayMaterial(in);

@@ -90,9 +90,9 @@ void readExpectation(const json& expect, SpecCase& c) {
 SpecCase parseSpecCase(const std::string& text, const std::string& file) {
   json j;
   try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw SpecError(file, "(document)", std::string("valid JSON: ") + e.what());
+    j = parseJsonDocument(text, file);
+  } catch (const ToolpathFormatError& e) {
+    throw std::runtime_error(e.what());
   }
   if (!j.is_object()) throw SpecError(file, "(document)", "a JSON object");
   SpecCase c;

@@ -247,6 +247,7 @@ class SpecReader {
     const char depthAbs = g71 ? axes.second : axes.first, depthInc = g71 ? axes.secondInc : axes.firstInc;
     const char cutAbs = g71 ? axes.first : axes.second, cutInc = g71 ? axes.firstInc : axes.secondInc;
     c.typeII = head.has(cutAbs) || head.has(cutInc);
+    c.headIsRapid = !head.hasG(10);
     for (std::size_t i = ns; i <= nf; ++i) {
       const Block& b = program_.blocks[i];
       if (auto bad = checkShapeCommands(b, profile_.toleratesTnrcInShape || params_.bit("NT1"))) {
@@ -269,6 +270,7 @@ class SpecReader {
     }
     if (c.shape.empty()) c.shape.push_back(Segment{SegmentKind::Line, c.start, c.start, {}, head.line});
     c.semiFinish = !params_.bit(c.typeII ? "RF2" : "RF1");
+    c.noRepeatedPath = params_.bit("NSP");
     compensate(c);
     if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_);
   }

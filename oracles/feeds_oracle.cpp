@@ -12,11 +12,32 @@ namespace {
 class FeedsOracle : public Oracle {
  public:
   std::string id() const override { return "feeds"; }
-  std::vector<std::string> rules() const override { return {"G71.FST", "G72.FST", "G70.EX"}; }
+  std::vector<std::string> rules() const override { return {"G71.FST", "G72.FST", "G70.EX", "G72.STEP2", "G71.HEAD.G0G1"}; }
+
+  // Rapids as rapids: the infeeds along the head block (at A' on the cut axis, towards the part)
+  // are rapids after a G00 head block and cutting feed after a G01 one (G72.STEP2, G71.HEAD.G0G1).
+  void judgeInfeeds(const JudgeInput& in, std::vector<Finding>& out) const {
+    const CycleSpec* c = in.program.singleRoughingCycle();
+    if (!c || (c->typeII && c->noRepeatedPath)) return;  // G71.NSP makes the second A'→B' a rapid
+    const double tol = in.settings.tolerance();
+    const Point aPrime = inFrame(*c, c->start + c->allowance);
+    const Point head = inFrame(*c, c->shape.front().to) - inFrame(*c, c->shape.front().from);
+    if (std::abs(head.z) > tol) return;  // a type II head block that is not along the depth axis
+    const int d = c->depthDirection();
+    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+      const Point from = inFrame(*c, in.path.from(i)), to = inFrame(*c, in.path.moves[i].to);
+      const bool infeed = std::abs(from.z - aPrime.z) <= tol && std::abs(to.z - aPrime.z) <= tol && d * (to.x - from.x) > tol;
+      if (!infeed || (in.path.moves[i].kind == MoveKind::Rapid) == c->headIsRapid) continue;
+      out.push_back(finding(*this, i, std::string("an infeed along the head block is a ") +
+                                          (c->headIsRapid ? "cutting feed, but block ns is G00: it must be a rapid"
+                                                          : "rapid, but block ns is G01: it must be at the cutting feed")));
+    }
+  }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     if (in.path.alarm || in.program.cycles.empty()) return;
+    judgeInfeeds(in, out);
     std::vector<double> allowed;
     for (const CycleSpec& c : in.program.cycles) allowed.push_back(c.feed);
     if (in.program.hasFinishingCycle) allowed.insert(allowed.end(), in.program.finishingFeeds.begin(), in.program.finishingFeeds.end());

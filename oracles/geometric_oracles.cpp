@@ -9,6 +9,7 @@
 
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
+#include "reference/model/offset.h"
 
 namespace cyclecert {
 
@@ -97,8 +98,12 @@ class CompleteOracle : public Oracle {
     const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
     const BgRegion left = leftover(*r, tolerance(in));
     // Measured against a finely flattened profile: see kMeasuringChord in material_replay.cpp.
-    const auto thickest = thickestAbove(left, r->target, r->away, 1e-7);
+    auto thickest = thickestAbove(left, r->target, r->away, 1e-7);
     if (!thickest || thickest->thickness <= allowed) return;
+    // A skin narrower than the tolerance along the cut axis is not material left.
+    const auto solid = thickestAbove(withoutSkins(left, r->away, tolerance(in)), r->target, r->away, 1e-7);
+    if (!solid || solid->thickness <= allowed) return;
+    thickest = solid;
     std::ostringstream m;
     m << "after the last move " << thickest->thickness << " mm of material stand above the "
       << (in.program.hasFinishingCycle ? "finish shape" : "rough profile") << " at (z " << thickest->where.z << ", x "
@@ -133,8 +138,47 @@ class DepthPerPassOracle : public Oracle {
   }
 };
 
+// pass-levels: type I passes stand a whole number of Δd below A' (G72.STEP2, G72.STEP6): an extra,
+// missing-depth or misplaced pass is a pass the documented steps do not make.
+class PassLevelsOracle : public Oracle {
+ public:
+  std::string id() const override { return "pass-levels"; }
+  std::vector<std::string> rules() const override { return {"G72.STEP2", "G72.STEP6", "G71.T1.STEP6", "G71.OP"}; }
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const CycleSpec* c = ctx.replay ? ctx.replay->cycle : nullptr;
+    if (c && !c->typeII) judgePassLevels(ctx.in, *c, out);
+  }
+
+ private:
+  // Type I passes stand Δd apart from A' (G72.STEP2, G72.STEP6): a pass at a level that is not a
+  // whole number of Δd below A' is a pass the steps do not make (an extra or misplaced one).
+  void judgePassLevels(const JudgeInput& in, const CycleSpec& c, std::vector<Finding>& out) const {
+    const double tol = tolerance(in);
+    const Point aPrime = inFrame(c, c.start + c.allowance);
+    const std::vector<Segment> rough = c.roughProfile();
+    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+      const Move& m = in.path.moves[i];
+      const Point from = inFrame(c, in.path.from(i)), to = inFrame(c, m.to);
+      const bool cut = m.kind == MoveKind::Feed && m.shape == SegmentKind::Line && std::abs(to.x - from.x) <= tol &&
+                       c.cutDirection() * (to.z - from.z) > tol;
+      const Point mid = 0.5 * (in.path.from(i) + m.to);
+      // The semi-finish runs on the rough profile, G70 on the finish shape: neither is a roughing pass.
+      if (!cut || distanceToPath(mid, rough) <= tol || (in.program.hasFinishingCycle && distanceToPath(mid, c.shape) <= tol)) continue;
+      const double depth = c.depthDirection() * (to.x - aPrime.x);
+      const double k = std::round(depth / c.depthOfCut);
+      if (k >= 1 && std::abs(depth - k * c.depthOfCut) <= tol) continue;
+      std::ostringstream s;
+      s << "pass at move " << i << " stands " << depth << " below A', not a whole number of Δd = " << c.depthOfCut;
+      Finding f = finding(*this, i, s.str());
+      f.witness.segment = in.path.segment(i);
+      out.push_back(f);
+    }
+  }
+};
+
 }  // namespace
 
+std::unique_ptr<Oracle> makePassLevelsOracle() { return std::make_unique<PassLevelsOracle>(); }
 std::unique_ptr<Oracle> makeNoGougeOracle() { return std::make_unique<NoGougeOracle>(); }
 std::unique_ptr<Oracle> makeRapidsInAirOracle() { return std::make_unique<RapidsInAirOracle>(); }
 std::unique_ptr<Oracle> makeCompleteOracle() { return std::make_unique<CompleteOracle>(); }

@@ -14,6 +14,21 @@ Point awayFrom(const CycleSpec& c) {
   return c.cutsAlongZ() ? Point{0, -static_cast<double>(d)} : Point{-static_cast<double>(d), 0};
 }
 
+BgRegion withoutSkins(const BgRegion& region, Point away, double width) {
+  const DepthFrame frame(away);
+  const Point along{frame.away().x, -frame.away().z};
+  const auto shifted = [&](double by) {
+    BgRegion moved;
+    boost::geometry::strategy::transform::translate_transformer<double, 2, 2> shift(by * along.z, by * along.x);
+    boost::geometry::transform(region, moved, shift);
+    return moved;
+  };
+  BgRegion once, twice;
+  boost::geometry::intersection(region, shifted(width), once);
+  boost::geometry::intersection(once, shifted(-width), twice);
+  return twice;
+}
+
 BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance) {
   if (profile.empty()) return {};
   // The outline: the profile, then down to a bottom line `reach` beyond its deepest point, and back.
@@ -108,7 +123,10 @@ BgRegion touching(const BgRegion& region, const Segment& move, double tolerance)
   for (Point p : flatten(move, tolerance)) line.push_back(toBg(p));
   BgRegion near;
   for (const BgPolygon& piece : region) {
-    if (boost::geometry::distance(piece, line) <= tolerance) near.push_back(piece);
+    // Zero-area slivers along an edge are not material (they come from touching boundaries).
+    if (boost::geometry::area(piece) > tolerance * tolerance && boost::geometry::distance(piece, line) <= tolerance) {
+      near.push_back(piece);
+    }
   }
   return near;
 }
@@ -149,7 +167,13 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
       // The layer is the removed material the move itself touches: material the shadow reaches
       // beyond a part overhang (a shape turning back within 5145/5146) is not a layer of this pass.
       const BgRegion layer = touching(removed, move, tolerance);
-      if (!layer.empty()) r.removedThickness[i] = thickestAbove(layer, {move}, r.away, kMeasuringChord);
+      if (!layer.empty()) {
+        r.removedThickness[i] = thickestAbove(layer, {move}, r.away, kMeasuringChord);
+        // A skin narrower than the tolerance along the cut axis is not a layer: measure without it.
+        if (r.removedThickness[i] && r.removedThickness[i]->thickness > c->depthOfCut + tolerance) {
+          r.removedThickness[i] = thickestAbove(withoutSkins(layer, r.away, tolerance), {move}, r.away, kMeasuringChord);
+        }
+      }
     }
     model.apply(move, in.path.moves[i].kind);
   }

@@ -33,6 +33,11 @@ BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double re
 // the start level (a collar) splits it cleanly.
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance);
 
+// The region without its skins: what remains when it is shifted by ± `width` along the cut axis
+// (perpendicular to `away`) and intersected with itself — slivers narrower than 2·width along the
+// cut axis disappear, layers that are thin along the depth axis but wide stay.
+BgRegion withoutSkins(const BgRegion& region, Point away, double width);
+
 // Direction from the part towards the cycle's start side along its depth axis.
 Point awayFrom(const CycleSpec& c);
 

@@ -15,6 +15,7 @@ std::unique_ptr<Oracle> makeNoGougeOracle();
 std::unique_ptr<Oracle> makeRapidsInAirOracle();
 std::unique_ptr<Oracle> makeCompleteOracle();
 std::unique_ptr<Oracle> makeDepthPerPassOracle();
+std::unique_ptr<Oracle> makePassLevelsOracle();
 
 std::vector<std::unique_ptr<Oracle>> makeOracles();
 

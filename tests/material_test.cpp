@@ -68,12 +68,12 @@ TEST(Material, FlattenKeepsEverySagittaWithinTheTolerance) {
 
 TEST(Material, FlattenFollowsTheArcDirection) {
   // G02 from (−20, 5) to (−25, 10) about (−20, 10): clockwise from angle −90° through −135° to
-  // −180°, so its middle point is (−20 − 5/√2, 10 − 5/√2) = (−23.5355, 6.4645).
+  // −180°. r = 5, tol 0.001: φ ≤ 4·asin(0.01) = 0.0400007, (π/2)/0.0400007 = 39.27 → 40 chords; the
+  // middle point (the 20th) is at −135°: (−20 − 5/√2, 10 − 5/√2) = (−23.5355, 6.4645).
   const auto points = flatten(arc(SegmentKind::ArcCW, {-20, 5}, {-25, 10}, {-20, 10}), 0.001);
-  ASSERT_EQ(points.size() % 2, 1u);  // r = 5, tol 0.001: 40 chords (see ImpliedStockOfAShape…)
-  const Point middle = points[points.size() / 2];
-  EXPECT_NEAR(middle.z, -23.535534, 1e-6);
-  EXPECT_NEAR(middle.x, 6.464466, 1e-6);
+  ASSERT_EQ(points.size(), 41u);
+  EXPECT_NEAR(points[20].z, -23.535534, 1e-6);
+  EXPECT_NEAR(points[20].x, 6.464466, 1e-6);
 }
 
 TEST(Material, FlattenCopesWithDegenerateArcs) {
@@ -238,10 +238,10 @@ TEST(Material, ImpliedStockOfATypeIG71Shape) {
 
 TEST(Material, ImpliedStockOfAShapeWithAnArc) {
   // As kG71Shape but a convex quarter round (−10, 10) → (−15, 15) about (−15, 10) (G03, r = 5)
-  // and a flat (−15, 15) → (−30, 15). r = 5, tol 0.001: φ ≤ 4·asin(0.01) = 0.0400007,
-  // (π/2)/0.0400007 = 39.27 → 40 chords. The part under the round is their fan from the centre,
-  // 40 · r²/2 · sin(π/80) = 19.629908 (the true quarter disk: 19.634954; the chords lie inside the
-  // arc, so the stock is larger by 0.005 ≤ arc length 7.85 × tol). Stock = 320 − 75 − 19.629908.
+  // and a flat (−15, 15) → (−30, 15). r = 5, tol 0.001: 40 chords of π/80 (FlattenFollows…). The
+  // part under the round is their fan from the centre, 40 · r²/2 · sin(π/80) = 19.629908 (the
+  // quarter disk: 19.634954; the chords lie inside the arc, so the stock is larger by 0.005 ≤ the
+  // round's length 7.854 × tol). Stock = 320 − 75 − 19.629908 = 225.370092.
   const std::vector<Segment> shape = {line({2, 20}, {2, 10}), line({2, 10}, {-10, 10}),
                                       arc(SegmentKind::ArcCCW, {-10, 10}, {-15, 15}, {-15, 10}),
                                       line({-15, 15}, {-30, 15})};
@@ -271,9 +271,10 @@ TEST(Material, PartRegionAndItsErosion) {
   const BgRegion part = partRegion(kRough, kOuter, 5, 0.001);
   EXPECT_NEAR(areaOf(part), 235, 1e-9);
   // Perimeter P = 12 + √125 + 10 + 10 + 32 + 5 = 80.180340. Eroding by ε = 0.1 leaves
-  // A − Pε + ε²(Σ cot(θ/2) over convex corners − Σ α/2 over reflex ones): four right angles (1 each),
-  // 153.43° at (−20, 15.5) (cot 76.72° = √5 − 2 = 0.236068), and the reflex corner at (−10, 10.5)
-  // turning by α = atan(1/2) = 0.463648: 235 − 8.018034 + 0.01 · (4.236068 − 0.231824) = 227.022008.
+  // A − Pε + ε²(Σ cot(θ/2) over convex corners − Σ α/2 over reflex ones): four right angles
+  // (1 each), 153.43° at (−20, 15.5) (cot 76.72° = √5 − 2 = 0.236068), and the reflex corner at
+  // (−10, 10.5) turning by α = atan(1/2) = 0.463648:
+  // 235 − 8.018034 + 0.01 · (4.236068 − 0.231824) = 227.022008.
   const BgRegion core = eroded(part, 0.1);
   EXPECT_NEAR(areaOf(core), 227.022008, 1e-4);
   EXPECT_FALSE(inside(core, {-5, 10.45}));  // 0.05 below the profile: within ε
@@ -292,12 +293,17 @@ TEST(Material, ThickestAboveASingleLeftoverStep) {
   // What a pass at x = 15.5 (to z = −20) and one at x = 13 (to z = −15) leave above the taper of
   // kRough between them: the triangle (−15, 13), (−15, 15.5), (−20, 15.5). Its top right corner
   // stands 15.5 − 13 = 2.5 above the taper (x = 13 at z = −15); the other corners lie on it.
+  // thickestAbove takes the profile beneath a point at its highest within ± w = 2·tol (+ 2e-6,
+  // the resolution for a region of size 5), and the taper rises 0.5 per mm away from the corner:
+  // 2.5 − 0.5 · 0.002 = 2.499, measured against the taper at z = −15.002.
   const BgRegion step = regionFrom({{-15, 13}, {-15, 15.5}, {-20, 15.5}});
   const auto t = thickestAbove(step, kRough, kOuter, 0.001);
   ASSERT_TRUE(t);
-  EXPECT_NEAR(t->thickness, 2.5, 1e-12);
+  EXPECT_NEAR(t->thickness, 2.499, 1e-5);
   EXPECT_EQ(t->where, (Point{-15, 15.5}));
-  EXPECT_NEAR(t->beneath.x, 13, 1e-12);
+  EXPECT_NEAR(t->beneath.x, 13.001, 1e-5);
+  // With a finer tolerance the window, and the difference, shrink: 2.5 − 0.5 · 2e-6.
+  EXPECT_NEAR(thickestAbove(step, kRough, kOuter, 1e-6)->thickness, 2.5, 1e-5);
 }
 
 TEST(Material, ThickestAboveReplayedPassesIsTheDepthOfCut) {
@@ -323,25 +329,27 @@ TEST(Material, ThicknessBesideAShoulderIsMeasuredFromTheStepBelow) {
                                         line({-10, 15}, {-20, 15})};
   // A wedge left against the shoulder on the low step: its corner (−10, 12) is 2 above x = 10
   // (the shoulder wall is not "beneath" it).
-  const auto wedge = thickestAbove(regionFrom({{-10, 10}, {-10, 12}, {-7, 10}}), profile, kOuter, 1);
+  const BgRegion wedgeRegion = regionFrom({{-10, 10}, {-10, 12}, {-7, 10}});
+  const auto wedge = thickestAbove(wedgeRegion, profile, kOuter, 0.001);
   ASSERT_TRUE(wedge);
   EXPECT_NEAR(wedge->thickness, 2, 1e-12);
   EXPECT_EQ(wedge->where, (Point{-10, 12}));
   // A block on the high step against the shoulder's top: 1 above x = 15, not 6 above x = 10.
-  const auto block =
-      thickestAbove(regionFrom({{-12, 15}, {-12, 16}, {-10, 16}, {-10, 15}}), profile, kOuter, 1);
+  const BgRegion blockRegion = regionFrom({{-12, 15}, {-12, 16}, {-10, 16}, {-10, 15}});
+  const auto block = thickestAbove(blockRegion, profile, kOuter, 0.001);
   ASSERT_TRUE(block);
   EXPECT_NEAR(block->thickness, 1, 1e-12);
 }
 
 TEST(Material, ThicknessOverANotchIsMeasuredAtItsBottom) {
   // A V notch (0, 10) → (−5, 8) → (−10, 10) under a layer up to x = 11: 11 − 8 = 3 at z = −5,
-  // although every vertex of the layer is only 1 above the profile.
+  // although every vertex of the layer is only 1 above the profile. (Less the window allowance:
+  // slope 0.4 × w = 0.002 + 4e-6: 2.9992.)
   const std::vector<Segment> profile = {line({0, 10}, {-5, 8}), line({-5, 8}, {-10, 10})};
   const BgRegion layer = regionFrom({{0, 10}, {-5, 8}, {-10, 10}, {-10, 11}, {0, 11}});
-  const auto t = thickestAbove(layer, profile, kOuter, 1);
+  const auto t = thickestAbove(layer, profile, kOuter, 0.001);
   ASSERT_TRUE(t);
-  EXPECT_NEAR(t->thickness, 3, 1e-12);
+  EXPECT_NEAR(t->thickness, 2.9992, 1e-5);
   EXPECT_NEAR(t->where.z, -5, 1e-12);
   EXPECT_NEAR(t->where.x, 11, 1e-12);
 }
@@ -383,6 +391,56 @@ TEST(Material, TypeIPassesAndSemiFinishLeaveOnlyTheAllowance) {
   EXPECT_NEAR(model.area(), 16, 1e-9);
   const BgRegion beyond = without(model.remaining(), partRegion(kRough, kOuter, 50, 0.001));
   const auto t = thickestAbove(beyond, kRough, kOuter, 0.001);
+  EXPECT_LE(t ? t->thickness : 0.0, 1e-6);
+  // The same measured on what remains, without subtracting the part region first.
+  const auto direct = thickestAbove(model.remaining(), kRough, kOuter, 0.001);
+  EXPECT_LE(direct ? direct->thickness : 0.0, 1e-6);
+}
+
+TEST(Material, TypeIAlongAFilletLeavesOnlyTheAllowance) {
+  // As above with a concave fillet: B = (2, 10), (−5, 10), G02 to (−10, 15) about (−5, 15), then
+  // C = (−30, 15). Rough profile (Δu/2 = 0.5): the fillet about (−5, 15.5) from (−5, 10.5) to
+  // (−10, 15.5), where its tangent is parallel to x. Levels 18, 15.5, 13: 18 is never reached (cut
+  // to −30); 15.5 first at the fillet's end (−10, 15.5); 13 on the fillet where
+  // 15.5 − √(25 − (z + 5)²) = 13: z = −5 − √18.75 = −9.330127. The fillet is flattened alike in
+  // the stock, the semi-finish pass and the rough profile (the same arc, translated), so what
+  // remains is the band 0.5 thick along x: 32 × 0.5 = 16 again, and nothing stands above the rough
+  // profile.
+  const std::vector<Segment> shape = {line({2, 20}, {2, 10}), line({2, 10}, {-5, 10}),
+                                      arc(SegmentKind::ArcCW, {-5, 10}, {-10, 15}, {-5, 15}),
+                                      line({-10, 15}, {-30, 15})};
+  const std::vector<Segment> rough = {line({2, 10.5}, {-5, 10.5}),
+                                      arc(SegmentKind::ArcCW, {-5, 10.5}, {-10, 15.5}, {-5, 15.5}),
+                                      line({-10, 15.5}, {-30, 15.5})};
+  const double z13 = -5 - std::sqrt(18.75);
+  struct Step { MoveKind kind; Segment move; };
+  const std::vector<Step> path = {
+      {MoveKind::Rapid, line({2, 20}, {2, 20.5})},
+      {MoveKind::Rapid, line({2, 20.5}, {2, 18})},
+      {MoveKind::Feed, line({2, 18}, {-30, 18})},
+      {MoveKind::Feed, line({-30, 18}, {-29.5, 18.5})},
+      {MoveKind::Rapid, line({-29.5, 18.5}, {2, 18.5})},
+      {MoveKind::Rapid, line({2, 18.5}, {2, 15.5})},
+      {MoveKind::Feed, line({2, 15.5}, {-10, 15.5})},
+      {MoveKind::Feed, line({-10, 15.5}, {-9.5, 16})},
+      {MoveKind::Rapid, line({-9.5, 16}, {2, 16})},
+      {MoveKind::Rapid, line({2, 16}, {2, 13})},
+      {MoveKind::Feed, line({2, 13}, {z13, 13})},
+      {MoveKind::Feed, line({z13, 13}, {z13 + 0.5, 13.5})},
+      {MoveKind::Rapid, line({z13 + 0.5, 13.5}, {2, 13.5})},
+      {MoveKind::Rapid, line({2, 13.5}, {2, 10.5})},
+      {MoveKind::Feed, rough[0]},                     {MoveKind::Feed, rough[1]},
+      {MoveKind::Feed, rough[2]},
+      {MoveKind::Rapid, line({-30, 15.5}, {-30, 20})}, {MoveKind::Rapid, line({-30, 20}, {2, 20})}};
+  MaterialModel model(impliedStock(shape, kOuter, 0.001), kOuter, 50, 0.001);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i].kind == MoveKind::Rapid) {
+      EXPECT_EQ(model.crossing(path[i].move, 1e-3 + 0.001).length, 0) << "move " << i;
+    }
+    model.apply(path[i].move, path[i].kind);
+  }
+  EXPECT_NEAR(model.area(), 16, 1e-6);
+  const auto t = thickestAbove(model.remaining(), rough, kOuter, 0.001);
   EXPECT_LE(t ? t->thickness : 0.0, 1e-6);
 }
 

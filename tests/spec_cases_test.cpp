@@ -76,7 +76,9 @@ TEST(SpecCaseErrors, NameTheFileAndTheField) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message("{").find("bad.json: (document): expected valid JSON"), std::string::npos);
+  EXPECT_NE(message("{").find("bad.json:1:2: (document): expected valid JSON"), std::string::npos);
+  EXPECT_NE(message(R"({"id": "a", "program": NaN})").find("bad.json:1:24: /program: expected valid JSON"), std::string::npos)
+      << message(R"({"id": "a", "program": NaN})");
   EXPECT_NE(message("[]").find("expected a JSON object"), std::string::npos);
   const std::string base = R"({"id": "a/b/c", "title": "t", "profile": "gsk", "rules": ["G72.FMT"], "program": "G0 X1;", "derivation": "by hand from the steps")";
   EXPECT_NE(message(base + "}").find("bad.json: /expect: expected a value (field missing)"), std::string::npos);

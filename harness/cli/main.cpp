@@ -346,6 +346,9 @@ int commandJudge(const std::vector<std::string>& args) {
   }
   // A lone JSON argument with --reference is the case.
   if (reference && casePath.empty() && programPath.empty()) std::swap(casePath, toolpathPath);
+  if (casePath.empty() && programPath.empty() && !toolpathPath.empty() && !reference) {
+    throw UsageError("give the toolpath to judge after the case (CASE.json TOOLPATH.json), or --reference");
+  }
   if (casePath.empty() == programPath.empty()) throw UsageError("give a CASE.json or --program FILE.nc");
   if (reference == !toolpathPath.empty()) throw UsageError("give a TOOLPATH.json, or --reference");
 
@@ -371,18 +374,14 @@ int commandJudge(const std::vector<std::string>& args) {
     path = planWithReference(request.program);
   } else {
     const std::string text = toolpathPath == "-" ? std::string(std::istreambuf_iterator<char>(std::cin), {}) : readFile(toolpathPath);
-    nlohmann::json j;
     try {
-      j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw UsageError(toolpathPath + ": expected a toolpath JSON document: " + e.what());
-    }
-    try {
+      const nlohmann::json j = parseJsonDocument(text, toolpathPath);
       path = toolpathFromJson(j);
+      if (!j.contains("start")) path.start = {};
     } catch (const ToolpathFormatError& e) {
-      throw UsageError(toolpathPath + ": " + e.what());
+      const std::string what = e.what();
+      throw UsageError("expected a toolpath JSON document: " + (what.rfind(toolpathPath, 0) == 0 ? what : toolpathPath + ": " + what));
     }
-    if (!j.contains("start")) path.start = {};
   }
   JudgeInput in = judgeInputFor(request, path);
   if (!reference && !in.program.cycles.empty() && path.start == Point{}) in.path.start = in.program.cycles.front().start;

@@ -1,6 +1,6 @@
 #pragma once
-// The cycle's frame as the material model sees it: a depth axis (along `away`, which points from the
-// part towards the cycle start side) and a cut axis perpendicular to it. G71 outer turning:
+// The cycle's frame as the material model sees it: a depth axis (along `away`, which points from
+// the part towards the cycle start side) and a cut axis perpendicular to it. G71 outer turning:
 // away = (0, +1); boring: (0, −1); G72 facing: (±1, 0).
 #include <cmath>
 #include <stdexcept>

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "oracles/material/boost_geometry.h"
@@ -19,6 +20,7 @@ using Box = bg::model::box<BgPoint>;
 using Interval = std::pair<double, double>;
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
+constexpr double kShadowMargin = 1.0;  // mm: how far a model's shadows reach past the material
 
 double normalizedAngle(double a) {
   a = std::fmod(a, kTwoPi);
@@ -64,7 +66,8 @@ std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame
 }
 
 // One piece of a move's shadow: a path that is a graph over the cut axis (a line, or a flattened
-// sub-arc), and the region its rays sweep — the path, then the path moved by reach·away walked back.
+// sub-arc), and the region its rays sweep — the path, then the path moved by reach·away walked
+// back.
 struct ShadowPiece {
   std::vector<Point> path;
   double reach = 0;
@@ -89,8 +92,9 @@ std::optional<ShadowPiece> shadowOfGraph(std::vector<Point> path, const DepthFra
 }
 
 // The shadow's pieces, one per graph-shaped part of the move. Rays end `reach` beyond the move, or
-// 1 mm beyond `farDepth` when that is nearer: past the material's far side there is nothing to
-// remove, and shorter shadows keep small the envelope Boost's rescaling divides (region.h).
+// kShadowMargin beyond `farDepth` when that is nearer: past the material's far side there is
+// nothing to remove, and shorter shadows keep small the envelope Boost's rescaling divides
+// (region.h).
 std::vector<ShadowPiece> shadowPieces(const Segment& move, const DepthFrame& frame, double reach,
                                       double chordTolerance,
                                       double farDepth = std::numeric_limits<double>::infinity()) {
@@ -99,7 +103,7 @@ std::vector<ShadowPiece> shadowPieces(const Segment& move, const DepthFrame& fra
     std::vector<Point> path = flatten(part, chordTolerance);
     double nearest = frame.depth(path.front());
     for (Point p : path) nearest = std::min(nearest, frame.depth(p));
-    const double needed = std::min(reach, farDepth + 1.0 - nearest);
+    const double needed = std::min(reach, farDepth + kShadowMargin - nearest);
     if (auto piece = shadowOfGraph(std::move(path), frame, needed)) {
       pieces.push_back(std::move(*piece));
     }
@@ -238,7 +242,8 @@ void addChordCrossing(const BgRegion& region, const Box& envelope, const Chord& 
   forEachEdge(region, [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
   for (const Interval& gap : gapsBetween(near)) {
     if (bg::within(toBg(chord.at(0.5 * (gap.first + gap.second))), region)) {
-      crossing.pieces.push_back({SegmentKind::Line, chord.at(gap.first), chord.at(gap.second), {}, 0});
+      const Segment piece{SegmentKind::Line, chord.at(gap.first), chord.at(gap.second), {}, 0};
+      crossing.pieces.push_back(piece);
       crossing.length += (gap.second - gap.first) * chord.length;
     }
   }
@@ -284,6 +289,9 @@ Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
 
 MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance)
     : remaining_(std::move(stock)), frame_(away), reach_(reach), chordTolerance_(chordTolerance) {
+  if (!(reach > 0) || !(chordTolerance > 0)) {
+    throw std::invalid_argument("the material model needs a positive reach and chord tolerance");
+  }
   updateEnvelope();
 }
 
@@ -299,7 +307,8 @@ double MaterialModel::farDepth() const {
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || remaining_.empty()) return;
   bool changed = false;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth())) {
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
+                                                farDepth())) {
     if (bg::disjoint(bg::return_envelope<Box>(shadow.polygon), envelope_)) continue;
     if (shadow.path.size() == 2 &&
         !lineShadowMeets(shadow.path[0], shadow.path[1], frame_, shadow.reach, remaining_)) {
@@ -325,12 +334,15 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   std::vector<BgPolygon> parts;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth())) {
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
+                                                farDepth())) {
     BgRegion part;
     bg::intersection(remaining_, shadow.polygon, part);
     for (BgPolygon& p : part) parts.push_back(std::move(p));
   }
-  return unionOf(parts);
+  BgRegion removed = unionOf(parts);
+  tidy(removed);
+  return removed;
 }
 
 }  // namespace cyclecert

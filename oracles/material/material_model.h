@@ -1,8 +1,8 @@
 #pragma once
 // The material model: the stock minus what the tool has removed so far, replayed move by move.
-// A feed removes its shadow — the region the ray from the tool point along `away` (towards the cycle
-// start side, away from the part) sweeps over `reach` mm as the tool point moves; a rapid removes
-// nothing (a rapid through material is a crash, which `crossing` measures, not a cut).
+// A feed removes its shadow — the region the ray from the tool point along `away` (towards the
+// cycle start side, away from the part) sweeps over `reach` mm as the tool point moves; a rapid
+// removes nothing (a rapid through material is a crash, which `crossing` measures, not a cut).
 #include <vector>
 
 #include <boost/geometry/geometries/box.hpp>
@@ -30,16 +30,23 @@ struct Crossing {
 // computed exactly rather than through a buffer — so that touching or grazing the region within
 // epsilon does not count. epsilon below kTidyDistance counts as kTidyDistance. Serves both the
 // rapids-in-air oracle (region = the material left) and no-gouge (region = partRegion).
+// Distances here are Euclidean, so flattening errs by at most chordTolerance per flattened figure
+// (region.h): pass ε + chordTolerance when only one of region and move has arcs (a rapid, a line,
+// against the material), ε + 2·chordTolerance when both may. Cost: O(flattened chords × region
+// edges) plain arithmetic, no Boost boolean.
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance);
 
 class MaterialModel {
  public:
   // `stock` is taken as it is (a region from stock.h); `away` as in DepthFrame; `reach` should
-  // exceed the stock's size along the depth axis so that a shadow leaves the stock.
+  // exceed the stock's size along the depth axis so that a shadow leaves the stock (the model cuts
+  // its shadows 1 mm past the material's far side anyway). Throws std::invalid_argument for a zero
+  // `away`, or a reach or chord tolerance that is not positive.
   MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance);
 
-  // Feeds remove their shadow; rapids remove nothing.
+  // Feeds remove their shadow; rapids remove nothing. A line whose shadow misses the material's
+  // interior (retracts, moves over ground already cut) costs no Boost boolean.
   void apply(const Segment& move, MoveKind kind);
 
   // The material still there.

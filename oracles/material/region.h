@@ -6,19 +6,23 @@
 // - A BgPoint is (z, x): get<0> = z (along the spindle, drawn to the right), get<1> = x (radius,
 //   drawn up), so Boost's notion of clockwise is the plot's clockwise (Z right, X up), the same as
 //   ArcCW.
-// - Polygons are Boost's defaults: outer rings clockwise, holes counter-clockwise, closed (the first
-//   point repeated at the end). Every function here returns regions in that orientation.
-// - Arcs become chords between points on the arc, so a flattened arc lies on the arc's centre side,
-//   at most `chordTolerance` (the sagitta) from it; lines stay exact. A flattened figure is within
-//   chordTolerance of the true one (Hausdorff distance), so a distance measured between a flattened
-//   figure and an exact one is off by at most chordTolerance, and between two flattened figures by
-//   at most 2·chordTolerance (by chordTolerance only when both flatten arcs of the same circle, the
-//   usual case of a path following the profile). Verdicts add the tolerance to their ε.
+// - Polygons are Boost's defaults: outer rings clockwise, holes counter-clockwise, closed (the
+//   first point repeated at the end). Every function here returns regions in that orientation.
+// - Arcs become equal chords between points on the arc, so a flattened arc lies on the arc's centre
+//   side, at most `chordTolerance` (the sagitta) from it; lines stay exact. A flattened figure is
+//   within chordTolerance of the true one (Hausdorff distance): a convex round of the part (centre
+//   inside) loses material, a fillet (centre outside) gains some. Euclidean distances measured
+//   between a flattened figure and an exact one are off by at most chordTolerance, between two
+//   flattened figures by at most 2·chordTolerance (0 when both flatten the same arc, or the same
+//   arc translated — the rough profile and a path along it: their chords are the same). Verdicts
+//   add that to their ε. Distances along an axis are not so bounded: next to a point where the
+//   arc's tangent is parallel to the axis, a chord strays up to √(r·chordTolerance/2) from the arc
+//   along it (a round starting from a shoulder, measured along x) — thickestAbove() allows for it.
 // - Boost's booleans (1.74) rescale their operands' common envelope onto 10⁷ integer steps to stay
 //   robust, so the points they create are exact to about envelope/10⁷ (6e-6 mm for a 60 mm
-//   envelope): slivers of that width appear where two figures share an edge. Verdicts need an ε well
-//   above it (the oracles' 1e-3 mm is); the model keeps its shadows short (1 mm past the material)
-//   so that the envelope stays the material's.
+//   envelope): slivers of that width appear where two figures share an edge. Verdicts need an ε
+//   well above it (the oracles' 1e-3 mm is); the model keeps its shadows short (1 mm past the
+//   material) so that the envelope stays the material's.
 // - Regions are kept tidy: consecutive points closer than kTidyDistance merged, points within
 //   kTidyDistance of the line through their neighbours (collinear points, spikes) dropped, and
 //   rings thinner (2·area / perimeter) than kDustWidth or than the booleans' resolution
@@ -48,6 +52,8 @@ inline Point fromBg(const BgPoint& p) { return {p.x(), p.y()}; }
 // every point on the arc. A degenerate arc (radius ≤ kGeomEps) gives {from, to}. An arc with
 // from == to and a radius is a full circle (geometry.h's convention). Throws std::invalid_argument
 // for non-finite coordinates, chordTolerance ≤ 0, or more than a million chords.
+// (Chords much finer than this, bounding the error along the axes too, would fall below the
+// booleans' resolution next to axis-parallel tangents and make Boost see self-intersections.)
 std::vector<Point> flatten(const Segment& s, double chordTolerance);
 
 // Appends flatten(s) to `points`, without repeating a first point equal to the last one there.
@@ -69,7 +75,8 @@ std::vector<std::vector<Point>> outlinesOf(const BgRegion& region);
 // (tidied) when epsilon ≤ 0.
 BgRegion eroded(const BgRegion& region, double epsilon);
 
-// a ∖ b, tidied (no dust where a and b share an edge).
+// a ∖ b, tidied (no dust where a and b share an edge); `a` as it is when their envelopes do not
+// meet.
 BgRegion without(const BgRegion& a, const BgRegion& b);
 
 // Merges near-duplicate points, drops collinear points, spikes and dust rings (see the top of this

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "oracles/material/boost_geometry.h"
-
 #include "oracles/material/depth_frame.h"
 
 namespace cyclecert {
@@ -51,7 +50,8 @@ BgRegion impliedStock(const std::vector<Segment>& finishShape, Point away, doubl
   const DepthFrame frame(away);
   std::vector<Point> outline = flattenedPath(finishShape, chordTolerance);
   const Point a = finishShape.front().from;
-  outline.push_back(frame.atDepth(finishShape.back().to, frame.depth(a)));  // above C; then back to A
+  // Above C, then back to A.
+  outline.push_back(frame.atDepth(finishShape.back().to, frame.depth(a)));
   return regionFrom(outline);
 }
 

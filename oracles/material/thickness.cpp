@@ -63,18 +63,20 @@ class FlatProfile {
 };
 
 // The thickness of a region edge above the profile is piecewise linear between the ends of its
-// overlaps with the profile's steps, so it is largest at one of those ends. Only overlaps longer than
-// `resolution` count: a region touching the profile's span at a single cut coordinate (material
-// beside a shoulder, or beyond the profile's end) stands above nothing there.
-// The booleans place points to within their resolution only (region.h), and beside a steep chord a
-// point off by δ along the cut axis seems slope·δ thicker; so the profile beneath a point at c is the
-// highest the steps under the edge come (not above the point, give or take the resolution) within
-// c ± resolution, and each overlap is also measured `resolution` inside its ends, where that window
-// no longer reaches past them. Only steps under the edge: a step across a shoulder is not beneath.
+// overlaps with the profile's steps, so it is largest at one of those ends. Only overlaps longer
+// than `resolution` count: a region touching the profile's span at a single cut coordinate
+// (material beside a shoulder, or beyond the profile's end) stands above nothing there.
+// Where the profile is steep, a point off by δ along the cut axis seems slope·δ thicker, and both
+// flattening (region.h) and the booleans' rounding move points that way; so the profile beneath a
+// point at c is the highest that the steps under its edge come within c ± window (not above the
+// point by more than the window), and each overlap is also measured `window` inside its ends, where
+// that window no longer reaches past them. Only steps under the edge: a step across a shoulder is
+// not beneath.
 class ThicknessSearch {
  public:
-  ThicknessSearch(const FlatProfile& profile, const DepthFrame& frame, double resolution)
-      : profile_(profile), frame_(frame), resolution_(resolution) {}
+  ThicknessSearch(const FlatProfile& profile, const DepthFrame& frame, double resolution,
+                  double window)
+      : profile_(profile), frame_(frame), resolution_(resolution), window_(window) {}
 
   void measureEdge(Point p, Point q) {
     double c0 = frame_.cut(p), d0 = frame_.depth(p), c1 = frame_.cut(q), d1 = frame_.depth(q);
@@ -87,7 +89,12 @@ class ThicknessSearch {
     profile_.overlapping(c0, c1, resolution_, under_);
     for (const ProfileStep* s : under_) {
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
-      for (double c : {lo, hi, lo + resolution_, hi - resolution_}) measureAt(edge, c);
+      measureAt(edge, lo);
+      measureAt(edge, hi);
+      if (hi - lo > 2 * window_) {
+        measureAt(edge, lo + window_);
+        measureAt(edge, hi - window_);
+      }
     }
   }
 
@@ -95,14 +102,14 @@ class ThicknessSearch {
 
  private:
   // The edge's point at c against the highest depth beneath it of the steps under the edge, within
-  // c ± resolution.
+  // c ± window.
   void measureAt(const RegionEdge& edge, double c) {
     const double d = edge.depthAt(c);
     std::optional<double> beneath;
     for (const ProfileStep* s : under_) {
-      if (s->c1 < c - resolution_ || s->c0 > c + resolution_) continue;
-      const double v0 = s->depthAt(c - resolution_), v1 = s->depthAt(c + resolution_);
-      if (std::min(v0, v1) > d + resolution_) continue;  // wholly above the point
+      if (s->c1 < c - window_ || s->c0 > c + window_) continue;
+      const double v0 = s->depthAt(c - window_), v1 = s->depthAt(c + window_);
+      if (std::min(v0, v1) > d + window_) continue;  // wholly above the point
       const double highest = std::min(std::max(v0, v1), d);
       if (!beneath || highest > *beneath) beneath = highest;
     }
@@ -117,6 +124,7 @@ class ThicknessSearch {
   const FlatProfile& profile_;
   const DepthFrame& frame_;
   double resolution_;
+  double window_;
   std::vector<const ProfileStep*> under_;
   std::optional<Thickest> best_;
 };
@@ -136,8 +144,8 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
   std::vector<Point> points;
   for (const Segment& s : profile) appendFlattened(points, s, chordTolerance);
   const FlatProfile flat(points, frame);
-  const double resolution = std::max(kTidyDistance, 10 * kBooleanResolution * sizeOf(region));
-  ThicknessSearch search(flat, frame, resolution);
+  const double resolution = std::max(kTidyDistance, 4 * kBooleanResolution * sizeOf(region));
+  ThicknessSearch search(flat, frame, resolution, 2 * chordTolerance + resolution);
   auto visitRing = [&search](const BgPolygon::ring_type& ring) {
     for (std::size_t i = 1; i < ring.size(); ++i) {
       search.measureEdge(fromBg(ring[i - 1]), fromBg(ring[i]));

@@ -6,6 +6,94 @@ namespace cyclecert {
 
 using nlohmann::json;
 
+namespace {
+
+// Follows the JSON pointer of the value being read, so that a parse error can name its field.
+class PointerTracker : public nlohmann::json_sax<json> {
+ public:
+  std::string pointer() const {
+    std::string p;
+    for (const Frame& f : stack_) {
+      if (!f.array && f.key.empty()) break;  // an object whose first key is not read yet
+      p += "/" + (f.array ? std::to_string(f.index) : f.key);
+    }
+    return p;
+  }
+  std::string error;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& k) override {
+    stack_.back().key = k;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    error = e.what();
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index = 0;
+    std::string key;
+  };
+  // A finished value moves an array on to its next index.
+  bool value() {
+    if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+    return true;
+  }
+  bool open(bool array) {
+    stack_.push_back({array, 0, {}});
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return value();
+  }
+  std::vector<Frame> stack_;
+};
+
+std::pair<int, int> lineAndColumn(const std::string& text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+}  // namespace
+
+json parseJsonDocument(const std::string& text, const std::string& file) {
+  try {
+    return json::parse(text);
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a number beyond a double
+    PointerTracker tracker;
+    json::sax_parse(text, &tracker);
+    const std::string field = tracker.pointer().empty() ? "(document)" : tracker.pointer();
+    std::string where = file;
+    if (const auto* pe = dynamic_cast<const json::parse_error*>(&e)) {
+      const auto [line, column] = lineAndColumn(text, pe->byte > 0 ? pe->byte - 1 : 0);
+      where += ":" + std::to_string(line) + ":" + std::to_string(column);
+    }
+    throw ToolpathFormatError(where + ": " + field + ": expected valid JSON (" + e.what() + ")");
+  }
+}
+
 std::string kindName(MoveKind k) { return k == MoveKind::Rapid ? "rapid" : "feed"; }
 
 std::string shapeName(SegmentKind s) {

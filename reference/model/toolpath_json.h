@@ -11,6 +11,11 @@
 
 namespace cyclecert {
 
+// Parses a JSON document; invalid JSON (a NaN token, a number beyond a double, a truncated file…)
+// throws ToolpathFormatError naming the file, the field as a JSON pointer (e.g. "/moves/3/to/x"),
+// the line and column, and what the parser expected.
+nlohmann::json parseJsonDocument(const std::string& text, const std::string& file);
+
 nlohmann::json toJson(Point p);
 nlohmann::json toJson(const Move& m);
 nlohmann::json toJson(const Toolpath& t);
