@@ -220,7 +220,6 @@ TEST(MetamorphicRelations, SplitBlockSplitsEveryShapeMotionIntoTheSameGeometry) 
     const Toolpath before = plan(c.text, c.profile, c.params);
     const RoughingCycleInfo& cycle = lathe->cycles.front();
     for (std::size_t i = cycle.ns + 1; i <= cycle.nf; ++i) {
-      if (isTypeIIFlatBlock(source, *lathe, i)) continue;  // see SplitAFlatPocketBottom below
       const auto split = splitBlock(source, i, whyNot);
       ASSERT_TRUE(split) << whyNot;
       const std::string text = writeProgram(*split);
@@ -233,12 +232,9 @@ TEST(MetamorphicRelations, SplitBlockSplitsEveryShapeMotionIntoTheSameGeometry) 
   }
 }
 
-// Known inconsistency of the reference, found by split-segment: a type II valley bottom is a block
-// (G71.T2.VALLEY, "blocks parallel to the 1st axis are treated as pocket bottoms"), so a flat bottom
-// written as two collinear blocks is cut as two bottoms, with a 45° retract and a re-entry at the
-// joint; written as one block it is one cut. Disabled until the interpretation is settled (merge
-// collinear bottom blocks into one bottom, or record that the split changes the path).
-TEST(MetamorphicRelations, DISABLED_SplitAFlatPocketBottom) {
+// Found by split-segment, and settled: a flat bottom written as two collinear blocks is one valley
+// bottom (reference/cycles/pocket_profile.cpp merges consecutive blocks along the cut axis).
+TEST(MetamorphicRelations, SplitAFlatPocketBottom) {
   const Program source = parseProgram(kPockets.text, kPockets.name);
   std::string whyNot;
   const auto split = splitBlock(source, *source.findSequence(20), whyNot);  // N20 G01 Z-4, at the bottom

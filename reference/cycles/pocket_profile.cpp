@@ -95,7 +95,11 @@ std::vector<ProfileInterval> PocketProfile::intervalsAt(double level) const {
 void PocketProfile::findValleyBottoms() {
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
     if (isAlongCut(i)) {
-      bottoms_.push_back({{i, pieces_[i].from}, {i, pieces_[i].to}, depth(pieces_[i].from)});
+      // Consecutive blocks along the cut axis at one depth are one valley bottom, however the
+      // program splits it (the metamorphic split-segment relation found the difference).
+      const std::size_t first = i;
+      while (i + 1 < pieces_.size() && isAlongCut(i + 1) && std::abs(depth(pieces_[i + 1].from) - depth(pieces_[first].from)) <= kEps) ++i;
+      bottoms_.push_back({{first, pieces_[first].from}, {i, pieces_[i].to}, depth(pieces_[first].from)});
       continue;
     }
     // A vertex where the profile stops going deeper and comes back (a V, or an arc's apex).
