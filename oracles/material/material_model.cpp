@@ -334,8 +334,15 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   std::vector<BgPolygon> parts;
+  if (remaining_.empty()) return {};
   for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
                                                 farDepth())) {
+    // The same cheap tests as apply(): a shadow that misses the material removes nothing.
+    if (bg::disjoint(bg::return_envelope<Box>(shadow.polygon), envelope_)) continue;
+    if (shadow.path.size() == 2 &&
+        !lineShadowMeets(shadow.path[0], shadow.path[1], frame_, shadow.reach, remaining_)) {
+      continue;
+    }
     BgRegion part;
     bg::intersection(remaining_, shadow.polygon, part);
     for (BgPolygon& p : part) parts.push_back(std::move(p));
