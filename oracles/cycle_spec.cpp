@@ -230,13 +230,14 @@ class SpecReader {
     } else if (c.feed <= 0) {
       c.forbiddenBy = forbidden("PS0011", b.line, "no cutting feed");
     }
-    if (c.forbiddenBy) {
+    if (c.forbiddenBy || !ns || !nf) {
       out_.cycles.push_back(std::move(c));
       return index + 1;
     }
-    readShape(c, *ns, *nf);
+    const std::size_t first = ns.value(), last = nf.value();
+    readShape(c, first, last);
     out_.cycles.push_back(std::move(c));
-    return *ns == index + 1 ? *nf + 1 : index + 1;  // G72.NSNF.FOLLOW
+    return first == index + 1 ? last + 1 : index + 1;  // G72.NSNF.FOLLOW
   }
 
   void readShape(CycleSpec& c, std::size_t ns, std::size_t nf) {

@@ -201,16 +201,6 @@ TEST(MetamorphicRelations, WordsOutsideTheVocabularyAreRefusedWithTheReason) {
   }
 }
 
-// A line of a type II shape (the head commands both axes) along the cut axis (z for G71, x for G72).
-bool isTypeIIFlatBlock(const Program& p, const LatheProgram& lathe, std::size_t i) {
-  const BlockInfo& info = lathe.blocks[i];
-  if (!info.shapeOf || !info.segment || info.segment->isArc()) return false;
-  const Block& head = p.blocks[*info.shapeOf + 1];  // block ns follows the P/Q block
-  const bool typeII = (head.has('X') || head.has('U')) && (head.has('Z') || head.has('W'));
-  const Point move = info.segment->to - info.segment->from;
-  return typeII && std::abs(info.cycle == 72 ? move.z : move.x) < 1e-9;
-}
-
 TEST(MetamorphicRelations, SplitBlockSplitsEveryShapeMotionIntoTheSameGeometry) {
   for (const SourceCase& c : allSources()) {
     const Program source = parseProgram(c.text, c.name);
