@@ -215,29 +215,30 @@ class SpecReader {
     if (const Word* dw = b.find(axes.firstInc)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
-    const auto ns = p ? program_.findSequence(static_cast<long>(p->value)) : std::nullopt;
-    const auto nf = q ? program_.findSequence(static_cast<long>(q->value)) : std::nullopt;
+    // Block indices of P and Q, or kNotFound (plain indices: GCC 12 misreads optionals here).
+    constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
+    const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
+    const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
     if (firstBlockAlarm_) {
       c.forbiddenBy = firstBlockAlarm_;
     } else if (auto bad = rangeAlarm(b, axes)) {
       c.forbiddenBy = bad;
     } else if (!p || !q) {
       c.forbiddenBy = forbidden("PS0061", b.line, "P or Q missing");
-    } else if (!ns || !nf || *nf < *ns) {
+    } else if (ns == kNotFound || nf == kNotFound || nf < ns) {
       c.forbiddenBy = forbidden("PS0063", b.line, "block P or Q not found");
     } else if (c.depthOfCut <= 0) {
       c.forbiddenBy = forbidden("PS0062", b.line, "no depth of cut");
     } else if (c.feed <= 0) {
       c.forbiddenBy = forbidden("PS0011", b.line, "no cutting feed");
     }
-    if (c.forbiddenBy || !ns || !nf) {
+    if (c.forbiddenBy) {
       out_.cycles.push_back(std::move(c));
       return index + 1;
     }
-    const std::size_t first = ns.value(), last = nf.value();
-    readShape(c, first, last);
+    readShape(c, ns, nf);
     out_.cycles.push_back(std::move(c));
-    return first == index + 1 ? last + 1 : index + 1;  // G72.NSNF.FOLLOW
+    return ns == index + 1 ? nf + 1 : index + 1;  // G72.NSNF.FOLLOW
   }
 
   void readShape(CycleSpec& c, std::size_t ns, std::size_t nf) {
