@@ -1,6 +1,8 @@
 // The `cyclecert` command as a user and a CI job meet it: help on every command, exit codes,
 // outputs written, and clear errors for bad input.
 #include <gtest/gtest.h>
+
+#include "tests/cli_fixture.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,47 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exitCode;
-  std::string out, err;
-};
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cyclecert-cli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
-
-  static std::string read(const std::string& file) {
-    std::ifstream in(file);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
-  CliRun run(const std::string& args) const {
-    const std::string errFile = path("stderr.txt");
-    const std::string command = std::string(CYCLECERT_CLI) + " " + args + " 2>" + errFile;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-    const int status = ::pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, read(errFile)};
-  }
-
-  fs::path dir_;
-};
+class Cli : public CliFixture {};
 
 const char* kShaft =
     "G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\nG01 Z-10;\nN20 X40 Z-20;\n";

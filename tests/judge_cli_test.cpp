@@ -2,6 +2,8 @@
 // usage or bad input), human and JSON findings, the SVG with each finding's witness, a program
 // instead of a case, and clear errors for bad toolpaths and cases (the file, the field, the move).
 #include <gtest/gtest.h>
+
+#include "tests/cli_fixture.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,47 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-  int exitCode;
-  std::string out, err;
-};
-
-class JudgeCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cyclecert-judge-cli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
-
-  static std::string read(const std::string& file) {
-    std::ifstream in(file);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
-  CliRun run(const std::string& args) const {
-    const std::string errFile = path("stderr.txt");
-    const std::string command = std::string(CYCLECERT_CLI) + " " + args + " 2>" + errFile;
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-    const int status = ::pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, read(errFile)};
-  }
-
-  fs::path dir_;
-};
+class JudgeCli : public CliFixture {};
 
 std::string specCase(const std::string& id) { return cyclecert::defaultSpecsDir() + "/cases/" + id + ".json"; }
 

@@ -304,16 +304,24 @@ double MaterialModel::farDepth() const {
                    frame_.depth({hi.x(), lo.y()}), frame_.depth({hi.x(), hi.y()})});
 }
 
+namespace {
+
+// Cheap tests before a boolean: a shadow whose box misses the material's, or a line's shadow that
+// meets no material, removes nothing.
+bool meetsMaterial(const ShadowPiece& shadow, const bg::model::box<BgPoint>& envelope, const DepthFrame& frame,
+                   const BgRegion& remaining) {
+  if (bg::disjoint(bg::return_envelope<bg::model::box<BgPoint>>(shadow.polygon), envelope)) return false;
+  return shadow.path.size() != 2 || lineShadowMeets(shadow.path[0], shadow.path[1], frame, shadow.reach, remaining);
+}
+
+}  // namespace
+
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || remaining_.empty()) return;
   bool changed = false;
   for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
                                                 farDepth())) {
-    if (bg::disjoint(bg::return_envelope<Box>(shadow.polygon), envelope_)) continue;
-    if (shadow.path.size() == 2 &&
-        !lineShadowMeets(shadow.path[0], shadow.path[1], frame_, shadow.reach, remaining_)) {
-      continue;
-    }
+    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;  // cheap tests first: a shadow in air removes nothing
     BgRegion rest;
     bg::difference(remaining_, shadow.polygon, rest);
     Box operands = envelope_;
@@ -337,12 +345,7 @@ BgRegion MaterialModel::removedBy(const Segment& move) const {
   if (remaining_.empty()) return {};
   for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
                                                 farDepth())) {
-    // The same cheap tests as apply(): a shadow that misses the material removes nothing.
-    if (bg::disjoint(bg::return_envelope<Box>(shadow.polygon), envelope_)) continue;
-    if (shadow.path.size() == 2 &&
-        !lineShadowMeets(shadow.path[0], shadow.path[1], frame_, shadow.reach, remaining_)) {
-      continue;
-    }
+    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
     BgRegion part;
     bg::intersection(remaining_, shadow.polygon, part);
     for (BgPolygon& p : part) parts.push_back(std::move(p));
