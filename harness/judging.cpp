@@ -76,7 +76,8 @@ nlohmann::json findingsJson(const std::vector<Finding>& findings) {
   return out;
 }
 
-PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, const std::string& title) {
+PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, const std::string& title,
+                    std::optional<std::size_t> materialAfterMove) {
   PlotInput plot;
   plot.title = title;
   plot.path = in.path;
@@ -89,8 +90,11 @@ PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, 
   if (in.program.singleRoughingCycle()) {
     try {
       // The plot shows the stock the oracles used (a reach of 0 leaves the implied band at its shape).
-      const auto replay = replayMaterial(in);
-      if (replay) plot.stock = outlinesOf(replay->stock);
+      if (materialAfterMove) {
+        if (auto outlines = materialAfter(in, *materialAfterMove)) plot.stock = std::move(*outlines);
+      } else if (const auto replay = replayMaterial(in)) {
+        plot.stock = outlinesOf(replay->stock);
+      }
     } catch (const std::invalid_argument&) {
       // an unusable stock is reported by the oracles; the plot goes without it
     }

@@ -28,6 +28,9 @@ std::string findingsText(const std::vector<Finding>& findings);
 nlohmann::json findingsJson(const std::vector<Finding>& findings);
 
 // The plot of a judged toolpath: contour, rough contour, stock, path and each finding's witness.
-PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, const std::string& title);
+// With `materialAfterMove`, the plot's grey region is the material standing after that move
+// instead of the stock.
+PlotInput judgePlot(const JudgeInput& in, const std::vector<Finding>& findings, const std::string& title,
+                    std::optional<std::size_t> materialAfterMove = std::nullopt);
 
 }  // namespace cyclecert

@@ -141,6 +141,16 @@ bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move
 
 }  // namespace
 
+std::optional<std::vector<std::vector<Point>>> materialAfter(const JudgeInput& in, std::size_t k) {
+  const CycleSpec* c = in.program.singleRoughingCycle();
+  if (!c || in.path.alarm) return std::nullopt;
+  const Point away = awayFrom(*c);
+  const double reach = reachFor(in, *c);
+  MaterialModel model(stockFor(in, *c, away, reach), away, reach, in.settings.chordTolerance);
+  for (std::size_t i = 0; i < in.path.moves.size() && i <= k; ++i) model.apply(in.path.segment(i), in.path.moves[i].kind);
+  return outlinesOf(model.remaining());
+}
+
 std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   const CycleSpec* c = in.program.singleRoughingCycle();
   if (!c || in.path.alarm) return std::nullopt;

@@ -41,6 +41,11 @@ BgRegion withoutSkins(const BgRegion& region, Point away, double width);
 // Direction from the part towards the cycle's start side along its depth axis.
 Point awayFrom(const CycleSpec& c);
 
+// The material still standing after move `k` (0-based; after the whole path for k ≥ the move
+// count), as outlines for a plot: the replay stopped there. Nothing when the program is not one the
+// geometric oracles judge.
+std::optional<std::vector<std::vector<Point>>> materialAfter(const JudgeInput& in, std::size_t k);
+
 // Nothing when the program is not one the geometric oracles judge (not exactly one roughing cycle
 // the rules allow, or the engine alarmed). Throws std::invalid_argument for an unusable stock.
 std::optional<MaterialReplay> replayMaterial(const JudgeInput& in);

@@ -376,4 +376,18 @@ TEST_F(JudgeCli, CorruptCasesExitWith2NamingTheField) {
   EXPECT_FALSE(r.err.empty());
 }
 
+TEST_F(JudgeCli, MaterialAfterAMoveIsDrawn) {
+  const std::string before = path("before.svg"), after = path("after.svg");
+  ASSERT_EQ(run("judge " + specCase("fanuc-0i-f/g71/g01-head-stepped-shaft") + " --reference --svg " + before +
+                " --material-after 0").exitCode, 0);
+  ASSERT_EQ(run("judge " + specCase("fanuc-0i-f/g71/g01-head-stepped-shaft") + " --reference --svg " + after +
+                " --material-after 1000").exitCode, 0);
+  // Before the first cut the whole stock stands; after the last move only the allowance band does:
+  // both drawn, and different.
+  const std::string a = read(before), b = read(after);
+  EXPECT_NE(a.find("class=\"stock\""), std::string::npos);
+  EXPECT_NE(b.find("class=\"stock\""), std::string::npos);
+  EXPECT_NE(a, b);
+}
+
 }  // namespace

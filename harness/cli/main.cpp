@@ -92,6 +92,7 @@ Options:
   --epsilon E          tolerance in mm (default: the case's tolerance, else 0.001)
   --json               findings as JSON on standard output
   --svg OUT            plot: contour, rough contour, stock, the path, each finding's witness in magenta
+  --material-after K   in the plot, the material standing after move K instead of the stock
   --help               this help
 
 Exit: 0 no finding, 1 findings, 2 bad usage or bad input (the message names the file, the field and
@@ -321,6 +322,7 @@ int commandJudge(const std::vector<std::string>& args) {
   std::vector<std::string> params;
   bool json = false, reference = false, mdi = false;
   std::optional<double> epsilon, noseRadius;
+  std::optional<std::size_t> materialAfterMove;
   std::optional<int> tip;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -336,6 +338,7 @@ int commandJudge(const std::vector<std::string>& args) {
     else if (a == "--reference") reference = true;
     else if (a == "--mdi") mdi = true;
     else if (a == "--epsilon") epsilon = numberArg(a, value(), 1e-9, 10);
+    else if (a == "--material-after") materialAfterMove = static_cast<std::size_t>(numberArg(a, value(), 0, 1e9));
     else if (a == "--nose-radius") noseRadius = numberArg(a, value(), 0, 100);
     else if (a == "--tip") tip = static_cast<int>(numberArg(a, value(), 0, 9));
     else if (!a.empty() && a[0] == '-' && a != "-") throw UsageError("unknown option " + a);
@@ -389,7 +392,7 @@ int commandJudge(const std::vector<std::string>& args) {
   if (json) std::cout << findingsJson(findings).dump(2) << "\n";
   else if (findings.empty()) std::cout << "no finding: every oracle passes\n";
   else std::cout << findingsText(findings) << findings.size() << " finding(s)\n";
-  if (!svgOut.empty()) writeFile(svgOut, renderToolpathSvg(judgePlot(in, findings, title)));
+  if (!svgOut.empty()) writeFile(svgOut, renderToolpathSvg(judgePlot(in, findings, title, materialAfterMove)));
   return findings.empty() ? kExitOk : kExitAlarm;
 }
 
