@@ -7,7 +7,7 @@ BUILD_TYPE ?= RelWithDebInfo
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 DEB_PACKAGES := librapidcheck-dev libgtest-dev nlohmann-json3-dev libboost-dev libbenchmark-dev cmake g++ make python3 python3-jsonschema
 
-.PHONY: all bootstrap configure build test run bench sanitize clean
+.PHONY: all bootstrap configure build rs274 test run bench sanitize clean
 
 all: build
 
@@ -31,11 +31,19 @@ configure: bootstrap $(BUILD)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-test: build
+# LinuxCNC's rs274 as an engine under test, taken from Debian's archive into $(BUILD)/linuxcnc
+# (not installed: the full package pulls a real-time kernel). Optional: without it the linuxcnc
+# engine reports every case as an engine failure and its end-to-end tests are skipped.
+rs274: configure
+	@harness/engines/linuxcnc/fetch-rs274.sh $(BUILD) || echo "note: LinuxCNC's rs274 is not available; the linuxcnc engine is off"
+
+test: build rs274
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-run: build
+run: build rs274
 	@./tools/plan-corpus.sh $(BUILD)
+	$(BUILD)/cyclecert check --engine reference --specs specs --out $(BUILD)/report/reference
+	-$(BUILD)/cyclecert check --engine linuxcnc --specs specs --out $(BUILD)/report/linuxcnc
 
 bench: build
 	$(BUILD)/cyclecert-bench --benchmark_min_time=0.2

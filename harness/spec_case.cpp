@@ -97,6 +97,7 @@ SpecCase parseSpecCase(const std::string& text, const std::string& file) {
   if (!j.is_object()) throw SpecError(file, "(document)", "a JSON object");
   SpecCase c;
   c.file = file;
+  c.raw = j;
   c.id = requiredString(j, "id", file);
   c.title = requiredString(j, "title", file);
   c.profile = requiredString(j, "profile", file);

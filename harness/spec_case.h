@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
 
@@ -40,6 +42,7 @@ struct SpecCase {
   std::optional<ToolOffset> tool;             // the active tool's nose radius and tip direction
   bool mdi = false;                           // the program runs in MDI mode
   std::optional<CaseStock> stock;             // explicit stock (else implied by the cycle)
+  nlohmann::json raw;                         // the case as written (what a process engine receives)
   std::string derivation;
 };
 

@@ -8,7 +8,9 @@
 
 namespace cyclecert {
 
-// Nothing when the toolpath meets the expectation; otherwise what differs, for a person.
-std::optional<std::string> unmetExpectation(const SpecCase& c, const Toolpath& actual);
+// Nothing when the toolpath meets the expectation; otherwise what differs, for a person. Expected
+// warnings are the reference's annotations, judged only with `judgeWarnings` (engines need not
+// warn); an alarm's "when" is judged when the engine states it.
+std::optional<std::string> unmetExpectation(const SpecCase& c, const Toolpath& actual, bool judgeWarnings = true);
 
 }  // namespace cyclecert

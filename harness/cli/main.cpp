@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "cyclecert_version.h"
+#include "harness/check_run.h"
+#include "harness/engines/engine.h"
 #include "harness/judging.h"
 #include "harness/reference_plan.h"
 #include "harness/rule_catalogue.h"
@@ -35,6 +37,8 @@ Usage: cyclecert <command> [options]
 Commands:
   plan       plan every cycle of a program (or a spec case) with the reference engine;
              write the toolpath as JSON and SVG
+  check      run every spec case against an engine (reference, process:COMMAND, mutant:NAME)
+  engines    list the engines
   judge      judge a toolpath (any engine's, as JSON) with every oracle
   rules      list the rule catalogue with, per rule, how many spec cases cite it
   params     list the machine parameters, their defaults and the rules they serve
@@ -97,6 +101,26 @@ Options:
 
 Exit: 0 no finding, 1 findings, 2 bad usage or bad input (the message names the file, the field and
 the move index), 3 the program needs a cycle the reference does not read yet.
+)HELP";
+
+const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume] [--timeout S]
+
+Runs every spec case under DIR/cases (default: the repository's specs/) against engine E
+(`cyclecert engines`). A case passes when the engine meets its expectation — the toolpath within
+the case's tolerance, or the alarm — and every oracle finds nothing on its toolpath. Each result
+is appended to OUT/results.jsonl (default build/check) as soon as it is known, so a killed run keeps
+every result; --resume skips the cases already there.
+
+Options:
+  --engine E     reference | linuxcnc | process:COMMAND | mutant:NAME
+  --timeout S    per-case timeout for engines in another process (default 10)
+Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage.
+)HELP";
+
+const char* kEnginesHelp = R"HELP(Usage: cyclecert engines
+
+Lists the engines `check` can run: the reference, any external program speaking JSON lines
+(process:COMMAND, see the README), and the mutants (the reference with one seeded fault).
 )HELP";
 
 const char* kRulesHelp = R"HELP(Usage: cyclecert rules [--cycle C] [--uncited] [--json] [--specs DIR]
@@ -396,6 +420,47 @@ int commandJudge(const std::vector<std::string>& args) {
   return findings.empty() ? kExitOk : kExitAlarm;
 }
 
+int commandEngines(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kEnginesHelp;
+    return kExitOk;
+  }
+  if (!args.empty()) throw UsageError("unknown option " + args.front());
+  for (const auto& [name, description] : listEngines()) std::cout << std::left << std::setw(28) << name << description << "\n";
+  return kExitOk;
+}
+
+int commandCheck(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kCheckHelp;
+    return kExitOk;
+  }
+  std::string engineName;
+  CheckOptions options{defaultSpecsDir(), "build/check", false};
+  EngineOptions engineOptions;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--engine") engineName = value();
+    else if (a == "--specs") options.specsDir = value();
+    else if (a == "--out") options.outDir = value();
+    else if (a == "--resume") options.resume = true;
+    else if (a == "--timeout") engineOptions.timeoutSeconds = numberArg(a, value(), 0.01, 86400);
+    else throw UsageError("unknown option " + a + " (see `cyclecert check --help`)");
+  }
+  if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
+  const auto engine = makeEngine(engineName, engineOptions);
+  const CheckSummary s = runCheck(*engine, options, std::cerr);
+  std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable
+            << " not applicable, " << s.engineFailure << " engine failure(s)";
+  if (s.skipped) std::cout << ", " << s.skipped << " already done";
+  std::cout << "; results in " << options.outDir << "/results.jsonl\n";
+  return s.clean() ? kExitOk : kExitAlarm;
+}
+
 int commandProfiles(const std::vector<std::string>& args) {
   if (wantsHelp(args)) {
     std::cout << kProfilesHelp;
@@ -439,6 +504,8 @@ int run(const std::vector<std::string>& argv) {
   if (command == "params") return commandParams(args);
   if (command == "rules") return commandRules(args);
   if (command == "judge") return commandJudge(args);
+  if (command == "check") return commandCheck(args);
+  if (command == "engines") return commandEngines(args);
   if (command == "profiles") return commandProfiles(args);
   throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
 }

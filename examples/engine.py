@@ -1,0 +1,21 @@
+#!/usr/bin/env python3
+"""A cyclecert engine in 20 lines: reads one spec case per line (JSON) on stdin and answers one line
+per case on stdout. This one hands each case to `cyclecert plan` — replace `plan()` with yours."""
+import json, subprocess, sys, tempfile
+
+CYCLECERT = sys.argv[1] if len(sys.argv) > 1 else "build/cyclecert"
+
+def plan(case):
+    with tempfile.NamedTemporaryFile("w", suffix=".json") as file:
+        json.dump(case, file)
+        file.flush()
+        run = subprocess.run([CYCLECERT, "plan", "--case", file.name, "--json", "-"], capture_output=True, text=True)
+    if run.returncode == 3:
+        return {"not_applicable": run.stderr.strip()}
+    if run.returncode not in (0, 1):
+        return {"error": run.stderr.strip()}
+    path = json.loads(run.stdout)
+    return {"alarm": path["alarm"]} if path["alarm"] else {"toolpath": path}
+
+for line in sys.stdin:
+    print(json.dumps(plan(json.loads(line))), flush=True)

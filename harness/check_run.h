@@ -1,0 +1,42 @@
+#pragma once
+// `cyclecert check`: every spec case against one engine. A case passes when the engine meets its
+// expectation (the toolpath within the case's tolerance, or the alarm) and, for a planned toolpath,
+// every oracle finds nothing. Each result is appended to OUT/results.jsonl as it finishes, so a
+// killed run keeps every result; --resume skips the cases already there.
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "harness/engines/engine.h"
+#include "oracles/judgement.h"
+
+namespace cyclecert {
+
+struct CaseResult {
+  std::string engine, caseId, file;
+  std::vector<std::string> rules;
+  std::string verdict;  // "pass", "fail", "not-applicable", "engine-failure"
+  std::string detail;
+  std::vector<Finding> findings;
+  double seconds = 0;
+};
+
+CaseResult checkCase(Engine& engine, const SpecCase& c);
+
+struct CheckOptions {
+  std::string specsDir;  // holds cases/
+  std::string outDir;    // results.jsonl goes here
+  bool resume = false;
+};
+
+struct CheckSummary {
+  int pass = 0, fail = 0, notApplicable = 0, engineFailure = 0, skipped = 0;
+  bool clean() const { return fail == 0 && engineFailure == 0; }
+};
+
+// Runs the cases, reporting progress on `progress` for runs longer than a few seconds.
+CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream& progress);
+
+std::string resultLine(const CaseResult& r);  // one JSON line of results.jsonl
+
+}  // namespace cyclecert

@@ -1,0 +1,240 @@
+// A FANUC-profile spec case in LinuxCNC's G7x dialect (LinuxCNC 2.9, src/emc/rs274ngc/interp_g7x.cc):
+//
+//   G18 G21 G90 G40 G94 G91.1 G7          XZ plane, mm, absolute, diameter mode, incremental I/K
+//   G0 X<2·A.x> Z<A.z>                    the tool at the cycle start point A
+//   o100 sub                              the rough profile: the finish shape shifted by (Δw, Δu/2)
+//   G0 X… Z…                                head block A' → B' (G1 for a G01 head)
+//   G1 X… Z… / G2|G3 X… Z… I… K…            the shape to C' (I, K: centre − start, radius)
+//   o100 endsub
+//   (cyclecert: cycle)
+//   G71.1 Q100 X<2·A'.x> Z<A'.z> D0 I<Δd> R<e> F<F>   type I: G71.1/G72.1; type II: G71/G72
+//   (cyclecert: return)
+//   G0 …                                  the return to A the case's DTP asks for (optional)
+//   (cyclecert: end)
+//   M2
+//
+// The word-by-word table and what is not applicable are in README.md beside this file.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "harness/engines/linuxcnc/linuxcnc_engine.h"
+#include "oracles/cycle_spec.h"
+#include "reference/gcode/parser.h"
+#include "reference/model/params.h"
+#include "reference/model/profile.h"
+
+namespace cyclecert {
+
+namespace {
+
+// A number as LinuxCNC reads it: up to 6 decimals, no trailing zeros, never "-0".
+std::string num(double v) {
+  if (std::abs(v) < 5e-7) return "0";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6f", v);
+  std::string s = buf;
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+// "X… Z…" of a point (X as a diameter: G7).
+std::string xz(Point p) {
+  std::string out = "X";  // appended piece by piece: GCC 12 warns (-Wrestrict) about "literal" + string&&
+  out += num(2 * p.x);
+  out += " Z";
+  out += num(p.z);
+  return out;
+}
+
+// The parameters whose meaning the translation carries: Δd and e (5132/5133, through I and R) and
+// DTP (through the appended return).
+bool translatedParameter(const ParamSpec& p) {
+  return p.number == "5132" || p.number == "5133" || p.number == "5108#1";
+}
+
+std::string paramLabel(const ParamSpec& p, double value) {
+  return (p.mnemonic.empty() ? p.number : p.mnemonic + " (" + p.number + ")") + " = " + num(value);
+}
+
+int planeBefore(const Program& program, int line) {
+  int plane = 18;
+  for (const Block& b : program.blocks) {
+    if (b.line > line) break;
+    for (const Word* g : b.all('G')) {
+      const int g10 = gCode10(g->value);
+      if (g10 == 170 || g10 == 180 || g10 == 190) plane = g10 / 10;
+    }
+  }
+  return plane;
+}
+
+// Forbidden cycles whose shape the oracles' reading did not finish: nothing faithful to translate.
+std::optional<std::string> untranslatableAlarm(const CycleSpec& c) {
+  if (!c.forbiddenBy) return std::nullopt;
+  const Alarm& a = *c.forbiddenBy;
+  const std::string what = a.code + " at line " + std::to_string(a.line) + " (" + a.message + ")";
+  if (c.shape.empty()) {
+    return "FANUC stops with " + what + " before the cycle's shape is read: nothing to translate";
+  }
+  if (a.code == "PS0023" || a.code == "PS0041" || a.message.find("in the shape program") != std::string::npos) {
+    return "FANUC stops with " + what + " while reading the shape: the shape is incomplete, nothing to translate";
+  }
+  if (a.code == "PS0065") {
+    return "FANUC's rule that block ns states G00/G01 (" + what +
+           ") has no LinuxCNC counterpart: the O-sub's blocks are written with explicit motion words";
+  }
+  return std::nullopt;  // PS0064, PS0329, PS0322, PS0325 (head): the shape is whole; LinuxCNC decides
+}
+
+// Text safe inside a LinuxCNC comment: no parentheses (a ')' would end it), printable, short.
+std::string commentText(const std::string& text) {
+  std::string out;
+  for (char ch : text.substr(0, 80)) out += (ch == '(' || ch == ')' || ch < ' ' || ch > '~') ? '_' : ch;
+  return out;
+}
+
+class Writer {
+ public:
+  void line(const std::string& text, int sourceLine) {
+    out_ << text << '\n';
+    lines_.emplace(text, sourceLine);  // 0: a block of the translation's own
+  }
+  std::string text() const { return out_.str(); }
+  std::map<std::string, int>& lines() { return lines_; }
+
+ private:
+  std::ostringstream out_;
+  std::map<std::string, int> lines_;
+};
+
+}  // namespace
+
+LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOptions& options, int subNumber) {
+  const auto notApplicable = [](std::string why) {
+    LinuxCncTranslation t;
+    t.notApplicable = std::move(why);
+    return t;
+  };
+  if (c.mdi) return notApplicable("MDI mode: the case is about FANUC's MDI rule (PS0067); LinuxCNC has no such mode rule");
+  const std::string profileName = c.profile.empty() ? "fanuc-0i-f" : c.profile;
+  const Profile* profile = findProfile(profileName);
+  if (!profile) return notApplicable("unknown profile '" + profileName + "'");
+
+  MachineParams params = profile->defaults;
+  std::vector<std::string> inexpressible;
+  for (const auto& [name, value] : c.params) {
+    try {
+      params.set(name, value);
+    } catch (const std::exception& e) {
+      return notApplicable(std::string("bad parameter: ") + e.what());
+    }
+    const ParamSpec* spec = MachineParams::find(name);
+    if (spec && !translatedParameter(*spec) && value != profile->defaults.get(spec->number)) {
+      inexpressible.push_back(paramLabel(*spec, value));
+    }
+  }
+  if (!inexpressible.empty()) {
+    std::string list;
+    for (const std::string& p : inexpressible) list += (list.empty() ? "" : ", ") + p;
+    return notApplicable("FANUC parameters without a LinuxCNC counterpart: " + list);
+  }
+
+  Program program;
+  try {
+    program = parseProgram(c.program, c.file + "#/program");
+  } catch (const std::exception& e) {
+    return notApplicable(std::string("the translator cannot read the program: ") + e.what());
+  }
+  for (const Block& b : program.blocks) {
+    if (b.hasG(410) || b.hasG(420)) {
+      return notApplicable("nose-radius compensation (G41/G42 at line " + std::to_string(b.line) +
+                           "): LinuxCNC refuses G71/G72 with cutter compensation on, and FANUC's cycle works on "
+                           "the compensated shape");
+    }
+  }
+  ProgramSpec spec;
+  try {
+    spec = readProgramSpec(program, *profile, params, c.tool.value_or(ToolOffset{}), false);
+  } catch (const std::exception& e) {
+    return notApplicable(std::string("the translator cannot read the program's cycles: ") + e.what());
+  }
+  if (spec.cycles.empty()) return notApplicable("the program has no G71/G72 roughing cycle");
+  if (spec.cycles.size() > 1) {
+    return notApplicable("the translator handles programs with one roughing cycle; this one has " +
+                         std::to_string(spec.cycles.size()));
+  }
+  if (spec.hasFinishingCycle) {
+    return notApplicable("G70 finishing is not translated: LinuxCNC's G70 (Q sub, D/E/P passes) rapids onto the "
+                         "shape and does not return to the start point");
+  }
+  const CycleSpec& cy = spec.cycles.front();
+  if (auto why = untranslatableAlarm(cy)) return notApplicable(*why);
+  if (spec.motionAfterCycles) return notApplicable("motion after the cycle is not translated");
+
+  const std::vector<Segment> rough = cy.roughProfile();
+  const Point a = cy.start;
+  const Point a1 = a + cy.allowance;  // A'
+  const bool g71 = cy.code == "G71";
+  const std::string sub = "o" + std::to_string(subNumber);
+
+  Writer w;
+  w.line("(cyclecert: " + commentText(c.id.empty() ? std::string("case") : c.id) + ")", 0);
+  w.line("G18 G21 G90 G40 G94 G91.1 G7", 0);
+  w.line("G0 " + xz(a), 0);
+  w.line(sub + " sub", cy.line);
+  for (std::size_t i = 0; i < rough.size(); ++i) {
+    const Segment& s = rough[i];
+    const int line = s.sourceLine > 0 ? s.sourceLine : cy.line;
+    if (i == 0) {
+      w.line(std::string(cy.headIsRapid ? "G0 " : "G1 ") + xz(s.to), line);
+    } else if (!s.isArc()) {
+      w.line("G1 " + xz(s.to), line);
+    } else {
+      w.line(std::string(s.kind == SegmentKind::ArcCW ? "G2 " : "G3 ") + xz(s.to) + " I" + num(s.center.x - s.from.x) +
+                 " K" + num(s.center.z - s.from.z),
+             line);
+    }
+  }
+  w.line(sub + " endsub", cy.line);
+  w.line(std::string("(") + kMarkCycle + ")", 0);
+  const std::string code = cy.code + (cy.typeII ? "" : ".1");
+  w.line(code + " Q" + std::to_string(subNumber) + " " + xz(a1) + " D0 I" + num(cy.depthOfCut) + " R" + num(cy.retract) +
+             " F" + num(cy.feed),
+         cy.line);
+
+  LinuxCncProgram p;
+  if (options.appendReturn) {
+    w.line(std::string("(") + kMarkReturn + ")", 0);
+    std::string how;
+    if (cy.directReturn && !cy.typeII) {
+      w.line("G0 " + xz(a), cy.line);
+      how = "straight (DTP = 1)";
+    } else {
+      // DTP = 0 (and type II): along the depth axis to A's depth, then along the cut axis to A.
+      w.line(g71 ? "G0 X" + num(2 * a.x) : "G0 Z" + num(a.z), cy.line);
+      w.line(g71 ? "G0 Z" + num(a.z) : "G0 X" + num(2 * a.x), cy.line);
+      how = "along the depth axis, then the cut axis";
+    }
+    p.warnings.push_back({cy.line, "linuxcnc translation: the return to the start point (" + how +
+                                       ") is appended by cyclecert; LinuxCNC's " + code + " ends where the profile ends"});
+  }
+  w.line(std::string("(") + kMarkEnd + ")", 0);
+  w.line("M2", 0);
+
+  p.text = w.text();
+  p.lines = std::move(w.lines());
+  p.start = a;
+  p.plane = "G" + std::to_string(planeBefore(program, cy.line));
+  p.cycle.code = cy.code;
+  p.cycle.line = cy.line;
+  p.cycle.start = a;
+  p.cycle.shape = cy.shape;
+  p.cycle.allowance = cy.allowance;
+  LinuxCncTranslation t;
+  t.program = std::move(p);
+  return t;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,191 @@
+// mutant:NAME — the reference with one seeded fault of a kind real engines get wrong, to measure
+// what the suite detects (README: detection table). Each fault is a change to the program the
+// reference plans, to its parameters or profile, or to the toolpath it returns; the reference
+// itself stays clean.
+#include <algorithm>
+#include <functional>
+
+#include "harness/engines/engines.h"
+#include "harness/reference_plan.h"
+#include "reference/gcode/parser.h"
+#include "reference/gcode/writer.h"
+#include "reference/model/alarms.h"
+
+namespace cyclecert {
+
+namespace {
+
+bool cites(const Move& m, const std::string& rule) { return std::find(m.rules.begin(), m.rules.end(), rule) != m.rules.end(); }
+bool isG72(const Move& m) {
+  return std::any_of(m.rules.begin(), m.rules.end(), [](const std::string& r) { return r.rfind("G72.", 0) == 0; });
+}
+
+int lastPass(const Toolpath& t) {
+  int last = 0;
+  for (const Move& m : t.moves) {
+    if (m.phase == "pass") last = std::max(last, m.pass);
+  }
+  return last;
+}
+
+void eraseIf(Toolpath& t, const std::function<bool(const Move&)>& drop) {
+  t.moves.erase(std::remove_if(t.moves.begin(), t.moves.end(), drop), t.moves.end());
+}
+
+// The toolpath faults.
+void retractStraight(Toolpath& t) {  // 45° retracts made along the depth axis only
+  for (std::size_t i = 0; i < t.moves.size(); ++i) {
+    Move& m = t.moves[i];
+    if (!cites(m, "G71.T1.RETRACT45") && !cites(m, "G72.RETRACT")) continue;
+    const Point from = t.from(i);
+    if (isG72(m)) m.to.x = from.x;
+    else m.to.z = from.z;
+  }
+}
+
+void retractTwice(Toolpath& t) {  // retract 2e instead of e
+  for (std::size_t i = 0; i < t.moves.size(); ++i) {
+    Move& m = t.moves[i];
+    if (cites(m, "G71.T1.RETRACT45") || cites(m, "G72.RETRACT")) m.to = t.from(i) + 2.0 * (m.to - t.from(i));
+  }
+}
+
+void lastPassDeeper(Toolpath& t) {  // the last pass 0.3 mm too deep
+  const int last = lastPass(t);
+  if (last == 0) return;
+  for (Move& m : t.moves) {
+    if (m.phase != "pass" || m.pass != last) continue;
+    if (isG72(m)) m.to.z -= 0.3;  // deeper for the usual facing towards −z
+    else m.to.x -= 0.3;           // deeper for outer turning
+  }
+}
+
+void feedsAsRapids(Toolpath& t) {  // the cuts along the cut axis made at rapid traverse
+  for (Move& m : t.moves) {
+    if (m.phase == "pass" && (cites(m, "G72.STEP3") || cites(m, "G71.OP"))) {
+      m.kind = MoveKind::Rapid;
+      m.feed.reset();
+    }
+  }
+}
+
+void arcsReversed(Toolpath& t) {
+  for (Move& m : t.moves) {
+    if (m.shape == SegmentKind::ArcCW) m.shape = SegmentKind::ArcCCW;
+    else if (m.shape == SegmentKind::ArcCCW) m.shape = SegmentKind::ArcCW;
+  }
+}
+
+void noFinalReturn(Toolpath& t) {
+  while (!t.moves.empty() && t.moves.back().phase == "return") t.moves.pop_back();
+}
+
+// The program faults: the allowances' signs flipped in the block with P and Q.
+std::string allowancesFlipped(const std::string& text) {
+  Program p = parseProgram(text, "mutant");
+  for (Block& b : p.blocks) {
+    if (!(b.hasG(710) || b.hasG(720)) || !b.has('P')) continue;
+    for (Word& w : b.words) {
+      if (w.letter == 'U' || w.letter == 'W') w = makeWord(w.letter, -w.value);
+    }
+  }
+  return writeProgram(p);
+}
+
+struct Fault {
+  std::string name, what;
+  std::function<EngineResult(SpecCase)> run;
+};
+
+EngineResult planned(const SpecCase& c, const std::function<void(Toolpath&)>& change = {}) {
+  Toolpath t = planSpecCase(c);
+  if (change && !t.alarm) change(t);
+  return EngineResult::planned(std::move(t));
+}
+
+const std::vector<Fault>& faults() {
+  static const std::vector<Fault> all = {
+      {"retract-angle", "retracts straight out instead of at 45°", [](SpecCase c) { return planned(c, retractStraight); }},
+      {"retract-amount", "retracts 2e instead of e", [](SpecCase c) { return planned(c, retractTwice); }},
+      {"last-pass-depth", "makes the last pass 0.3 mm too deep", [](SpecCase c) { return planned(c, lastPassDeeper); }},
+      {"allowance-sign", "leaves the allowances on the wrong side (Δu, Δw signs flipped)",
+       [](SpecCase c) {
+         c.program = allowancesFlipped(c.program);
+         return planned(c);
+       }},
+      {"semifinish-skipped", "skips the semi-finish pass",
+       [](SpecCase c) { return planned(c, [](Toolpath& t) { eraseIf(t, [](const Move& m) { return m.phase == "semi-finish"; }); }); }},
+      {"rapid-for-feed", "makes the roughing cuts at rapid traverse", [](SpecCase c) { return planned(c, feedsAsRapids); }},
+      {"pocket-order", "roughs pockets in the other controller's order (0i-F ⇄ 0i-C)",
+       [](SpecCase c) {
+         c.profile = c.profile == "fanuc-0i-c" ? "fanuc-0i-f" : "fanuc-0i-c";
+         return planned(c);
+       }},
+      {"pass-count", "makes one roughing pass too few (drops the last one)",
+       [](SpecCase c) {
+         return planned(c, [](Toolpath& t) {
+           const int last = lastPass(t);
+           eraseIf(t, [&](const Move& m) { return m.phase == "pass" && m.pass == last && last > 0; });
+         });
+       }},
+      {"arc-direction", "cuts every arc the other way round (G02 ⇄ G03)", [](SpecCase c) { return planned(c, arcsReversed); }},
+      {"alarm-missed", "never raises the monotonic alarms (tolerates any turn-back)",
+       [](SpecCase c) {
+         c.params.push_back({"5145", 1000});
+         c.params.push_back({"5146", 1000});
+         return planned(c);
+       }},
+      {"alarm-raised-wrongly", "raises PS0064 on any shape with an arc",
+       [](SpecCase c) {
+         Toolpath t = planSpecCase(c);
+         const bool arcs = std::any_of(t.moves.begin(), t.moves.end(), [](const Move& m) { return m.shape != SegmentKind::Line; });
+         if (arcs && !t.alarm && !t.cycles.empty()) {
+           t.alarm = Alarm{"PS0064", alarmTitle("PS0064"), t.cycles.front().line, ""};
+           t.moves.clear();
+         }
+         return EngineResult::planned(std::move(t));
+       }},
+      {"start-not-returned", "does not return to the cycle start point at the end", [](SpecCase c) { return planned(c, noFinalReturn); }},
+  };
+  return all;
+}
+
+class MutantEngine : public Engine {
+ public:
+  explicit MutantEngine(const Fault& f) : fault_(f) {}
+  std::string name() const override { return "mutant:" + fault_.name; }
+  std::string description() const override { return "the reference with one fault: " + fault_.what; }
+  std::string version() const override { return name(); }
+  EngineResult run(const SpecCase& c) override {
+    try {
+      return fault_.run(c);
+    } catch (const NotSupported& e) {
+      return EngineResult::notApplicable(e.what());
+    } catch (const std::exception& e) {
+      return EngineResult::failed(e.what());
+    }
+  }
+
+ private:
+  const Fault& fault_;
+};
+
+}  // namespace
+
+std::unique_ptr<Engine> makeMutantEngine(const std::string& name) {
+  for (const Fault& f : faults()) {
+    if (f.name == name) return std::make_unique<MutantEngine>(f);
+  }
+  return nullptr;
+}
+
+const std::vector<std::pair<std::string, std::string>>& mutantFaults() {
+  static const std::vector<std::pair<std::string, std::string>> list = [] {
+    std::vector<std::pair<std::string, std::string>> l;
+    for (const Fault& f : faults()) l.push_back({f.name, f.what});
+    return l;
+  }();
+  return list;
+}
+
+}  // namespace cyclecert

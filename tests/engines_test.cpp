@@ -1,0 +1,177 @@
+// The engines and the check run: the reference passes every spec case, every mutant is detected,
+// an external process speaking JSON lines plugs in, and a crash, a hang, garbage or an oversized
+// reply is an engine failure for that case while the run goes on; results survive a killed run.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "harness/check_run.h"
+#include "harness/engines/engine.h"
+#include "harness/rule_catalogue.h"
+
+namespace cyclecert {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string source(const std::string& relative) { return std::string(CYCLECERT_SOURCE_DIR) + "/" + relative; }
+
+// A scratch folder with a specs/cases tree holding a few real cases.
+class CheckRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cyclecert-check-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    for (const char* id : {"fanuc-0i-f/g71/g01-head-stepped-shaft", "gsk/g72/first-infeed-g01", "fanuc-0i-f/g71/ps0064-z-reverse"}) {
+      const fs::path to = dir_ / "specs/cases" / (std::string(id) + ".json");
+      fs::create_directories(to.parent_path());
+      fs::copy_file(source("specs/cases/" + std::string(id) + ".json"), to);
+    }
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CheckOptions options() const { return {(dir_ / "specs").string(), (dir_ / "out").string(), false}; }
+  std::vector<nlohmann::json> results() const {
+    std::vector<nlohmann::json> lines;
+    std::ifstream in(dir_ / "out/results.jsonl");
+    std::string line;
+    while (std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
+    return lines;
+  }
+  std::string script(const std::string& name) const { return "sh " + source("tests/data/engines/" + name); }
+  std::string cli() const { return CYCLECERT_CLI; }
+
+  fs::path dir_;
+};
+
+TEST(Engines, ReferencePassesEverySpecCase) {
+  auto engine = makeEngine("reference");
+  std::ostringstream progress;
+  const fs::path out = fs::temp_directory_path() / ("cyclecert-check-ref-" + std::to_string(::getpid()));
+  const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), out.string(), false}, progress);
+  fs::remove_all(out);
+  EXPECT_EQ(s.fail, 0) << progress.str();
+  EXPECT_EQ(s.engineFailure, 0) << progress.str();
+  EXPECT_GT(s.pass, 90);
+}
+
+TEST(Engines, EveryMutantIsDetectedByCheck) {
+  const auto engines = listEngines();
+  int mutants = 0;
+  for (const auto& [name, description] : engines) {
+    if (name.rfind("mutant:", 0) != 0) continue;
+    ++mutants;
+    auto engine = makeEngine(name);
+    std::ostringstream progress;
+    const fs::path out = fs::temp_directory_path() / ("cyclecert-check-" + name.substr(7) + "-" + std::to_string(::getpid()));
+    const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), out.string(), false}, progress);
+    fs::remove_all(out);
+    EXPECT_GT(s.fail, 0) << name << " (" << description << ") escaped every spec case";
+  }
+  EXPECT_GE(mutants, 12);
+}
+
+TEST(Engines, UnknownEngineListsTheKnownOnes) {
+  try {
+    makeEngine("frobnicator");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("mutant:retract-angle"), std::string::npos);
+  }
+}
+
+TEST_F(CheckRun, AProcessSpeakingJsonLinesPlugsIn) {
+  auto engine = makeEngine("process:python3 " + source("examples/engine.py") + " " + cli());
+  std::ostringstream progress;
+  const CheckSummary s = runCheck(*engine, options(), progress);
+  EXPECT_EQ(s.pass, 3) << progress.str();
+  EXPECT_EQ(results().size(), 3u);
+}
+
+TEST_F(CheckRun, ACrashIsAnEngineFailureAndTheProcessIsRestarted) {
+  const std::string marker = (dir_ / "crashed").string();
+  auto engine = makeEngine("process:" + script("crash-on-first.sh") + " " + marker + " " + cli());
+  std::ostringstream progress;
+  const CheckSummary s = runCheck(*engine, options(), progress);
+  EXPECT_EQ(s.engineFailure, 1) << progress.str();
+  EXPECT_EQ(s.pass, 2) << progress.str();  // restarted, the next cases are answered
+  EXPECT_NE(progress.str().find("exited with status 3"), std::string::npos) << progress.str();
+}
+
+TEST_F(CheckRun, AHangIsStoppedByTheTimeout) {
+  EngineOptions o;
+  o.timeoutSeconds = 0.3;
+  auto engine = makeEngine("process:" + script("hang.sh"), o);
+  std::ostringstream progress;
+  const auto started = std::chrono::steady_clock::now();
+  const CheckSummary s = runCheck(*engine, options(), progress);
+  EXPECT_EQ(s.engineFailure, 3);
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(10));
+  EXPECT_NE(progress.str().find("no reply within"), std::string::npos) << progress.str();
+}
+
+TEST_F(CheckRun, GarbageAndOversizedRepliesAreEngineFailures) {
+  auto garbage = makeEngine("process:" + script("garbage.sh"));
+  std::ostringstream p1;
+  EXPECT_EQ(runCheck(*garbage, options(), p1).engineFailure, 3);
+  EXPECT_NE(p1.str().find("invalid JSON reply"), std::string::npos) << p1.str();
+  EngineOptions small;
+  small.maxReplyBytes = 1000;
+  auto huge = makeEngine("process:" + script("huge.sh"), small);
+  std::ostringstream p2;
+  EXPECT_EQ(runCheck(*huge, options(), p2).engineFailure, 3);
+  EXPECT_NE(p2.str().find("longer than 1000 bytes"), std::string::npos) << p2.str();
+}
+
+TEST_F(CheckRun, AKilledRunKeepsItsResultsAndResumes) {
+  const std::string engine = "process:" + script("answer-then-hang.sh") + " " + cli();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::setpgid(0, 0);  // its own group, killed whole below as a CI runner would kill a job
+    const std::string specs = (dir_ / "specs").string(), out = (dir_ / "out").string();
+    ::execl(CYCLECERT_CLI, "cyclecert", "check", "--engine", engine.c_str(), "--specs", specs.c_str(), "--out",
+            out.c_str(), "--timeout", "600", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Wait for the first result, then kill the run while the engine hangs on the second case.
+  for (int i = 0; i < 200 && results().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ::kill(-pid, SIGKILL);
+  ::waitpid(pid, nullptr, 0);
+  ASSERT_EQ(results().size(), 1u);
+  EXPECT_EQ(results()[0]["verdict"], "pass");
+  const auto first = results()[0];
+  // A torn last line, as a kill during a write would leave, is dropped on --resume.
+  std::ofstream(dir_ / "out/results.jsonl", std::ios::app) << R"({"engine": "x", "ca)";
+  auto reference = makeEngine("process:python3 " + source("examples/engine.py") + " " + cli());
+  CheckOptions o = options();
+  o.resume = true;
+  std::ostringstream progress;
+  // Resuming skips only the same engine's cases; this engine's name differs, so it runs all three.
+  const CheckSummary s = runCheck(*reference, o, progress);
+  EXPECT_EQ(s.skipped, 0);  // a different engine name: nothing of its own to skip
+  EXPECT_EQ(results().size(), 4u);  // the kept line + three new ones, the torn line gone
+  EXPECT_EQ(results()[0], first);
+}
+
+TEST_F(CheckRun, ResumeSkipsWhatIsDone) {
+  auto engine = makeEngine("reference");
+  std::ostringstream progress;
+  runCheck(*engine, options(), progress);
+  CheckOptions o = options();
+  o.resume = true;
+  const CheckSummary again = runCheck(*engine, o, progress);
+  EXPECT_EQ(again.skipped, 3);
+  EXPECT_EQ(again.pass, 0);
+  EXPECT_EQ(results().size(), 3u);
+}
+
+}  // namespace
+}  // namespace cyclecert
