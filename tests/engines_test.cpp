@@ -96,6 +96,21 @@ TEST_F(CheckRun, AProcessSpeakingJsonLinesPlugsIn) {
   EXPECT_EQ(results().size(), 3u);
 }
 
+// `check --engine linuxcnc` end to end, through the engine factory: every spec case gets an answer
+// from rs274 (a toolpath, an alarm, or not applicable), none an engine failure.
+TEST(Engines, LinuxCncAnswersEverySpecCaseThroughCheck) {
+  if (!fs::exists(fs::path(CYCLECERT_CLI).parent_path() / "linuxcnc/usr/bin/rs274"))
+    GTEST_SKIP() << "rs274 is not fetched (make rs274: harness/engines/linuxcnc/fetch-rs274.sh build)";
+  auto engine = makeEngine("linuxcnc");
+  std::ostringstream progress;
+  const fs::path out = fs::temp_directory_path() / ("cyclecert-check-linuxcnc-" + std::to_string(::getpid()));
+  const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), out.string(), false}, progress);
+  fs::remove_all(out);
+  EXPECT_EQ(s.engineFailure, 0) << progress.str();
+  EXPECT_GT(s.pass + s.fail, 0) << "no case was applicable to LinuxCNC";
+  EXPECT_GT(s.notApplicable, 0) << "FANUC-only cases (separate Δu/Δw, parameters) must not be translated";
+}
+
 TEST_F(CheckRun, ACrashIsAnEngineFailureAndTheProcessIsRestarted) {
   const std::string marker = (dir_ / "crashed").string();
   auto engine = makeEngine("process:" + script("crash-on-first.sh") + " " + marker + " " + cli());
