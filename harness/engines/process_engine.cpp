@@ -60,11 +60,9 @@ class ProcessEngine : public Engine {
     if (!reply.is_object()) return restartAfter("the reply is not a JSON object");
     try {
       if (reply.contains("toolpath")) return EngineResult::planned(toolpathFromJson(reply["toolpath"]));
-      if (reply.contains("alarm") && reply["alarm"].is_object() && reply["alarm"].contains("code")) {
+      if (reply.contains("alarm")) {
         Toolpath t;
-        const auto& a = reply["alarm"];
-        t.alarm = Alarm{a["code"].get<std::string>(), a.value("message", std::string()), a.value("line", 0),
-                        a.value("when", std::string())};
+        t.alarm = alarmFromJson(reply["alarm"], "alarm");
         return EngineResult::planned(std::move(t));
       }
       if (reply.contains("not_applicable")) return EngineResult::notApplicable(reply["not_applicable"].dump());

@@ -196,16 +196,17 @@ Move moveFromJson(const json& j, const std::string& where) {
   return m;
 }
 
+Alarm alarmFromJson(const json& a, const std::string& where) {
+  if (!a.is_object() || !a.contains("code") || !a["code"].is_string()) fail(where, "null or {\"code\": …, \"line\": …}");
+  return Alarm{a["code"], a.value("message", std::string()), a.value("line", 0), a.value("when", std::string())};
+}
+
 Toolpath toolpathFromJson(const json& j) {
   if (!j.is_object()) fail("(document)", "a toolpath object with \"moves\"");
   Toolpath t;
   if (j.contains("profile") && j["profile"].is_string()) t.profile = j["profile"];
   if (j.contains("plane") && j["plane"].is_string()) t.plane = j["plane"];
-  if (j.contains("alarm") && !j["alarm"].is_null()) {
-    const json& a = j["alarm"];
-    if (!a.is_object() || !a.contains("code") || !a["code"].is_string()) fail("/alarm", "null or {\"code\": …, \"line\": …}");
-    t.alarm = Alarm{a["code"], a.value("message", std::string()), a.value("line", 0), a.value("when", std::string())};
-  }
+  if (j.contains("alarm") && !j["alarm"].is_null()) t.alarm = alarmFromJson(j["alarm"], "/alarm");
   if (!j.contains("moves")) fail("/moves", "an array of moves (field missing)");
   if (!j["moves"].is_array()) fail("/moves", "an array of moves");
   if (j.contains("start")) t.start = pointFromJson(j["start"], "/start");

@@ -36,6 +36,8 @@ Point pointFromJson(const nlohmann::json& j, const std::string& where);
 // error too.
 Toolpath toolpathFromJson(const nlohmann::json& j);
 Move moveFromJson(const nlohmann::json& j, const std::string& where);
+// {"code": "PS0064", "message"?, "line"?, "when"?}; `where` names it in the error.
+Alarm alarmFromJson(const nlohmann::json& j, const std::string& where);
 
 std::string kindName(MoveKind k);
 std::string shapeName(SegmentKind s);
