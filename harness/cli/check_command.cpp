@@ -1,0 +1,74 @@
+// `cyclecert check` and `cyclecert engines`: the spec suite against one engine.
+#include <iomanip>
+#include <iostream>
+
+#include "harness/check_run.h"
+#include "harness/cli/cli_support.h"
+#include "harness/engines/engine.h"
+#include "harness/rule_catalogue.h"
+
+namespace cyclecert::cli {
+
+namespace {
+
+const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume] [--timeout S]
+
+Runs every spec case under DIR/cases (default: the repository's specs/) against engine E
+(`cyclecert engines`). A case passes when the engine meets its expectation — the toolpath within
+the case's tolerance, or the alarm — and every oracle finds nothing on its toolpath. Each result
+is appended to OUT/results.jsonl (default build/check) as soon as it is known, so a killed run keeps
+every result; --resume skips the cases already there.
+
+Options:
+  --engine E     reference | linuxcnc | process:COMMAND | mutant:NAME
+  --timeout S    per-case timeout for engines in another process (default 10)
+Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage.
+)HELP";
+
+const char* kEnginesHelp = R"HELP(Usage: cyclecert engines
+
+Lists the engines `check` can run: the reference, any external program speaking JSON lines
+(process:COMMAND, see the README), and the mutants (the reference with one seeded fault).
+)HELP";
+
+}  // namespace
+
+int commandCheck(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kCheckHelp;
+    return kExitOk;
+  }
+  std::string engineName;
+  CheckOptions options{defaultSpecsDir(), "build/check", false};
+  EngineOptions engineOptions;
+  const auto positional = parseOptions(
+      args,
+      {{"--engine", [&](const std::string& v) { engineName = v; }},
+       {"--specs", [&](const std::string& v) { options.specsDir = v; }},
+       {"--out", [&](const std::string& v) { options.outDir = v; }},
+       {"--resume", [&] { options.resume = true; }},
+       {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
+      "check");
+  if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
+  if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
+  const auto engine = makeEngine(engineName, engineOptions);
+  const CheckSummary s = runCheck(*engine, options, std::cerr);
+  std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable
+            << " not applicable, " << s.engineFailure << " engine failure(s)";
+  if (s.skipped) std::cout << ", " << s.skipped << " already done";
+  std::cout << "; results in " << options.outDir << "/results.jsonl\n";
+  return s.clean() ? kExitOk : kExitAlarm;
+}
+
+int commandEngines(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kEnginesHelp;
+    return kExitOk;
+  }
+  const auto positional = parseOptions(args, {}, "engines");
+  if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
+  for (const auto& [name, description] : listEngines()) std::cout << std::left << std::setw(28) << name << description << "\n";
+  return kExitOk;
+}
+
+}  // namespace cyclecert::cli

@@ -1,0 +1,58 @@
+#pragma once
+// What every `cyclecert` subcommand shares: exit codes, usage errors, reading and writing files,
+// and a small option table so that each command lists its options once.
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cyclecert::cli {
+
+// Exit codes (for CI): 0 success · 1 the controller alarmed / a case failed / findings · 2 bad
+// usage or unreadable input · 3 the program needs something the reference does not plan yet.
+constexpr int kExitOk = 0, kExitAlarm = 1, kExitUsage = 2, kExitNotSupported = 3;
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One option of a command: a flag (no value) or an option that takes the next argument.
+struct Option {
+  std::string name;
+  std::function<void(const std::string&)> withValue;
+  std::function<void()> flag;
+
+  Option(std::string n, std::function<void(const std::string&)> f) : name(std::move(n)), withValue(std::move(f)) {}
+  Option(std::string n, std::function<void()> f) : name(std::move(n)), flag(std::move(f)) {}
+};
+
+// Applies the options in `args` and returns the positional arguments ("-" counts as one). An
+// unknown option or a missing value is a UsageError that names the command's --help.
+std::vector<std::string> parseOptions(const std::vector<std::string>& args, const std::vector<Option>& table,
+                                      const std::string& command);
+
+bool wantsHelp(const std::vector<std::string>& args);
+std::string readFile(const std::string& path);
+void writeFile(const std::string& path, const std::string& text);  // "-" is standard output
+
+// A number option within [min, max]; names the option when the text is not one.
+double numberArg(const std::string& option, const std::string& text, double min, double max);
+
+// --param NAME=VALUE texts, validated, as (name, value) settings.
+std::vector<std::pair<std::string, double>> parsedParams(const std::vector<std::string>& texts);
+
+// The commands (one file each).
+int commandPlan(const std::vector<std::string>& args);
+int commandJudge(const std::vector<std::string>& args);
+int commandCheck(const std::vector<std::string>& args);
+int commandEngines(const std::vector<std::string>& args);
+int commandDiff(const std::vector<std::string>& args);
+int commandFuzz(const std::vector<std::string>& args);
+int commandMerge(const std::vector<std::string>& args);
+int commandRules(const std::vector<std::string>& args);
+int commandParams(const std::vector<std::string>& args);
+int commandProfiles(const std::vector<std::string>& args);
+
+}  // namespace cyclecert::cli
