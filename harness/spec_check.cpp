@@ -3,19 +3,14 @@
 #include <algorithm>
 
 #include "harness/toolpath_compare.h"
+#include "reference/model/alarms.h"
 
 namespace cyclecert {
 
 std::optional<std::string> unmetExpectation(const SpecCase& c, const Toolpath& actual, bool judgeWarnings) {
   if (c.expectedAlarm) {
     if (!actual.alarm) return "expected alarm " + c.expectedAlarm->code + ", but the cycle planned without alarm";
-    if (actual.alarm->code != c.expectedAlarm->code) {
-      return "expected alarm " + c.expectedAlarm->code + ", got " + actual.alarm->code + " (" + actual.alarm->message + ")";
-    }
-    if (c.expectedAlarm->line && *c.expectedAlarm->line != actual.alarm->line) {
-      return "expected alarm " + c.expectedAlarm->code + " at line " + std::to_string(*c.expectedAlarm->line) +
-             ", got it at line " + std::to_string(actual.alarm->line);
-    }
+    if (auto why = alarmMismatch(c.expectedAlarm->code, c.expectedAlarm->line, *actual.alarm)) return why;
     // "when" is the reference's annotation: judged when the engine gives it.
     if (c.expectedAlarm->when && !actual.alarm->when.empty() && *c.expectedAlarm->when != actual.alarm->when) {
       return "expected alarm " + c.expectedAlarm->code + " raised " + *c.expectedAlarm->when + ", got it raised " +

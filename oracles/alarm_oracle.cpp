@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "oracles/oracles.h"
+#include "reference/model/alarms.h"
 
 namespace cyclecert {
 
@@ -24,11 +25,9 @@ class AlarmOracle : public Oracle {
       m << "the engine planned what the rules forbid: expected alarm " << expected->code << " at line " << expected->line
         << " (" << expected->message << ")";
       out.push_back(finding(*this, std::nullopt, m.str()));
-    } else if (expected && (got->code != expected->code || got->line != expected->line)) {
-      std::ostringstream m;
-      m << "expected alarm " << expected->code << " at line " << expected->line << ", the engine raised " << got->code
-        << " at line " << got->line;
-      out.push_back(finding(*this, std::nullopt, m.str()));
+    } else if (expected) {
+      // FANUC codes compared exactly; an engine's own codes on the line only (alarms.h).
+      if (auto why = alarmMismatch(expected->code, expected->line, *got)) out.push_back(finding(*this, std::nullopt, *why));
     } else if (!expected && got) {
       out.push_back(finding(*this, std::nullopt,
                             "the engine alarmed (" + got->code + " at line " + std::to_string(got->line) +

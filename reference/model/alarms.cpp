@@ -36,4 +36,25 @@ CycleAlarm::CycleAlarm(std::string_view code, int line, std::string detail) {
 NotSupported::NotSupported(int line, const std::string& what)
     : std::runtime_error("line " + std::to_string(line) + ": " + what), line_(line) {}
 
+bool isFanucAlarmCode(std::string_view code) {
+  if (code.size() != 6 || code.substr(0, 2) != "PS") return false;
+  for (char ch : code.substr(2)) if (ch < '0' || ch > '9') return false;
+  return true;
+}
+
+std::optional<std::string> alarmMismatch(std::string_view expectedCode, std::optional<int> expectedLine,
+                                         const Alarm& got) {
+  const std::string expected(expectedCode);
+  if (isFanucAlarmCode(got.code) && got.code != expected) {
+    return "expected alarm " + expected + ", got " + got.code + " (" + got.message + ")";
+  }
+  // A foreign code without a line says only that it alarmed; with a line, the line is judged.
+  const bool lineGiven = isFanucAlarmCode(got.code) || got.line > 0;
+  if (expectedLine && lineGiven && *expectedLine != got.line) {
+    return "expected alarm " + expected + " at line " + std::to_string(*expectedLine) + ", got " + got.code +
+           " at line " + std::to_string(got.line) + (isFanucAlarmCode(got.code) ? "" : " (" + got.message + ")");
+  }
+  return std::nullopt;
+}
+
 }  // namespace cyclecert

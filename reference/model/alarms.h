@@ -1,6 +1,7 @@
 #pragma once
 // Controller alarms the reference raises, with FANUC 0i-F's codes. The seeds name PS0064, PS0065,
 // PS0325 and PS0329; the other codes come from FANUC 0i-F's alarm list (see specs/rules.json notes).
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -30,6 +31,15 @@ inline constexpr std::string_view kNotInMdi = "PS0067";            // multiple r
 
 // The controller's title for an alarm code ("FINISHING SHAPE IS NOT MONOTONOUS (FIRST AXIS)").
 std::string alarmTitle(std::string_view code);
+
+// Judging an engine's alarm against the one the rules call for. FANUC's codes (PS followed by four
+// digits) are compared exactly. An engine with codes of its own (LinuxCNC's "LINUXCNC", a vendor's
+// numbering) cannot be mapped onto FANUC's reliably — one message may stand for several FANUC
+// alarms — so it is judged on what it can be judged on: that it raised an alarm, and where (the
+// program line) when it names one. Returns what does not match, or nothing.
+bool isFanucAlarmCode(std::string_view code);
+std::optional<std::string> alarmMismatch(std::string_view expectedCode, std::optional<int> expectedLine,
+                                         const Alarm& got);
 
 // Thrown by the reference where the controller would stop with an alarm.
 class CycleAlarm : public std::exception {
