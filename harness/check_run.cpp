@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "harness/engine_diff.h"
 #include "harness/judging.h"
 #include "harness/spec_check.h"
 
@@ -20,6 +21,21 @@ std::optional<std::string> unmet(const SpecCase& c, const EngineResult& r, const
   const bool inProcess = engineName == "reference" || engineName.rfind("mutant:", 0) == 0;
   if (r.kind == EngineResult::Alarmed || r.kind == EngineResult::Planned) return unmetExpectation(c, r.path, inProcess);
   return std::string("no result");
+}
+
+// A case that must agree with a built-in engine: that engine runs the case now.
+std::optional<std::string> disagreement(const SpecCase& c, const EngineResult& r, const std::string& engineName) {
+  try {
+    const auto other = makeEngine(*c.agreesWith);
+    const EngineResult theirs = other->run(c);
+    if (theirs.kind == EngineResult::Failed || theirs.kind == EngineResult::NotApplicable) {
+      return "cannot compare with " + *c.agreesWith + ": " + kindName(theirs.kind) + ": " + theirs.detail;
+    }
+    if (auto d = compareEngineResults(theirs, *c.agreesWith, r, engineName, c.tolerance)) return d->text;
+  } catch (const std::exception& e) {
+    return "cannot compare with " + *c.agreesWith + ": " + e.what();
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -46,7 +62,15 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
     out.verdict = "fail";
     out.detail = *why;
   }
-  if (r.kind == EngineResult::Planned) {
+  if (c.agreesWith) {
+    if (const auto why = disagreement(c, r, engine.name())) {
+      out.verdict = "fail";
+      out.detail = *why;
+    }
+  }
+  // A planned toolpath is judged by every oracle; an alarm too when the case expects nothing in
+  // particular (the alarm oracle says whether the rules call for it).
+  if (r.kind == EngineResult::Planned || (r.kind == EngineResult::Alarmed && c.oraclesOnly)) {
     try {
       Toolpath path = r.path;
       const JudgeInput in = judgeInputFor(judgeRequestFor(c), std::move(path));
@@ -63,47 +87,14 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
   return out;
 }
 
-std::string resultLine(const CaseResult& r) {
-  nlohmann::json j{{"engine", r.engine},     {"case", r.caseId},   {"file", r.file},
-                   {"rules", r.rules},       {"verdict", r.verdict}, {"detail", r.detail},
-                   {"findings", findingsJson(r.findings)}, {"seconds", r.seconds}, {"seed", nullptr}};
-  return j.dump() + "\n";
-}
-
-namespace {
-
-// The (engine, case) pairs already in results.jsonl. A line cut short by a killed run is dropped:
-// the file is rewritten with the complete lines only.
-std::set<std::pair<std::string, std::string>> alreadyDone(const std::string& file) {
-  std::set<std::pair<std::string, std::string>> done;
-  std::vector<std::string> kept;
-  {
-    std::ifstream in(file);
-    std::string line;
-    while (std::getline(in, line)) {
-      try {
-        const auto j = nlohmann::json::parse(line);
-        done.insert({j.at("engine").get<std::string>(), j.at("case").get<std::string>()});
-        kept.push_back(line);
-      } catch (const std::exception&) {
-      }
-    }
-  }
-  std::ofstream out(file, std::ios::trunc);
-  for (const std::string& line : kept) out << line << "\n";
-  return done;
-}
-
-}  // namespace
-
 CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream& progress) {
-  std::filesystem::create_directories(options.outDir);
-  const std::string resultsFile = options.outDir + "/results.jsonl";
-  const auto done = options.resume ? alreadyDone(resultsFile) : std::set<std::pair<std::string, std::string>>{};
-  if (!options.resume) std::ofstream(resultsFile, std::ios::trunc);
-  std::ofstream results(resultsFile, std::ios::app);
+  ResultsFile results(options.outDir, options.resume);
+  const auto& done = results.done();
   CheckSummary s;
-  const auto files = findSpecCaseFiles(options.specsDir + "/cases");
+  auto files = findSpecCaseFiles(options.specsDir + "/cases");
+  if (!options.regressionsDir.empty() && std::filesystem::is_directory(options.regressionsDir)) {
+    for (auto& f : findSpecCaseFiles(options.regressionsDir)) files.push_back(std::move(f));
+  }
   const auto started = std::chrono::steady_clock::now();
   auto lastReport = started;
   for (std::size_t i = 0; i < files.size(); ++i) {
@@ -113,7 +104,7 @@ CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream&
       continue;
     }
     const CaseResult r = checkCase(engine, c);
-    results << resultLine(r) << std::flush;  // a killed run keeps every result written so far
+    results.append(r);  // a killed run keeps every result written so far
     if (r.verdict == "pass") ++s.pass;
     else if (r.verdict == "fail") ++s.fail;
     else if (r.verdict == "not-applicable") ++s.notApplicable;

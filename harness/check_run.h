@@ -8,23 +8,15 @@
 #include <vector>
 
 #include "harness/engines/engine.h"
-#include "oracles/judgement.h"
+#include "harness/results_file.h"
 
 namespace cyclecert {
-
-struct CaseResult {
-  std::string engine, caseId, file;
-  std::vector<std::string> rules;
-  std::string verdict;  // "pass", "fail", "not-applicable", "engine-failure"
-  std::string detail;
-  std::vector<Finding> findings;
-  double seconds = 0;
-};
 
 CaseResult checkCase(Engine& engine, const SpecCase& c);
 
 struct CheckOptions {
   std::string specsDir;  // holds cases/
+  std::string regressionsDir;  // shrunk fuzz failures (spec cases) run after the specs; "" for none
   std::string outDir;    // results.jsonl goes here
   bool resume = false;
 };
@@ -36,7 +28,5 @@ struct CheckSummary {
 
 // Runs the cases, reporting progress on `progress` for runs longer than a few seconds.
 CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream& progress);
-
-std::string resultLine(const CaseResult& r);  // one JSON line of results.jsonl
 
 }  // namespace cyclecert

@@ -43,4 +43,9 @@ std::string defaultSpecsDir() {
   return std::string(CYCLECERT_SOURCE_DIR) + "/specs";
 }
 
+std::string defaultRegressionsDir() {
+  if (const char* env = std::getenv("CYCLECERT_REGRESSIONS_DIR")) return env;
+  return std::string(CYCLECERT_SOURCE_DIR) + "/corpus/regressions";
+}
+
 }  // namespace cyclecert

@@ -20,5 +20,8 @@ RuleCatalogue loadRuleCatalogue(const std::string& path);  // throws std::runtim
 
 // The repository's specs/ directory (CYCLECERT_SPECS_DIR in the environment overrides it).
 std::string defaultSpecsDir();
+// Where `fuzz` writes shrunk failures as spec cases and `check` runs them (corpus/regressions, or
+// $CYCLECERT_REGRESSIONS_DIR).
+std::string defaultRegressionsDir();
 
 }  // namespace cyclecert

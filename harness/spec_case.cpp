@@ -30,10 +30,27 @@ std::string requiredString(const json& j, const char* key, const std::string& fi
   return v.get<std::string>();
 }
 
+void readTolerance(const json& expect, SpecCase& c) {
+  if (expect.contains("tolerance")) {
+    if (!expect["tolerance"].is_number() || expect["tolerance"].get<double>() <= 0) {
+      throw SpecError(c.file, "/expect/tolerance", "a positive number");
+    }
+    c.tolerance = expect["tolerance"].get<double>();
+  }
+}
+
 void readExpectation(const json& expect, SpecCase& c) {
-  if (!expect.is_object()) throw SpecError(c.file, "/expect", "an object with \"toolpath\" or \"alarm\"");
-  if (expect.contains("toolpath") == expect.contains("alarm")) {
-    throw SpecError(c.file, "/expect", "exactly one of \"toolpath\" and \"alarm\"");
+  if (!expect.is_object()) throw SpecError(c.file, "/expect", "an object with \"toolpath\", \"alarm\" or \"oracles\"");
+  if (expect.contains("toolpath") + expect.contains("alarm") + expect.contains("oracles") != 1) {
+    throw SpecError(c.file, "/expect", "exactly one of \"toolpath\", \"alarm\" and \"oracles\"");
+  }
+  if (expect.contains("oracles")) {
+    if (expect["oracles"] != "pass") throw SpecError(c.file, "/expect/oracles", "\"pass\"");
+    c.oraclesOnly = true;
+    if (expect.contains("agrees_with")) {
+      if (!expect["agrees_with"].is_string()) throw SpecError(c.file, "/expect/agrees_with", "an engine name");
+      c.agreesWith = expect["agrees_with"].get<std::string>();
+    }
   }
   if (expect.contains("alarm")) {
     const json& a = expect["alarm"];
@@ -58,6 +75,10 @@ void readExpectation(const json& expect, SpecCase& c) {
     c.expectedAlarm = alarm;
     return;
   }
+  if (c.oraclesOnly) {
+    readTolerance(expect, c);
+    return;
+  }
   const json& moves = expect["toolpath"];
   if (!moves.is_array() || moves.empty()) throw SpecError(c.file, "/expect/toolpath", "a non-empty array of moves");
   std::vector<Move> parsed;
@@ -77,12 +98,7 @@ void readExpectation(const json& expect, SpecCase& c) {
       c.expectedWarnings.push_back(w[i].get<std::string>());
     }
   }
-  if (expect.contains("tolerance")) {
-    if (!expect["tolerance"].is_number() || expect["tolerance"].get<double>() <= 0) {
-      throw SpecError(c.file, "/expect/tolerance", "a positive number");
-    }
-    c.tolerance = expect["tolerance"].get<double>();
-  }
+  readTolerance(expect, c);
 }
 
 }  // namespace

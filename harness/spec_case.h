@@ -39,6 +39,11 @@ struct SpecCase {
   double tolerance = 0.001;
   std::vector<std::string> expectedWarnings;  // substrings, each in one of the warnings
   std::optional<ExpectedAlarm> expectedAlarm;
+  // {"oracles": "pass"}: no expected toolpath or alarm — the oracles judge whatever the engine does
+  // (a shrunk fuzz case in corpus/regressions). With "agrees_with": ENGINE, the engine's result
+  // must also agree with that built-in engine's, run at the same time (never a recorded copy).
+  bool oraclesOnly = false;
+  std::optional<std::string> agreesWith;
   std::optional<ToolOffset> tool;             // the active tool's nose radius and tip direction
   bool mdi = false;                           // the program runs in MDI mode
   std::optional<CaseStock> stock;             // explicit stock (else implied by the cycle)

@@ -7,8 +7,7 @@
 
 namespace cyclecert {
 
-namespace {
-std::string describe(const Move& m) {
+std::string describeMove(const Move& m) {
   std::ostringstream s;
   s << kindName(m.kind) << " " << shapeName(m.shape) << " to (x " << m.to.x << ", z " << m.to.z << ")";
   if (m.center) s << " centre (x " << m.center->x << ", z " << m.center->z << ")";
@@ -16,10 +15,10 @@ std::string describe(const Move& m) {
   if (m.singleBlockStop) s << " (single-block stop)";
   return s.str();
 }
-}  // namespace
 
-std::optional<std::string> firstDivergence(const std::vector<Move>& expected, const std::vector<Move>& actual,
-                                           double tol) {
+std::optional<MoveDivergence> firstMoveDivergence(const std::vector<Move>& expected, const std::vector<Move>& actual,
+                                                  double tol, const std::string& expectedName,
+                                                  const std::string& actualName) {
   const std::size_t n = std::min(expected.size(), actual.size());
   for (std::size_t i = 0; i < n; ++i) {
     const Move& e = expected[i];
@@ -30,17 +29,21 @@ std::optional<std::string> firstDivergence(const std::vector<Move>& expected, co
     if (same && e.stopGiven) same = e.singleBlockStop == a.singleBlockStop;
     if (!same) {
       std::ostringstream s;
-      s << "move " << i << ": expected " << describe(e) << ", got " << describe(a);
-      return s.str();
+      s << "move " << i << ": " << expectedName << " " << describeMove(e) << ", " << actualName << " " << describeMove(a);
+      return MoveDivergence{i, s.str()};
     }
   }
-  if (expected.size() != actual.size()) {
-    std::ostringstream s;
-    s << "expected " << expected.size() << " moves, got " << actual.size();
-    if (actual.size() > n) s << "; first extra move " << n << ": " << describe(actual[n]);
-    else s << "; first missing move " << n << ": " << describe(expected[n]);
-    return s.str();
-  }
+  if (expected.size() == actual.size()) return std::nullopt;
+  std::ostringstream s;
+  s << expectedName << " " << expected.size() << " moves, " << actualName << " " << actual.size();
+  if (actual.size() > n) s << "; first extra move " << n << ": " << describeMove(actual[n]);
+  else s << "; first missing move " << n << ": " << describeMove(expected[n]);
+  return MoveDivergence{n, s.str()};
+}
+
+std::optional<std::string> firstDivergence(const std::vector<Move>& expected, const std::vector<Move>& actual,
+                                           double tol) {
+  if (auto d = firstMoveDivergence(expected, actual, tol)) return d->text;
   return std::nullopt;
 }
 

@@ -38,7 +38,7 @@ class CheckRun : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  CheckOptions options() const { return {(dir_ / "specs").string(), (dir_ / "out").string(), false}; }
+  CheckOptions options() const { return {(dir_ / "specs").string(), "", (dir_ / "out").string(), false}; }
   std::vector<nlohmann::json> results() const {
     std::vector<nlohmann::json> lines;
     std::ifstream in(dir_ / "out/results.jsonl");
@@ -56,7 +56,7 @@ TEST(Engines, ReferencePassesEverySpecCase) {
   auto engine = makeEngine("reference");
   std::ostringstream progress;
   const fs::path out = fs::temp_directory_path() / ("cyclecert-check-ref-" + std::to_string(::getpid()));
-  const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), out.string(), false}, progress);
+  const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), defaultRegressionsDir(), out.string(), false}, progress);
   fs::remove_all(out);
   EXPECT_EQ(s.fail, 0) << progress.str();
   EXPECT_EQ(s.engineFailure, 0) << progress.str();
@@ -72,7 +72,7 @@ TEST(Engines, EveryMutantIsDetectedByCheck) {
     auto engine = makeEngine(name);
     std::ostringstream progress;
     const fs::path out = fs::temp_directory_path() / ("cyclecert-check-" + name.substr(7) + "-" + std::to_string(::getpid()));
-    const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), out.string(), false}, progress);
+    const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), defaultRegressionsDir(), out.string(), false}, progress);
     fs::remove_all(out);
     EXPECT_GT(s.fail, 0) << name << " (" << description << ") escaped every spec case";
   }
@@ -104,7 +104,7 @@ TEST(Engines, LinuxCncAnswersEverySpecCaseThroughCheck) {
   auto engine = makeEngine("linuxcnc");
   std::ostringstream progress;
   const fs::path out = fs::temp_directory_path() / ("cyclecert-check-linuxcnc-" + std::to_string(::getpid()));
-  const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), out.string(), false}, progress);
+  const CheckSummary s = runCheck(*engine, {defaultSpecsDir(), defaultRegressionsDir(), out.string(), false}, progress);
   fs::remove_all(out);
   EXPECT_EQ(s.engineFailure, 0) << progress.str();
   EXPECT_GT(s.pass + s.fail, 0) << "no case was applicable to LinuxCNC";

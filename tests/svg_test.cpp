@@ -342,5 +342,94 @@ TEST(Svg, NeverWritesNanOrInf) {
   EXPECT_EQ(lower(svg).find("inf"), std::string::npos);
 }
 
+// ---- the overlay (`cyclecert diff`) ---------------------------------------------------------
+
+// The example with a second engine's toolpath: the same moves but the first retract straight out.
+PlotInput overlayExample() {
+  PlotInput in = example();
+  Toolpath other = in.path;
+  other.moves[3].to = {-37, 25.75};
+  in.overlay = other;
+  in.pathLabel = "reference";
+  in.overlayLabel = "mutant:retract-angle";
+  Highlight marker;
+  marker.label = "first divergence: move 3";
+  marker.labelShown = true;
+  marker.points = {in.path.moves[3].to, other.moves[3].to};
+  in.highlights.push_back(marker);
+  return in;
+}
+
+TEST(Svg, DiffOverlayDrawsTheSecondToolpathInItsOwnGroupAndColours) {
+  const PlotInput in = overlayExample();
+  const ptree doc = parseSvg(renderToolpathSvg(in));
+  const std::vector<ptree> base = groupChildren(doc, "toolpath", "path");
+  const std::vector<ptree> overlay = groupChildren(doc, "overlay", "path");
+  ASSERT_EQ(base.size(), in.path.moves.size());
+  ASSERT_EQ(overlay.size(), in.overlay->moves.size());
+  for (std::size_t i = 0; i < overlay.size(); ++i) {
+    SCOPED_TRACE("move " + std::to_string(i));
+    const bool isRapid = in.overlay->moves[i].kind == MoveKind::Rapid;
+    EXPECT_EQ(attr(overlay[i], "class"), isRapid ? "rapid" : "feed");
+    EXPECT_EQ(hasAttr(overlay[i], "stroke-dasharray"), isRapid);
+    EXPECT_NE(attr(overlay[i], "stroke"), attr(base[i], "stroke"));  // engine B in its own colours
+    // Drawn thinner over the first, so that both show where they coincide.
+    EXPECT_LT(std::stod(attr(overlay[i], "stroke-width")), std::stod(attr(base[i], "stroke-width")));
+  }
+  EXPECT_NE(attr(overlay[0], "stroke"), attr(overlay[2], "stroke"));  // its rapids and feeds differ
+  EXPECT_NE(attr(base[3], "d"), attr(overlay[3], "d"));
+  EXPECT_EQ(attr(base[5], "d"), attr(overlay[5], "d"));  // move 4 starts where move 3 ends
+}
+
+TEST(Svg, DiffOverlayLegendNamesBothToolpaths) {
+  const ptree doc = parseSvg(renderToolpathSvg(overlayExample()));
+  const auto labels = texts(doc, "legend-label");
+  EXPECT_TRUE(contains(labels, "reference (rapid, feed)"));
+  EXPECT_TRUE(contains(labels, "mutant:retract-angle (rapid, feed)"));
+  EXPECT_TRUE(contains(labels, "finish contour"));
+  EXPECT_TRUE(contains(labels, "rough contour"));
+
+  PlotInput longName = overlayExample();
+  longName.overlayLabel = "process:" + std::string(200, 'x');
+  for (const std::string& l : texts(parseSvg(renderToolpathSvg(longName)), "legend-label")) EXPECT_LT(l.size(), 80u) << l;
+}
+
+TEST(Svg, DiffMarkerRingsBothEndsAndShowsItsLabel) {
+  const PlotInput in = overlayExample();
+  const ptree doc = parseSvg(renderToolpathSvg(in));
+  int rings = 0;
+  for (const ptree& c : elements(doc, "circle")) rings += attr(c, "class") == "witness-point";
+  EXPECT_EQ(rings, 2);
+  EXPECT_EQ(texts(doc, "witness-label"), std::vector<std::string>{"first divergence: move 3"});
+
+  // A finding's label stays a tooltip only.
+  PlotInput finding = example();
+  finding.highlights.push_back(Highlight{"no-gouge: move 2", {}, {}, {{-37, 25.25}}, false});
+  EXPECT_TRUE(texts(parseSvg(renderToolpathSvg(finding)), "witness-label").empty());
+}
+
+TEST(Svg, DiffOverlayAlarmIsWrittenUnderTheFirst) {
+  PlotInput in = overlayExample();
+  in.overlay->moves.clear();
+  in.overlay->alarm = Alarm{"PS0064", "shape not monotonic", 6, ""};
+  const ptree doc = parseSvg(renderToolpathSvg(in));
+  const auto alarms = texts(doc, "alarm");
+  ASSERT_EQ(alarms.size(), 1u);
+  EXPECT_EQ(alarms[0], "ALARM (mutant:retract-angle) PS0064: shape not monotonic (line 6)");
+  EXPECT_EQ(groupChildren(doc, "overlay", "path").size(), 0u);
+
+  in.path.alarm = Alarm{"PS0062", "illegal cutting amount", 2, ""};
+  const auto both = texts(parseSvg(renderToolpathSvg(in)), "alarm");
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_EQ(both[0], "ALARM (reference) PS0062: illegal cutting amount (line 2)");
+}
+
+TEST(Svg, DiffWithoutOverlayThePictureIsUnchanged) {
+  const std::string svg = renderToolpathSvg(example());
+  EXPECT_EQ(svg.find("id=\"overlay\""), std::string::npos);
+  const auto labels = texts(parseSvg(svg), "legend-label");
+  EXPECT_EQ(labels, (std::vector<std::string>{"finish contour", "rough contour", "rapid", "feed"}));
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -13,7 +13,8 @@ namespace {
 
 const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume] [--timeout S]
 
-Runs every spec case under DIR/cases (default: the repository's specs/) against engine E
+Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
+failure kept as a spec case under corpus/regressions/, against engine E
 (`cyclecert engines`). A case passes when the engine meets its expectation — the toolpath within
 the case's tolerance, or the alarm — and every oracle finds nothing on its toolpath. Each result
 is appended to OUT/results.jsonl (default build/check) as soon as it is known, so a killed run keeps
@@ -22,6 +23,8 @@ every result; --resume skips the cases already there.
 Options:
   --engine E     reference | linuxcnc | process:COMMAND | mutant:NAME
   --timeout S    per-case timeout for engines in another process (default 10)
+  --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
+  --no-regressions    run the spec cases only
 Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage.
 )HELP";
 
@@ -39,13 +42,15 @@ int commandCheck(const std::vector<std::string>& args) {
     return kExitOk;
   }
   std::string engineName;
-  CheckOptions options{defaultSpecsDir(), "build/check", false};
+  CheckOptions options{defaultSpecsDir(), defaultRegressionsDir(), "build/check", false};
   EngineOptions engineOptions;
   const auto positional = parseOptions(
       args,
       {{"--engine", [&](const std::string& v) { engineName = v; }},
        {"--specs", [&](const std::string& v) { options.specsDir = v; }},
        {"--out", [&](const std::string& v) { options.outDir = v; }},
+       {"--regressions", [&](const std::string& v) { options.regressionsDir = v; }},
+       {"--no-regressions", [&] { options.regressionsDir.clear(); }},
        {"--resume", [&] { options.resume = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
       "check");

@@ -22,6 +22,10 @@ Commands:
              write the toolpath as JSON and SVG
   check      run every spec case against an engine (reference, process:COMMAND, mutant:NAME)
   engines    list the engines
+  diff       run two engines on one program or case; show the first divergence and an SVG overlay
+  fuzz       generated cases through an engine and every oracle (--vs: against a second
+             engine); failures shrunk, printed with their seed, kept in corpus/regressions
+  merge      join the results.jsonl of several runs (fuzz shards)
   judge      judge a toolpath (any engine's, as JSON) with every oracle
   rules      list the rule catalogue with, per rule, how many spec cases cite it
   params     list the machine parameters, their defaults and the rules they serve
@@ -58,6 +62,9 @@ int run(const std::vector<std::string>& argv) {
   if (command == "judge") return commandJudge(args);
   if (command == "check") return commandCheck(args);
   if (command == "engines") return commandEngines(args);
+  if (command == "diff") return commandDiff(args);
+  if (command == "fuzz") return commandFuzz(args);
+  if (command == "merge") return commandMerge(args);
   if (command == "profiles") return commandProfiles(args);
   throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
 }

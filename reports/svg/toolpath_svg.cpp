@@ -25,6 +25,9 @@ constexpr double kPlotRight = 875;
 constexpr double kPlotTop = 80;      // room for the title and the alarm
 constexpr double kPlotBottom = 545;  // room for the legend
 constexpr double kLegendY = 578;
+constexpr double kOverlayLegendY = 562;  // with an overlay the legend has two rows: 562 and 584
+constexpr double kLegendRowSpacing = 22;
+constexpr std::size_t kMaxLegendLabel = 48;  // characters of an engine name in the legend
 constexpr double kLabelSpacing = 14;  // minimum vertical distance between diameter labels
 constexpr std::size_t kMaxDiameterLabels = 12;
 
@@ -34,6 +37,11 @@ constexpr const char* kRapidColour = "#d62728";
 constexpr const char* kFeedColour = "#1f4fd6";
 constexpr const char* kAxisColour = "#666666";
 constexpr const char* kAlarmColour = "#c00000";
+constexpr const char* kHighlightColour = "#d400d4";
+// The overlay (a second engine's toolpath): colours none of the other elements use, so that its
+// rapids are not taken for the (orange, dashed) rough contour.
+constexpr const char* kOverlayRapidColour = "#9467bd";
+constexpr const char* kOverlayFeedColour = "#2ca02c";
 constexpr const char* kRapidDash = "6 4";
 constexpr const char* kRoughDash = "4 3";
 constexpr const char* kAxisDash = "10 3 2 3";  // dash-dot
@@ -281,6 +289,10 @@ Box drawingBounds(const PlotInput& in) {
   }
   for (std::size_t i = 0; i < in.path.moves.size(); ++i) box.add(moveSegment(in.path, i));
   for (Point p : startPoints(in.path)) box.add(p);
+  if (in.overlay && !in.overlay->moves.empty()) {  // an overlay without moves (an alarm) adds nothing
+    box.add(in.overlay->start);
+    for (std::size_t i = 0; i < in.overlay->moves.size(); ++i) box.add(moveSegment(*in.overlay, i));
+  }
   return box;
 }
 
@@ -301,10 +313,23 @@ std::string stockOutlines(const View& v, const std::vector<std::vector<Point>>& 
   return out;
 }
 
+// The label of a highlight that asks for it, beside its first drawable point (towards the plot's
+// centre when the point is near the right edge, so that the text stays on the canvas).
+std::string highlightLabel(const View& v, const Highlight& h) {
+  if (!h.labelShown) return {};
+  const auto p = std::find_if(h.points.begin(), h.points.end(), isFinite);
+  if (p == h.points.end()) return {};
+  const double x = v.px(p->z);
+  const double y = v.py(p->x);
+  const bool nearRight = x > kPlotRight - 200;
+  return textElement("witness-label", nearRight ? x - 10 : x + 10, y - 10, h.label,
+                     {12, kHighlightColour, nearRight ? "end" : "start", true});
+}
+
 // Findings' witnesses in magenta, over everything else.
 std::string highlightElements(const View& v, const std::vector<Highlight>& highlights) {
   if (highlights.empty()) return {};
-  const char* colour = "#d400d4";
+  const char* colour = kHighlightColour;
   std::string out = "<g id=\"findings\">\n";
   for (const Highlight& h : highlights) {
     out += "<g class=\"finding\"><title>" + svgEscape(h.label) + "</title>\n";
@@ -316,6 +341,7 @@ std::string highlightElements(const View& v, const std::vector<Highlight>& highl
                "\" r=\"6\" fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"2.5\"/>\n";
       }
     }
+    out += highlightLabel(v, h);
     out += "</g>\n";
   }
   return out + "</g>\n";
@@ -342,16 +368,30 @@ std::string contourPath(const View& v, const Contour& c, const std::string& cls,
   return pathElement(cls, contourPathData(v, c), st);
 }
 
-std::string toolpathMoves(const View& v, const Toolpath& path) {
-  std::string out = "<g id=\"toolpath\">\n";
-  const Stroke rapid{kRapidColour, 1.2, kRapidDash};
-  const Stroke feed{kFeedColour, 1.4};
+// Every move of `path` as one <path> in a group with the given id.
+std::string moveGroup(const View& v, const Toolpath& path, const char* id, const Stroke& rapid, const Stroke& feed) {
+  std::string out = "<g id=\"" + std::string(id) + "\">\n";
   for (std::size_t i = 0; i < path.moves.size(); ++i) {
     const bool isRapid = path.moves[i].kind == MoveKind::Rapid;
     out += pathElement(isRapid ? "rapid" : "feed", segmentPathData(v, moveSegment(path, i)),
                        isRapid ? rapid : feed);
   }
   return out + "</g>\n";
+}
+
+// Under an overlay the first toolpath is drawn wider, the overlay thinner on top of it: where the
+// two coincide the overlay's colour runs inside the first's.
+Stroke rapidStroke(bool underOverlay) { return {kRapidColour, underOverlay ? 2.8 : 1.2, kRapidDash}; }
+Stroke feedStroke(bool underOverlay) { return {kFeedColour, underOverlay ? 3.2 : 1.4}; }
+const Stroke kOverlayRapid{kOverlayRapidColour, 1.3, kRapidDash};
+const Stroke kOverlayFeed{kOverlayFeedColour, 1.5};
+
+std::string toolpathMoves(const View& v, const Toolpath& path, bool underOverlay) {
+  return moveGroup(v, path, "toolpath", rapidStroke(underOverlay), feedStroke(underOverlay));
+}
+
+std::string overlayMoves(const View& v, const Toolpath& overlay) {
+  return moveGroup(v, overlay, "overlay", kOverlayRapid, kOverlayFeed);
 }
 
 // Where a pass number goes: just behind the start of the pass's first cut (opposite to the cut's
@@ -445,32 +485,80 @@ std::string diameterLabels(const View& v, const Contour& finish) {
   return out + "</g>\n";
 }
 
-std::string legend() {
-  struct Entry {
-    const char* label;
-    Stroke stroke;
-  };
-  const std::array<Entry, 4> entries{{{"finish contour", {kFinishColour, 2}},
-                                      {"rough contour", {kRoughColour, 1, kRoughDash}},
-                                      {"rapid", {kRapidColour, 1.2, kRapidDash}},
-                                      {"feed", {kFeedColour, 1.4}}}};
+// A label that fits the legend: long engine names ("process:python3 …") are cut with an ellipsis.
+std::string legendText(const std::string& label, const char* fallback) {
+  if (label.empty()) return fallback;
+  if (label.size() <= kMaxLegendLabel) return label;
+  std::size_t cut = kMaxLegendLabel - 1;
+  while (cut > 0 && (static_cast<unsigned char>(label[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+  return label.substr(0, cut) + "\u2026";
+}
+
+std::string legendEntry(double x, double y, const std::string& label, const Stroke& stroke) {
+  return lineElement("legend-sample", x, y - 4, x + 30, y - 4, stroke) +
+         textElement("legend-label", x + 36, y, label, {12, "#222222", "start", false});
+}
+
+// One toolpath's row of an overlay legend: its rapid and feed samples, then its name.
+std::string legendToolpathRow(double x, double y, const std::string& label, const Stroke& rapid, const Stroke& feed) {
+  return lineElement("legend-sample", x, y - 4, x + 24, y - 4, rapid) +
+         lineElement("legend-sample", x + 30, y - 4, x + 54, y - 4, feed) +
+         textElement("legend-label", x + 60, y, label + " (rapid, feed)", {12, "#222222", "start", false});
+}
+
+std::string legend(const PlotInput& in) {
   std::string out = "<g id=\"legend\">\n";
-  double x = kPlotLeft;
-  for (const Entry& e : entries) {
-    out += lineElement("legend-sample", x, kLegendY - 4, x + 30, kLegendY - 4, e.stroke);
-    out += textElement("legend-label", x + 36, kLegendY, e.label, {12, "#222222", "start", false});
-    x += 160;
+  if (!in.overlay) {
+    struct Entry {
+      const char* label;
+      Stroke stroke;
+    };
+    const std::array<Entry, 4> entries{{{"finish contour", {kFinishColour, 2}},
+                                        {"rough contour", {kRoughColour, 1, kRoughDash}},
+                                        {"rapid", rapidStroke(false)},
+                                        {"feed", feedStroke(false)}}};
+    double x = kPlotLeft;
+    for (const Entry& e : entries) {
+      out += legendEntry(x, kLegendY, e.label, e.stroke);
+      x += 160;
+    }
+    return out + "</g>\n";
   }
+  // Two rows: the contours on the left, one row per toolpath on the right.
+  const double y1 = kOverlayLegendY;
+  const double y2 = kOverlayLegendY + kLegendRowSpacing;
+  out += legendEntry(kPlotLeft, y1, "finish contour", {kFinishColour, 2});
+  out += legendEntry(kPlotLeft, y2, "rough contour", {kRoughColour, 1, kRoughDash});
+  const double x = kPlotLeft + 170;
+  out += legendToolpathRow(x, y1, legendText(in.pathLabel, "toolpath"), rapidStroke(true), feedStroke(true));
+  out += legendToolpathRow(x, y2, legendText(in.overlayLabel, "overlay"), kOverlayRapid, kOverlayFeed);
   return out + "</g>\n";
 }
 
-std::string alarmBanner(const Alarm& alarm) {
-  std::string text = "ALARM " + alarm.code + ": " + alarm.message;
+// `who` names the toolpath when there are two (empty otherwise); `y` is the text's baseline.
+std::string alarmText(const Alarm& alarm, const std::string& who, double y) {
+  std::string text = "ALARM " + (who.empty() ? std::string() : "(" + who + ") ") + alarm.code + ": " + alarm.message;
   if (alarm.line > 0) text += " (line " + std::to_string(alarm.line) + ")";
+  return textElement("alarm", 20, y, text, {16, kAlarmColour, "start", true});
+}
+
+std::string alarmFrame() {
   return "<rect class=\"alarm-frame\" x=\"2\" y=\"2\" width=\"" + num(kCanvasWidth - 4) +
          "\" height=\"" + num(kCanvasHeight - 4) + "\" fill=\"none\" stroke=\"" + kAlarmColour +
-         "\" stroke-width=\"4\"/>\n" +
-         textElement("alarm", 20, 56, text, {16, kAlarmColour, "start", true});
+         "\" stroke-width=\"4\"/>\n";
+}
+
+// The alarm(s) in red under the title, the canvas framed in red: the first toolpath's on the first
+// line, the overlay's on the next.
+std::string alarmBanners(const PlotInput& in) {
+  const bool mine = in.path.alarm.has_value();
+  const bool overlays = in.overlay && in.overlay->alarm;
+  if (!mine && !overlays) return {};
+  std::string out = alarmFrame();
+  const std::string pathWho = in.overlay ? legendText(in.pathLabel, "toolpath") : std::string();
+  if (mine) out += alarmText(*in.path.alarm, pathWho, 56);
+  if (overlays) out += alarmText(*in.overlay->alarm, legendText(in.overlayLabel, "overlay"), mine ? 74 : 56);
+  return out;
 }
 
 }  // namespace
@@ -507,13 +595,14 @@ std::string renderToolpathSvg(const PlotInput& in) {
   out += diameterLabels(view, in.finish);
   out += contourPath(view, in.rough, "rough", {kRoughColour, 1, kRoughDash});
   out += contourPath(view, in.finish, "finish", {kFinishColour, 2});
-  out += toolpathMoves(view, in.path);
+  out += toolpathMoves(view, in.path, in.overlay.has_value());
+  if (in.overlay) out += overlayMoves(view, *in.overlay);
   out += passLabels(view, in.path);
   out += startMarkers(view, in.path);
   out += highlightElements(view, in.highlights);
-  out += legend();
+  out += legend(in);
   out += textElement("title", 20, 30, in.title, {18, "#000000", "start", true});
-  if (in.path.alarm) out += alarmBanner(*in.path.alarm);
+  out += alarmBanners(in);
   return out + "</svg>\n";
 }
 

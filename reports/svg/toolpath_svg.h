@@ -10,11 +10,22 @@
 // and the line z = 0 when in view; diameter labels "Ø54" for the x levels of the finish contour's
 // vertices (at most 12, never overlapping); and a legend.
 //
+// With an overlay (a second toolpath over the same contours: `cyclecert diff` draws engine B over
+// engine A), the overlay's moves go inside <g id="overlay"> (rapids dashed purple, feeds solid
+// green), drawn thinner over a widened first toolpath so that where the two coincide both stay
+// visible; the legend gets a second row and names both toolpaths (pathLabel, overlayLabel) with
+// their rapid and feed samples; the overlay's alarm, if any, is written under the first's. Its
+// start point and pass numbers are not drawn again. A highlight with `labelShown` writes its label
+// beside its first point (the divergence marker "first divergence: move N"); other highlights keep
+// the label as a tooltip only.
+//
 // The document never contains NaN or infinity (non-finite coordinates are left out of the scaling
 // and written as 0), and degenerate input (nothing to draw, a single point) still gives a valid
 // document.
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "reference/model/contour.h"
 #include "reference/model/toolpath.h"
@@ -27,6 +38,7 @@ struct Highlight {
   std::vector<std::vector<Point>> regions;       // filled
   std::vector<Segment> segments;                 // thick strokes
   std::vector<Point> points;                     // rings
+  bool labelShown = false;                       // also write the label as text beside the first point
 };
 
 struct PlotInput {
@@ -36,6 +48,11 @@ struct PlotInput {
   Toolpath path;
   std::vector<std::vector<Point>> stock;  // stock outline(s), drawn under everything, lightly filled
   std::vector<Highlight> highlights;      // findings' witnesses
+  // A second toolpath drawn over `path` (another engine's), and the legend's names for the two;
+  // without an overlay the labels are not used and the picture is as above.
+  std::optional<Toolpath> overlay;
+  std::string pathLabel;
+  std::string overlayLabel;
 };
 
 std::string renderToolpathSvg(const PlotInput& in);

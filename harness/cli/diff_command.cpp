@@ -1,0 +1,380 @@
+// `cyclecert diff`: two engines on one program or spec case — their outcomes, where they first
+// part (with the moves around it side by side), and an SVG of both toolpaths.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/cli/cli_support.h"
+#include "harness/engine_diff.h"
+#include "harness/engines/engine.h"
+#include "harness/reference_plan.h"
+#include "harness/spec_case.h"
+#include "harness/toolpath_compare.h"
+#include "reference/model/params.h"
+#include "reference/model/profile.h"
+#include "reports/svg/toolpath_svg.h"
+
+namespace cyclecert::cli {
+
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;  // the --json output, in the order the help lists its fields
+
+const char* kDiffHelp = R"HELP(Usage: cyclecert diff --engine A --vs B PROGRAM.nc|CASE.json [options]
+
+Runs engines A and B (`cyclecert engines`) on one program or spec case and compares what they
+planned, move by move: kind, shape, end point, centre and feed within the tolerance; alarms by code
+and line (an engine's own alarm codes are matched on the line). Shows each engine's outcome and,
+when they differ, the first divergence with the moves around it side by side ('>' marks it). A
+case's expectation is not judged here (that is `cyclecert check`): only the two engines are compared.
+
+Options:
+  --engine A           the first engine: reference | linuxcnc | process:COMMAND | mutant:NAME
+  --vs B               the engine to compare it with
+  --profile P          controller profile (default: the case's; for a program its "(profile: P)"
+                       header comment, else fanuc-0i-f)
+  --param NAME=VALUE   set a machine parameter by number or mnemonic (repeatable; applied after
+                       the case's)
+  --tolerance T        mm (default: the case's tolerance, else 0.001)
+  --context N          moves shown before and after the divergence (default 3)
+  --svg OUT            write an SVG of both toolpaths over the contours (A rapids dashed red, feeds
+                       blue; B rapids dashed purple, feeds green), the first divergence ringed
+  --timeout S          per-run timeout for engines in another process (default 10)
+  --json               the result as JSON on standard output instead of the text
+  --help               this help
+
+A file ending in .json is a spec case; anything else is a program.
+JSON: {"input", "profile", "tolerance", "engines": [{"name", "outcome", "moves", "alarm", "detail",
+       "seconds"}, …], "comparable", "agree", "divergence": null | {"text", "move": N | null},
+       "context": [{"move", "a", "b"}], "svg"}   (moves are numbered from 0)
+Exit: 0 the engines agree, 1 they diverge — or either engine is not applicable or failed, so
+they cannot be compared —, 2 bad usage or unreadable input.
+)HELP";
+
+struct DiffArgs {
+  std::string input, engineA, engineB, profile, svgOut;
+  std::vector<std::string> params;
+  std::optional<double> tolerance;
+  std::size_t context = 3;
+  EngineOptions engineOptions;
+  bool json = false;
+};
+
+DiffArgs parseDiffArgs(const std::vector<std::string>& args) {
+  DiffArgs d;
+  const auto positional = parseOptions(
+      args,
+      {{"--engine", [&](const std::string& v) { d.engineA = v; }},
+       {"--vs", [&](const std::string& v) { d.engineB = v; }},
+       {"--profile", [&](const std::string& v) { d.profile = v; }},
+       {"--param", [&](const std::string& v) { d.params.push_back(v); }},
+       {"--tolerance", [&](const std::string& v) { d.tolerance = numberArg("--tolerance", v, 0, 1000); }},
+       {"--context",
+        [&](const std::string& v) {
+          const double n = numberArg("--context", v, 0, 1000);
+          if (n != std::floor(n)) throw UsageError("--context expects a whole number of moves, got '" + v + "'");
+          d.context = static_cast<std::size_t>(n);
+        }},
+       {"--svg", [&](const std::string& v) { d.svgOut = v; }},
+       {"--timeout", [&](const std::string& v) { d.engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }},
+       {"--json", [&] { d.json = true; }}},
+      "diff");
+  if (positional.size() > 1) throw UsageError("more than one input given ('" + positional[0] + "', '" + positional[1] + "')");
+  if (positional.empty()) throw UsageError("give a PROGRAM.nc or CASE.json (see `cyclecert diff --help`)");
+  if (d.engineA.empty() || d.engineB.empty()) throw UsageError("give both --engine A and --vs B (see `cyclecert engines`)");
+  if (d.json && d.svgOut == "-") throw UsageError("--json and --svg - would both write to standard output");
+  d.input = positional.front();
+  return d;
+}
+
+bool isCaseFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".json";
+}
+
+// Sets parameter `name` in a case's "params" object, dropping any other key that names the same
+// parameter (number vs mnemonic), so the value given last is the one every engine applies.
+void setParam(json& params, const std::string& name, double value) {
+  const ParamSpec* spec = MachineParams::find(name);
+  for (auto it = params.begin(); it != params.end();) {
+    const ParamSpec* other = MachineParams::find(it.key());
+    if (spec && other && other->number == spec->number) it = params.erase(it);
+    else ++it;
+  }
+  params[name] = value;
+}
+
+// The rule IDs a bare program's case cites: its "(rules: …)" header comment (the corpus
+// convention), else the format rule of each cycle it calls. Metadata only — no engine acts on it —
+// but a valid case needs at least one.
+json rulesOfProgram(const std::string& text) {
+  static const std::regex header(R"(\(\s*rules\s*:\s*([^)]*)\))", std::regex::icase);
+  static const std::regex ruleId(R"(^[A-Z0-9_]+(\.[A-Z0-9_]+)*$)");
+  std::vector<std::string> rules;
+  std::set<std::string> seen;
+  auto add = [&](const std::string& id) {
+    if (std::regex_match(id, ruleId) && seen.insert(id).second) rules.push_back(id);
+  };
+  if (std::smatch m; std::regex_search(text, m, header)) {
+    std::istringstream list(std::regex_replace(m[1].str(), std::regex(","), " "));
+    for (std::string id; list >> id;) add(id);
+  }
+  if (rules.empty()) {
+    static const std::regex comment(R"(\([^)]*\))");
+    static const std::regex cycle(R"(G0*(7[0-3])(?![0-9.]))", std::regex::icase);
+    const std::string code = std::regex_replace(text, comment, " ");
+    for (auto it = std::sregex_iterator(code.begin(), code.end(), cycle); it != std::sregex_iterator(); ++it) {
+      const std::string g = (*it)[1].str();
+      add(g == "70" ? "G70.EX" : g == "71" ? "G71.FMT.ZX" : g == "72" ? "G72.FMT" : "G73.EX");
+    }
+  }
+  if (rules.empty()) add("G71.FMT.ZX");  // a program without a cycle: still one rule for a valid case
+  return rules;
+}
+
+// "<profile>/diff/<file stem>", within the schema's id pattern.
+std::string caseIdFor(const std::string& path, const std::string& profile) {
+  std::string name = std::filesystem::path(path).stem().string();
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.' && c != '-') c = '_';
+  }
+  if (name.empty() || name[0] == '.' || name[0] == '-') name = "program" + name;
+  return profile + "/diff/" + name;
+}
+
+// A bare program as a spec case, because that is what every engine takes (a process engine receives
+// `raw`, so it must be a whole valid case). It has no hand-derived expectation, so it says only
+// {"oracles": "pass"} (the kind a shrunk fuzz case has: whoever judges it runs the oracles, nothing
+// is compared with a made-up toolpath). `diff` itself never judges the expectation: it only
+// compares the two engines.
+SpecCase caseForProgram(const std::string& path, const DiffArgs& a) {
+  const std::string text = readFile(path);
+  std::string profile = a.profile.empty() ? profileFromHeader(text) : a.profile;
+  if (profile.empty()) profile = "fanuc-0i-f";
+  json params = json::object();
+  for (const auto& [name, value] : parsedParams(a.params)) setParam(params, name, value);
+  json expect = {{"oracles", "pass"}};
+  if (a.tolerance && *a.tolerance > 0) expect["tolerance"] = *a.tolerance;  // the schema wants it positive
+  const json c = {{"id", caseIdFor(path, profile)},
+                  {"title", path},
+                  {"rules", rulesOfProgram(text)},
+                  {"profile", profile},
+                  {"params", params},
+                  {"program", text},
+                  {"expect", expect},
+                  {"derivation",
+                   "not a spec case: " + path + " wrapped by `cyclecert diff` to compare two engines on it; "
+                   "nothing was derived by hand"}};
+  // Invalid UTF-8 (a comment in a legacy encoding) becomes U+FFFD, the same for both engines.
+  return parseSpecCase(c.dump(-1, ' ', false, json::error_handler_t::replace), path);
+}
+
+SpecCase caseFromFile(const std::string& path, const DiffArgs& a) {
+  SpecCase c = parseSpecCase(readFile(path), path);
+  if (a.profile.empty() && a.params.empty()) return c;
+  // Overrides go into the JSON and the case is read again, so that `raw` (what process engines
+  // receive) and the parsed case stay the same case.
+  json raw = c.raw;
+  if (!a.profile.empty()) raw["profile"] = a.profile;
+  if (!raw.contains("params")) raw["params"] = json::object();
+  for (const auto& [name, value] : parsedParams(a.params)) setParam(raw["params"], name, value);
+  return parseSpecCase(raw.dump(), path);
+}
+
+// ---- reporting ------------------------------------------------------------------------------
+
+std::string outcomeText(const EngineResult& r) {
+  switch (r.kind) {
+    case EngineResult::Planned:
+      return "planned " + std::to_string(r.path.moves.size()) + " moves";
+    case EngineResult::Alarmed: {
+      std::string s = "alarm " + r.path.alarm->code + " at line " + std::to_string(r.path.alarm->line) + ": " +
+                      r.path.alarm->message;
+      if (!r.path.moves.empty()) s += " (after " + std::to_string(r.path.moves.size()) + " moves)";
+      return s;
+    }
+    case EngineResult::NotApplicable: return "not applicable: " + r.detail;
+    case EngineResult::Failed: return "engine failure: " + r.detail;
+  }
+  return "engine failure: " + r.detail;
+}
+
+bool comparable(const EngineResult& r) { return r.kind == EngineResult::Planned || r.kind == EngineResult::Alarmed; }
+
+// What the person reads when the engines agree.
+std::string agreementText(const EngineResult& a, const EngineResult& b, double tolerance) {
+  std::ostringstream s;
+  if (a.kind == EngineResult::Alarmed) {
+    s << "the engines agree (both alarm: " << a.path.alarm->code << " at line " << a.path.alarm->line << ", "
+      << b.path.alarm->code << " at line " << b.path.alarm->line << ")";
+  } else {
+    s << "the engines agree (" << a.path.moves.size() << " moves within " << tolerance << " mm)";
+  }
+  return s.str();
+}
+
+// Why the two could not be compared: the engine(s) that gave no toolpath and no alarm.
+std::string notComparableText(const EngineResult& a, const std::string& aName, const EngineResult& b,
+                              const std::string& bName) {
+  std::string who;
+  for (const auto& [r, name] : {std::pair{&a, &aName}, std::pair{&b, &bName}}) {
+    if (comparable(*r)) continue;
+    if (!who.empty()) who += " and ";
+    who += *name + (r->kind == EngineResult::NotApplicable ? " is not applicable" : " failed");
+  }
+  return "cannot compare the engines: " + who;
+}
+
+struct ContextRow {
+  std::size_t move;
+  std::optional<std::string> a, b;  // nothing where that engine has no such move
+};
+
+std::vector<ContextRow> contextRows(const Toolpath& a, const Toolpath& b, std::size_t at, std::size_t context) {
+  std::vector<ContextRow> rows;
+  const std::size_t count = std::max(a.moves.size(), b.moves.size());
+  if (count == 0) return rows;
+  const std::size_t first = at > context ? at - context : 0;
+  const std::size_t last = std::min(count - 1, at + context);
+  for (std::size_t i = first; i <= last; ++i) {
+    ContextRow row{i, {}, {}};
+    if (i < a.moves.size()) row.a = describeMove(a.moves[i]);
+    if (i < b.moves.size()) row.b = describeMove(b.moves[i]);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void printContext(std::ostream& out, const std::vector<ContextRow>& rows, std::size_t at, const std::string& aName,
+                  const std::string& bName) {
+  const std::string none = "(no move)";
+  std::size_t width = aName.size();
+  for (const ContextRow& r : rows) width = std::max(width, r.a.value_or(none).size());
+  out << "\n  " << std::setw(5) << "move" << "  " << std::left << std::setw(static_cast<int>(width)) << aName << "  "
+      << bName << std::right << "\n";
+  for (const ContextRow& r : rows) {
+    out << (r.move == at ? "> " : "  ") << std::setw(5) << r.move << "  " << std::left
+        << std::setw(static_cast<int>(width)) << r.a.value_or(none) << "  " << r.b.value_or(none) << std::right << "\n";
+  }
+  out << "\n";
+}
+
+ordered_json engineJson(const std::string& name, const EngineResult& r) {
+  ordered_json j = {{"name", name}, {"outcome", kindName(r.kind)}, {"moves", r.path.moves.size()}, {"alarm", nullptr},
+            {"detail", nullptr}, {"seconds", r.seconds}};
+  if (r.path.alarm) {
+    j["alarm"] = {{"code", r.path.alarm->code}, {"line", r.path.alarm->line}, {"message", r.path.alarm->message}};
+  }
+  if (!r.detail.empty()) j["detail"] = r.detail;
+  return j;
+}
+
+std::string svgLabel(const std::string& name, const EngineResult& r) {
+  return comparable(r) ? name : name + " (" + kindName(r.kind) + ")";
+}
+
+// Engine B's toolpath over engine A's, on A's contours (B's when A recorded no cycle), with a ring
+// at the end of the diverging move of each.
+std::string diffSvg(const std::string& title, const EngineResult& a, const std::string& aName, const EngineResult& b,
+                    const std::string& bName, const std::optional<EngineDivergence>& divergence) {
+  PlotInput in = plotInputFor(a.path.cycles.empty() ? b.path : a.path, title);
+  in.path = a.path;
+  in.overlay = b.path;
+  in.pathLabel = svgLabel(aName, a);
+  in.overlayLabel = svgLabel(bName, b);
+  if (divergence && divergence->move) {
+    const std::size_t i = *divergence->move;
+    Highlight marker;
+    marker.label = "first divergence: move " + std::to_string(i);
+    marker.labelShown = true;
+    if (i < a.path.moves.size()) marker.points.push_back(a.path.moves[i].to);
+    if (i < b.path.moves.size()) marker.points.push_back(b.path.moves[i].to);
+    in.highlights.push_back(marker);
+  }
+  return renderToolpathSvg(in);
+}
+
+}  // namespace
+
+int commandDiff(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kDiffHelp;
+    return kExitOk;
+  }
+  const DiffArgs a = parseDiffArgs(args);
+  // Both engines first, so that a misspelt --vs is reported before anything runs.
+  const auto engineA = makeEngine(a.engineA, a.engineOptions);
+  const auto engineB = makeEngine(a.engineB, a.engineOptions);
+  const SpecCase c = isCaseFile(a.input) ? caseFromFile(a.input, a) : caseForProgram(a.input, a);
+  if (!findProfile(c.profile)) throw UnknownProfile(c.profile);
+  const double tolerance = a.tolerance.value_or(c.tolerance);
+
+  // The same engine twice is allowed (is it deterministic?); its two runs need telling apart.
+  const bool sameName = a.engineA == a.engineB;
+  const std::string aName = sameName ? a.engineA + " [A]" : a.engineA;
+  const std::string bName = sameName ? a.engineB + " [B]" : a.engineB;
+
+  const EngineResult resultA = engineA->run(c);
+  const EngineResult resultB = engineB->run(c);
+  const bool canCompare = comparable(resultA) && comparable(resultB);
+  const auto divergence = compareEngineResults(resultA, aName, resultB, bName, tolerance);
+  const bool agree = canCompare && !divergence;
+  std::vector<ContextRow> rows;
+  if (divergence && divergence->move) rows = contextRows(resultA.path, resultB.path, *divergence->move, a.context);
+
+  if (!a.svgOut.empty()) {
+    // The file's name, not its path, so that the title stays on the canvas.
+    const std::string title = "diff: " + aName + " vs " + bName + " \u2014 " + std::filesystem::path(a.input).filename().string();
+    writeFile(a.svgOut, diffSvg(title, resultA, aName, resultB, bName, divergence));
+  }
+
+  if (a.json) {
+    ordered_json out = {{"input", a.input},
+                        {"profile", c.profile},
+                        {"tolerance", tolerance},
+                        {"engines", ordered_json::array({engineJson(aName, resultA), engineJson(bName, resultB)})},
+                        {"comparable", canCompare},
+                        {"agree", agree},
+                        {"divergence", nullptr},
+                        {"context", ordered_json::array()},
+                        {"svg", a.svgOut.empty() ? ordered_json(nullptr) : ordered_json(a.svgOut)}};
+    if (divergence) {
+      out["divergence"] = {{"text", divergence->text},
+                           {"move", divergence->move ? ordered_json(*divergence->move) : ordered_json(nullptr)}};
+    }
+    for (const ContextRow& r : rows) {
+      const auto text = [](const std::optional<std::string>& t) { return t ? ordered_json(*t) : ordered_json(nullptr); };
+      out["context"].push_back({{"move", r.move}, {"a", text(r.a)}, {"b", text(r.b)}});
+    }
+    // Replies of external engines may hold anything; the output must still be JSON.
+    std::cout << out.dump(2, ' ', false, ordered_json::error_handler_t::replace) << "\n";
+  } else {
+    std::cout << "diff of " << a.input << " (profile " << c.profile << ", tolerance " << tolerance << " mm)\n";
+    const std::size_t width = std::max(aName.size(), bName.size());
+    std::cout << "  " << std::left << std::setw(static_cast<int>(width)) << aName << "  " << outcomeText(resultA) << "\n"
+              << "  " << std::setw(static_cast<int>(width)) << bName << "  " << outcomeText(resultB) << std::right << "\n";
+    if (!canCompare) {
+      std::cout << notComparableText(resultA, aName, resultB, bName) << "\n";
+    } else if (agree) {
+      std::cout << agreementText(resultA, resultB, tolerance) << "\n";
+    } else {
+      std::cout << "first divergence: " << divergence->text << "\n";
+      if (!rows.empty()) printContext(std::cout, rows, *divergence->move, aName, bName);
+    }
+    if (!a.svgOut.empty() && a.svgOut != "-") std::cout << "svg written to " << a.svgOut << "\n";
+  }
+  return agree ? kExitOk : kExitAlarm;
+}
+
+}  // namespace cyclecert::cli

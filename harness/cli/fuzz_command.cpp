@@ -1,0 +1,167 @@
+// `cyclecert fuzz` (generated cases through an engine and the oracles, shrinking failures) and
+// `cyclecert merge` (the results of shards joined into one run).
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <set>
+#include <fstream>
+
+#include "harness/cli/cli_support.h"
+#include "harness/engines/engine.h"
+#include "harness/fuzz/fuzz_run.h"
+#include "harness/results_file.h"
+#include "harness/rule_catalogue.h"
+
+namespace cyclecert::cli {
+
+namespace {
+
+const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
+                      [--out DIR] [--regressions DIR | --no-save] [--resume] [--timeout S]
+
+Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
+degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
+RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk) and runs each through engine E and every oracle and,
+with --vs, compares E's result with engine B's. The first failure of each kind (an oracle,
+"diverges", "engine-failure") is shrunk to a minimal case, printed with the seed that regenerates
+it, and written as a spec case to the regressions directory, which `check` runs from then on.
+
+Each result is appended to OUT/results.jsonl as it is known (a killed run keeps every result);
+--resume continues a run, skipping the cases already there. Shards split one campaign: run
+--shard 1/4 … --shard 4/4 with the same --seed and --cases, then `cyclecert merge`.
+
+Options:
+  --engine E          reference | linuxcnc | process:COMMAND | mutant:NAME (`cyclecert engines`)
+  --vs B              compare every case with engine B (toolpaths move by move, alarms)
+  --cases N           the campaign's number of cases (default 2000 unless --time is given)
+  --time SECONDS      stop after this long
+  --seed S            the run's seed (default: random, printed); case i uses S + i·0x9E3779B97F4A7C15,
+                      so `--seed <case seed> --cases 1` regenerates one case
+  --shard K/N         run only the cases i with i mod N = K−1
+  --out DIR           where results.jsonl goes (default build/fuzz)
+  --regressions DIR   where shrunk failures are written (default corpus/regressions)
+  --no-save           do not write shrunk failures
+  --shrink-budget R   engine runs spent shrinking one failure at most (default 400)
+  --tolerance T       mm, for the oracles and --vs (default 0.001)
+  --resume            continue the run in OUT
+  --timeout S         per-case timeout for engines in another process (default 10)
+Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage.
+)HELP";
+
+const char* kMergeHelp = R"HELP(Usage: cyclecert merge --out DIR SHARD_DIR...
+
+Joins the results.jsonl of several runs (the shards of one fuzz campaign, or check runs of
+different engines) into DIR/results.jsonl. A result that appears in more than one input (the same
+engine and case) is kept once; torn lines of killed runs are skipped and counted.
+Exit: 0 merged, 2 bad usage or an input without results.jsonl.
+)HELP";
+
+std::uint64_t randomSeed() {
+  std::random_device device;
+  return (static_cast<std::uint64_t>(device()) << 32) ^ device();
+}
+
+void parseShard(const std::string& text, FuzzOptions& o) {
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw UsageError("--shard expects K/N, e.g. 2/4, got '" + text + "'");
+  o.shards = static_cast<int>(numberArg("--shard N", text.substr(slash + 1), 1, 100000));
+  o.shard = static_cast<int>(numberArg("--shard K", text.substr(0, slash), 1, o.shards));
+}
+
+}  // namespace
+
+int commandFuzz(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kFuzzHelp;
+    return kExitOk;
+  }
+  std::string engineName, vsName;
+  FuzzOptions options;
+  options.regressionsDir = defaultRegressionsDir();
+  std::optional<std::uint64_t> seed;
+  EngineOptions engineOptions;
+  const auto positional = parseOptions(
+      args,
+      {{"--engine", [&](const std::string& v) { engineName = v; }},
+       {"--vs", [&](const std::string& v) { vsName = v; }},
+       {"--cases", [&](const std::string& v) { options.cases = static_cast<long>(numberArg("--cases", v, 1, 1e12)); }},
+       {"--time", [&](const std::string& v) { options.seconds = numberArg("--time", v, 0.001, 1e7); }},
+       {"--seed",
+        [&](const std::string& v) {
+          try {
+            std::size_t used = 0;
+            seed = std::stoull(v, &used, 0);
+            if (used != v.size()) throw std::invalid_argument(v);
+          } catch (const std::exception&) {
+            throw UsageError("--seed expects a whole number from 0 to 2^64−1, got '" + v + "'");
+          }
+        }},
+       {"--shard", [&](const std::string& v) { parseShard(v, options); }},
+       {"--out", [&](const std::string& v) { options.outDir = v; }},
+       {"--regressions", [&](const std::string& v) { options.regressionsDir = v; }},
+       {"--no-save", [&] { options.regressionsDir.clear(); }},
+       {"--shrink-budget",
+        [&](const std::string& v) { options.shrinkBudget = static_cast<int>(numberArg("--shrink-budget", v, 0, 1e6)); }},
+       {"--tolerance", [&](const std::string& v) { options.tolerance = numberArg("--tolerance", v, 1e-9, 10); }},
+       {"--resume", [&] { options.resume = true; }},
+       {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
+      "fuzz");
+  if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
+  if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
+  options.seed = seed ? *seed : randomSeed();
+  const auto engine = makeEngine(engineName, engineOptions);
+  const auto vs = vsName.empty() ? nullptr : makeEngine(vsName, engineOptions);
+  std::cerr << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": seed " << options.seed;
+  if (options.shards > 1) std::cerr << ", shard " << options.shard << "/" << options.shards;
+  std::cerr << " (reproduce the run with --seed " << options.seed << ")\n";
+  const FuzzSummary s = runFuzz(*engine, vs.get(), options, std::cerr);
+  std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
+            << s.seconds << " s (" << static_cast<long>(s.run / std::max(s.seconds, 1e-9)) << "/s): " << s.pass
+            << " pass, " << s.fail << " fail, " << s.notApplicable << " not applicable, " << s.engineFailure
+            << " engine failure(s)";
+  if (s.skipped) std::cout << ", " << s.skipped << " already done";
+  std::cout << "; seed " << options.seed << "; results in " << options.outDir << "/results.jsonl\n";
+  for (const FuzzFailure& f : s.failures) {
+    std::cout << "  " << f.kind << ": seed " << f.caseSeed << (f.regressionFile.empty() ? "" : ", kept as " + f.regressionFile)
+              << "\n";
+  }
+  return s.clean() ? kExitOk : kExitAlarm;
+}
+
+int commandMerge(const std::vector<std::string>& args) {
+  if (wantsHelp(args)) {
+    std::cout << kMergeHelp;
+    return kExitOk;
+  }
+  std::string outDir;
+  const auto inputs = parseOptions(args, {{"--out", [&](const std::string& v) { outDir = v; }}}, "merge");
+  if (outDir.empty()) throw UsageError("give --out DIR (see `cyclecert merge --help`)");
+  if (inputs.empty()) throw UsageError("give the run directories to merge (see `cyclecert merge --help`)");
+  std::vector<std::string> merged;
+  std::set<std::pair<std::string, std::string>> seen;
+  std::size_t duplicates = 0, torn = 0;
+  for (const std::string& dir : inputs) {
+    const std::string file = dir + "/results.jsonl";
+    if (!std::filesystem::is_regular_file(file)) throw UsageError("no results in '" + dir + "' (expected " + file + ")");
+    const ResultLines lines = readResultLines(file);
+    torn += lines.skipped;
+    for (const std::string& line : lines.lines) {
+      const auto j = nlohmann::json::parse(line);
+      if (seen.insert({j.at("engine").get<std::string>(), j.at("case").get<std::string>()}).second) merged.push_back(line);
+      else ++duplicates;
+    }
+  }
+  std::filesystem::create_directories(outDir);
+  std::ofstream out(outDir + "/results.jsonl", std::ios::trunc);
+  for (const std::string& line : merged) out << line << "\n";
+  if (!out) throw UsageError("cannot write '" + outDir + "/results.jsonl'");
+  std::cout << "merged " << inputs.size() << " run(s): " << merged.size() << " results";
+  if (duplicates) std::cout << ", " << duplicates << " duplicate(s) dropped";
+  if (torn) std::cout << ", " << torn << " torn line(s) skipped";
+  std::cout << "; in " << outDir << "/results.jsonl\n";
+  return kExitOk;
+}
+
+}  // namespace cyclecert::cli

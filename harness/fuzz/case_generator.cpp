@@ -1,0 +1,212 @@
+#include "harness/fuzz/case_generator.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace cyclecert {
+
+namespace {
+
+std::string mm(long hundredths) {
+  std::ostringstream s;
+  s.precision(12);
+  s << hundredths / 100.0;
+  return s.str();
+}
+
+// A segment of the shape: a line of any slope (a 45° chamfer one time in four), or a quarter arc;
+// a zero-length line now and then (degenerate input an engine must survive).
+rc::Gen<FuzzSegment> genSegment() {
+  return rc::gen::apply(
+      [](int shape, int along, int up) {
+        switch (shape) {
+          case 0: return FuzzSegment{FuzzSegment::Line, along, up};
+          case 1: return FuzzSegment{FuzzSegment::Line, along, along};  // chamfer
+          case 2: return FuzzSegment{FuzzSegment::ConvexArc, along, along};
+          case 3: return FuzzSegment{FuzzSegment::ConcaveArc, along, along};
+          case 4: return FuzzSegment{FuzzSegment::Line, along, 0};  // along the cut axis
+          case 5: return FuzzSegment{FuzzSegment::Line, 0, up};     // a step
+          default: return FuzzSegment{FuzzSegment::Line, 0, 0};     // zero length
+        }
+      },
+      rc::gen::weightedElement<int>({{6, 0}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {3, 5}, {1, 6}}),
+      rc::gen::inRange(1, 1200), rc::gen::inRange(1, 800));
+}
+
+// Splits one line into two collinear halves (an engine must not treat the join as a corner).
+std::vector<FuzzSegment> withCollinearRun(std::vector<FuzzSegment> segs, int at) {
+  if (segs.empty()) return segs;
+  const std::size_t i = static_cast<std::size_t>(at) % segs.size();
+  FuzzSegment& s = segs[i];
+  if (s.kind != FuzzSegment::Line || s.along % 2 || s.up % 2 || (s.along == 0 && s.up == 0)) return segs;
+  s.along /= 2;
+  s.up /= 2;
+  segs.insert(segs.begin() + static_cast<long>(i), s);
+  return segs;
+}
+
+// Type II: some segments go down (pockets); the shape stays off the spindle axis and above B's
+// level is the caller's business (B is raised by the deepest dip).
+void makePockets(FuzzCase& c, const std::vector<int>& downs) {
+  for (std::size_t i = 0; i < c.segments.size() && i < downs.size(); ++i) {
+    if (downs[i] % 3 == 0 && c.segments[i].kind == FuzzSegment::Line) c.segments[i].up = -c.segments[i].up;
+  }
+}
+
+}  // namespace
+
+rc::Gen<FuzzCase> genFuzzCase() {
+  return rc::gen::apply(
+      [](std::vector<int> choice, std::vector<FuzzSegment> segs, std::vector<int> downs, int dd, int e, int du,
+         int dw, int above, int ahead, int b) {
+        choice.resize(16, 0);
+        FuzzCase c;
+        c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
+        c.cycle = choice[1] % 2 ? 72 : 71;
+        c.mirrorCut = choice[2] % 4 == 1;
+        c.mirrorDepth = choice[3] % 4 == 1;
+        c.typeII = choice[4] % 3 == 1;
+        c.headMotion = choice[5] == 9 ? 2 : choice[5] % 2;  // G02 (out of range) one time in ten
+        c.segments = withCollinearRun(std::move(segs), choice[6]);
+        if (c.segments.size() > 10) c.segments.resize(10);
+        if (c.segments.empty()) c.segments.push_back({FuzzSegment::Line, 500, 300});
+        if (c.typeII) makePockets(c, downs);
+        c.b = b;
+        int lowest = 0, x = 0;
+        for (const FuzzSegment& s : c.segments) lowest = std::min(lowest, x += s.up);
+        c.b -= lowest;  // pockets never reach below B's level minus the deepest dip
+        // Δd: valid, the whole depth in one pass (boundary), or 0 (out of range: PS0062).
+        c.depthOfCut = choice[7] == 9 ? 0 : dd;
+        c.retract = e;
+        // Allowances: zero (boundary), with the quadrant (valid), or against it (out of range).
+        c.allowanceDepth = choice[9] < 2 ? 0 : du;
+        c.allowanceCut = choice[10] < 3 ? 0 : dw;
+        // A above C by more than the depth allowance (valid), exactly on it (boundary), or below
+        // C's level (out of range: G71.LIMIT.HEIGHT).
+        c.startAbove = choice[11] == 0 ? std::max(0, c.allowanceDepth) : choice[11] == 9 ? -above / 4 - 1
+                                                                    : std::max(0, c.allowanceDepth) + above;
+        c.startAlong = std::max(0, c.allowanceCut) + ahead;
+        c.rf1 = choice[12] % 5 == 1;
+        c.dtp = choice[12] % 7 == 2;
+        c.r16 = choice[13] % 2;
+        c.nsp = choice[13] % 3 == 1;
+        c.rf2 = choice[14] % 4 == 1;
+        c.finish = choice[15] % 3 == 0;
+        return c;
+      },
+      rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
+      rc::gen::container<std::vector<FuzzSegment>>(genSegment()), rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)),
+      rc::gen::inRange(20, 400), rc::gen::inRange(1, 200), rc::gen::inRange(1, 100), rc::gen::inRange(1, 60),
+      rc::gen::inRange(1, 1500), rc::gen::inRange(0, 400), rc::gen::inRange(0, 3000));
+}
+
+namespace {
+
+// The frame placed in the machine: a frame point (along the cut axis, along the depth axis) as
+// program words. G71 cuts along Z, G72 along X; a mirrored axis runs the other way; offsets keep
+// every radius positive (≥ 1 mm) for either axis that carries X.
+struct Placement {
+  const FuzzCase& c;
+  long cutOffset = 0, depthOffset = 0;
+
+  std::string words(long cut, long depth) const {
+    const long pc = c.mirrorCut ? cutOffset - cut : cutOffset + cut;
+    const long pd = c.mirrorDepth ? depthOffset - depth : depthOffset + depth;
+    const long z = c.cycle == 71 ? pc : pd;
+    const long x = c.cycle == 71 ? pd : pc;  // a radius: the X word is the diameter
+    return "X" + mm(2 * x) + " Z" + mm(z);
+  }
+  // Convex in the frame is G03 for G71 (outer, towards the chuck); exchanging the axes and each
+  // mirror reverse the sense.
+  std::string arcCode(FuzzSegment::Kind k) const {
+    const int reversals = (c.cycle == 72) + c.mirrorCut + c.mirrorDepth;
+    const bool ccw = (k == FuzzSegment::ConvexArc) == (reversals % 2 == 0);
+    return ccw ? "G03" : "G02";
+  }
+  // Allowances along the frame's axes as the cycle's U (diameter) and W words.
+  std::string allowanceWords() const {
+    const long depth = c.mirrorDepth ? -c.allowanceDepth : c.allowanceDepth;
+    const long cut = c.mirrorCut ? -c.allowanceCut : c.allowanceCut;
+    const long x = c.cycle == 71 ? depth : cut, z = c.cycle == 71 ? cut : depth;
+    return "U" + mm(2 * x) + " W" + mm(z);
+  }
+};
+
+}  // namespace
+
+std::string fuzzProgram(const FuzzCase& c) {
+  // The frame's points: B, then each segment's end; C is the highest.
+  // Block ns moves the depth axis only (W0 / U0 in type II), so B stands at A's cut coordinate.
+  std::vector<std::pair<long, long>> points;
+  long along = c.startAlong, depth = c.b, top = c.b, bottom = c.b, behind = c.startAlong;
+  for (const FuzzSegment& s : c.segments) {
+    along -= s.along;
+    depth += s.up;
+    points.push_back({along, depth});
+    top = std::max(top, depth);
+    bottom = std::min(bottom, depth);
+    behind = std::min(behind, along);
+  }
+  const long startDepth = top + c.startAbove, startAlong = c.startAlong;
+  Placement place{c};
+  // Whichever axis carries X must stay ≥ 1 mm in radius over everything drawn.
+  const long margin = 100;
+  const bool cutIsX = c.cycle == 72;
+  const long cutLow = behind, cutHigh = startAlong, depthLow = std::min(bottom, startDepth), depthHigh = std::max(top, startDepth);
+  if (cutIsX) {
+    place.cutOffset = c.mirrorCut ? cutHigh + margin : -cutLow + margin;
+  } else {
+    place.depthOffset = c.mirrorDepth ? depthHigh + margin : -depthLow + margin;
+  }
+  std::ostringstream p;
+  p << "G00 " << place.words(startAlong, startDepth) << ";\n";
+  const std::string g = c.cycle == 71 ? "G71" : "G72";
+  p << g << (c.cycle == 71 ? " U" : " W") << mm(c.depthOfCut) << " R" << mm(c.retract) << ";\n";
+  p << g << " P10 Q20 " << place.allowanceWords() << " F0.2;\n";
+  // Block ns moves the depth axis only (type I), or both axes with a zero incremental word of the
+  // cut axis (type II).
+  const std::string bWords = place.words(startAlong, c.b);
+  const std::string depthWord = c.cycle == 71 ? bWords.substr(0, bWords.find(' ')) : bWords.substr(bWords.find(' ') + 1);
+  p << "N10 G0" << c.headMotion << " " << depthWord << (c.typeII ? (c.cycle == 71 ? " W0" : " U0") : "");
+  if (c.headMotion == 2) p << " R1";
+  p << ";\n";
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    const FuzzSegment& s = c.segments[i];
+    p << (i + 1 == c.segments.size() ? "N20 " : "");
+    if (s.kind == FuzzSegment::Line) p << "G01 " << place.words(points[i].first, points[i].second);
+    else p << place.arcCode(s.kind) << " " << place.words(points[i].first, points[i].second) << " R" << mm(s.along);
+    p << ";\n";
+  }
+  if (c.finish) p << "G70 P10 Q20;\n";
+  p << "M30;\n";
+  return p.str();
+}
+
+SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
+  nlohmann::json params = nlohmann::json::object();
+  if (c.rf1) params["RF1"] = 1;
+  if (c.dtp) params["DTP"] = 1;
+  if (c.r16) params["R16"] = 1;
+  if (c.nsp) params["NSP"] = 1;
+  if (c.rf2) params["RF2"] = 1;
+  const nlohmann::json j{
+      {"id", c.profile + "/g" + std::to_string(c.cycle) + "/fuzz-" + tag},
+      {"title", "fuzz case " + tag + ": " + describeFuzzCase(c)},
+      {"rules", {c.cycle == 71 ? "G71.QUAD" : "G72.FMT"}},  // the writer of a regression names the failing rules
+      {"profile", c.profile},
+      {"params", params},
+      {"program", fuzzProgram(c)},
+      {"expect", {{"oracles", "pass"}}},
+      {"derivation", "generated by cyclecert fuzz; no expected toolpath: every oracle judges what the engine does"}};
+  return parseSpecCase(j.dump(), "fuzz:" + tag);
+}
+
+std::string describeFuzzCase(const FuzzCase& c) {
+  std::ostringstream s;
+  s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
+    << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;
+  return s.str();
+}
+
+}  // namespace cyclecert

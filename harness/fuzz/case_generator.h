@@ -1,0 +1,65 @@
+#pragma once
+// The fuzzer's cases (`cyclecert fuzz`): RapidCheck generators of G71/G72 roughing programs, each
+// a spec case without an expectation (the oracles and, with --vs, a second engine judge it).
+//
+// A case is drawn in the cycle's own frame — cut axis z (cuts run towards −z), depth axis x (passes
+// go down towards −x) — and then placed in the machine: G71 cuts along Z with the depth along X,
+// G72 the other way round, and each axis may be mirrored, giving the four quadrants (outer/inner,
+// towards the chuck/away from it). In the frame the shape starts at B and every segment moves −z
+// (or stands still along z: a step) and +x (type I), or also −x (type II: pockets).
+//
+// What is drawn: lines, 45° chamfers, convex and concave quarter arcs (a quarter arc after a line
+// along the cut axis is tangent to it), degenerate segments (zero length, a line split into a
+// collinear run); parameters Δd, e, Δu, Δw valid, on their boundary (Δd = the whole depth, e = 0,
+// zero allowances, A exactly on C's level) and out of range (Δd = 0, a head block in G02, A below
+// C's level, allowances against the quadrant); machine parameters RF1, DTP, R16, NSP, RF2; the
+// profiles fanuc-0i-f, fanuc-0i-c and gsk. Lengths are whole hundredths of a mm, so the program
+// text is exact.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <rapidcheck.h>
+
+#include "harness/spec_case.h"
+
+namespace cyclecert {
+
+struct FuzzSegment {
+  enum Kind { Line, ConvexArc, ConcaveArc } kind = Line;
+  int along = 0;  // hundredths along −z of the frame (≥ 0)
+  int up = 0;     // hundredths along +x of the frame (negative: down, into a pocket; type II only)
+};
+
+struct FuzzCase {
+  std::string profile = "fanuc-0i-f";
+  int cycle = 71;             // 71 or 72
+  bool mirrorCut = false;     // the cut axis runs the other way (towards +Z for G71)
+  bool mirrorDepth = false;   // the depth axis runs the other way (inner work for G71)
+  bool typeII = false;
+  int headMotion = 0;         // block ns: 0 G00, 1 G01, 2 G02 (out of range: PS0065)
+  int b = 0;                  // B's depth coordinate, hundredths
+  int startAbove = 0;         // A above C's level, hundredths (negative: below, out of range)
+  int startAlong = 0;         // A's (and so B's: block ns moves the depth axis only) cut coordinate
+  std::vector<FuzzSegment> segments;
+  int depthOfCut = 100, retract = 50;       // Δd, e (hundredths; Δd 0 is out of range)
+  int allowanceDepth = 0, allowanceCut = 0;  // along the frame's depth and cut axes (radius, hundredths)
+  bool rf1 = false, dtp = false, r16 = false, nsp = false, rf2 = false;
+  bool finish = false;        // a G70 P Q follows the cycle
+};
+
+// The generator the fuzzer draws from.
+rc::Gen<FuzzCase> genFuzzCase();
+
+// The case's program text (FANUC syntax, one block per line).
+std::string fuzzProgram(const FuzzCase& c);
+
+// The case as a spec case: id "<profile>/g7x/fuzz-<tag>", the program, profile, parameters, and
+// an expectation of "oracles" only (specs/README.md). `tag` names it (e.g. the case seed).
+SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag);
+
+// The case for a person, one line: cycle, quadrant, type, segments, parameters.
+std::string describeFuzzCase(const FuzzCase& c);
+
+}  // namespace cyclecert

@@ -1,0 +1,70 @@
+#pragma once
+// `cyclecert fuzz`: generated cases (case_generator.h) through an engine and every oracle and,
+// with --vs, compared with a second engine. A failure is shrunk to a minimal case (RapidCheck's
+// shrink tree, keeping the same kind of failure), printed with the seed that regenerates it, and
+// written as a spec case to the regressions directory, which `check` runs.
+//
+// Case i of a run with seed S is generated from the case seed S + i·φ (φ = 0x9E3779B97F4A7C15),
+// so `--seed <case seed> --cases 1` regenerates exactly that case, and shard K of N runs the cases
+// with i mod N = K − 1 — the union of the shards is the unsharded run.
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "harness/engines/engine.h"
+#include "harness/fuzz/case_generator.h"
+#include "harness/results_file.h"
+
+namespace cyclecert {
+
+struct FuzzOptions {
+  std::uint64_t seed = 1;
+  std::optional<long> cases;      // stop after this many cases (of the whole campaign, all shards)
+  std::optional<double> seconds;  // stop after this long
+  int shard = 1, shards = 1;      // run shard K of N (1-based)
+  std::string outDir = "build/fuzz";
+  std::string regressionsDir;     // where shrunk failures are written ("" for nowhere)
+  bool resume = false;
+  int shrinkBudget = 400;         // engine runs spent shrinking one failure at most
+  double tolerance = 1e-3;        // mm, for the oracles and the comparison with --vs
+};
+
+inline constexpr long kDefaultFuzzCases = 2000;
+
+struct FuzzFailure {
+  std::uint64_t caseSeed = 0;
+  std::string kind;       // the oracle that found it, "diverges", or "engine-failure"
+  std::string detail;     // of the shrunk case
+  FuzzCase shrunk;
+  int shrinkRuns = 0;     // engine runs spent shrinking
+  std::string regressionFile;  // "" when not written
+};
+
+struct FuzzSummary {
+  long run = 0, pass = 0, fail = 0, notApplicable = 0, engineFailure = 0, skipped = 0;
+  double seconds = 0;
+  std::vector<FuzzFailure> failures;  // one per failing case, shrunk
+  bool clean() const { return fail == 0 && engineFailure == 0; }
+};
+
+std::uint64_t fuzzCaseSeed(std::uint64_t runSeed, long index);
+
+// The case a case seed generates (its RapidCheck shrink tree's root).
+FuzzCase generateFuzzCase(std::uint64_t caseSeed);
+
+// One generated case through `engine` (and `vs`): pass, fail (oracle finding or divergence),
+// not-applicable or engine-failure; `kind` names what failed.
+struct FuzzVerdict {
+  std::string verdict, kind, detail;
+  std::vector<Finding> findings;
+  double seconds = 0;
+};
+FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance);
+
+// Runs the campaign; progress (cases/s, failures so far) goes to `progress` every few seconds,
+// and each failure as it is found, with its seed and the command that reproduces it.
+FuzzSummary runFuzz(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress);
+
+}  // namespace cyclecert

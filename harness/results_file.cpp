@@ -1,0 +1,56 @@
+#include "harness/results_file.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "harness/judging.h"
+
+namespace cyclecert {
+
+std::string resultLine(const CaseResult& r) {
+  nlohmann::json j{{"engine", r.engine},     {"case", r.caseId},   {"file", r.file},
+                   {"rules", r.rules},       {"verdict", r.verdict}, {"detail", r.detail},
+                   {"findings", findingsJson(r.findings)}, {"seconds", r.seconds}, {"seed", nullptr}};
+  if (r.seed) j["seed"] = *r.seed;
+  if (!r.program.empty()) j["program"] = r.program;
+  if (!r.vs.empty()) j["vs"] = r.vs;
+  return j.dump() + "\n";
+}
+
+ResultLines readResultLines(const std::string& file) {
+  ResultLines out;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    try {
+      const auto j = nlohmann::json::parse(line);
+      if (!j.is_object() || !j.contains("engine") || !j.contains("case")) throw std::runtime_error("not a result");
+      out.lines.push_back(line);
+    } catch (const std::exception&) {
+      ++out.skipped;
+    }
+  }
+  return out;
+}
+
+ResultsFile::ResultsFile(const std::string& outDir, bool resume) : path_(outDir + "/results.jsonl") {
+  std::filesystem::create_directories(outDir);
+  std::vector<std::string> kept;
+  if (resume) {
+    kept = readResultLines(path_).lines;
+    for (const std::string& line : kept) {
+      const auto j = nlohmann::json::parse(line);
+      done_.insert({j.at("engine").get<std::string>(), j.at("case").get<std::string>()});
+    }
+  }
+  // Rewritten with the complete lines only, then appended to.
+  {
+    std::ofstream fresh(path_, std::ios::trunc);
+    for (const std::string& line : kept) fresh << line << "\n";
+  }
+  out_.open(path_, std::ios::app);
+}
+
+void ResultsFile::append(const CaseResult& r) { out_ << resultLine(r) << std::flush; }
+
+}  // namespace cyclecert
