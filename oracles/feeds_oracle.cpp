@@ -26,7 +26,10 @@ class FeedsOracle : public Oracle {
     const int d = c->depthDirection();
     for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
       const Point from = inFrame(*c, in.path.from(i)), to = inFrame(*c, in.path.moves[i].to);
-      const bool infeed = std::abs(from.z - aPrime.z) <= tol && std::abs(to.z - aPrime.z) <= tol && d * (to.x - from.x) > tol;
+      // Block ns spans A'→B': a move down the head line that ends at or above A' (a return to A
+      // from above it) is not along block ns.
+      const bool infeed = std::abs(from.z - aPrime.z) <= tol && std::abs(to.z - aPrime.z) <= tol &&
+                          d * (to.x - from.x) > tol && d * (to.x - aPrime.x) > tol;
       if (!infeed || (in.path.moves[i].kind == MoveKind::Rapid) == c->headIsRapid) continue;
       out.push_back(finding(*this, i, std::string("an infeed along the head block is a ") +
                                           (c->headIsRapid ? "cutting feed, but block ns is G00: it must be a rapid"

@@ -179,18 +179,19 @@ TEST(Material, BarStockMinusOnePass) {
   EXPECT_DOUBLE_EQ(model.area(), 1000);
   // A pass at x = 18 from z = 2 to z = −30 removes z ∈ [−30, 0] × x ∈ [18, 20] = 30 × 2 = 60.
   model.apply(line({2, 18}, {-30, 18}), MoveKind::Feed);
-  EXPECT_NEAR(model.area(), 940, 1e-9);
+  EXPECT_NEAR(model.area(), 940, 1e-5);
   // The same move as a rapid removes nothing (rapids are judged, not cut).
   model.apply(line({2, 16}, {-30, 16}), MoveKind::Rapid);
-  EXPECT_NEAR(model.area(), 940, 1e-9);
+  EXPECT_NEAR(model.area(), 940, 1e-5);
 }
 
 TEST(Material, RemovedByAFirstPassIsPassLengthTimesDepth) {
   const MaterialModel model = barModel();
   // The pass runs 30 mm inside the bar (z from 0 to −30), 2 mm deep: 60; the model is unchanged.
   const BgRegion removed = model.removedBy(line({2, 18}, {-30, 18}));
-  EXPECT_NEAR(areaOf(removed), 60, 1e-9);
-  EXPECT_TRUE(bg::equals(removed, regionFrom({{0, 18}, {-30, 18}, {-30, 20}, {0, 20}})));
+  EXPECT_NEAR(areaOf(removed), 60, 1e-5);
+  // The layer itself (the model removes kShadowSink below the move: see material_model.h).
+  EXPECT_NEAR(areaOf(without(removed, regionFrom({{0, 18}, {-30, 18}, {-30, 20}, {0, 20}}))), 0, 30 * 2 * kShadowSink);
   EXPECT_DOUBLE_EQ(model.area(), 1000);
 }
 
@@ -317,10 +318,10 @@ TEST(Material, ThickestAboveReplayedPassesIsTheDepthOfCut) {
   model.apply(line({2, 15.5}, {-20, 15.5}), MoveKind::Feed);
   model.apply(line({2, 13}, {-15, 13}), MoveKind::Feed);
   const BgRegion beyond = without(model.remaining(), partRegion(kRough, kOuter, 50, 0.001));
-  EXPECT_NEAR(areaOf(beyond), 67.5, 1e-9);
+  EXPECT_NEAR(areaOf(beyond), 67.5, 1e-4);
   const auto t = thickestAbove(beyond, kRough, kOuter, 0.001);
   ASSERT_TRUE(t);
-  EXPECT_NEAR(t->thickness, 2.5, 1e-9);
+  EXPECT_NEAR(t->thickness, 2.5, 1e-6);
 }
 
 TEST(Material, ThicknessBesideAShoulderIsMeasuredFromTheStepBelow) {
@@ -388,7 +389,7 @@ TEST(Material, TypeIPassesAndSemiFinishLeaveOnlyTheAllowance) {
     at = path[i].to;
   }
   // Left: the allowance band, 0.5 thick along x over z ∈ [−30, 2]: 32 × 0.5 = 16.
-  EXPECT_NEAR(model.area(), 16, 1e-9);
+  EXPECT_NEAR(model.area(), 16, 1e-5);
   const BgRegion beyond = without(model.remaining(), partRegion(kRough, kOuter, 50, 0.001));
   const auto t = thickestAbove(beyond, kRough, kOuter, 0.001);
   EXPECT_LE(t ? t->thickness : 0.0, 1e-6);
@@ -439,7 +440,7 @@ TEST(Material, TypeIAlongAFilletLeavesOnlyTheAllowance) {
     }
     model.apply(path[i].move, path[i].kind);
   }
-  EXPECT_NEAR(model.area(), 16, 1e-6);
+  EXPECT_NEAR(model.area(), 16, 1e-5);
   const auto t = thickestAbove(model.remaining(), rough, kOuter, 0.001);
   EXPECT_LE(t ? t->thickness : 0.0, 1e-6);
 }

@@ -68,6 +68,7 @@ std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame
 // One piece of a move's shadow: a path that is a graph over the cut axis (a line, or a flattened
 // sub-arc), and the region its rays sweep — the path, then the path moved by reach·away walked
 // back.
+
 struct ShadowPiece {
   std::vector<Point> path;
   double reach = 0;
@@ -75,14 +76,14 @@ struct ShadowPiece {
 };
 
 std::optional<ShadowPiece> shadowOfGraph(std::vector<Point> path, const DepthFrame& frame,
-                                         double reach) {
+                                         double reach, double sink) {
   if (std::abs(frame.cut(path.back()) - frame.cut(path.front())) <= kTidyDistance || !(reach > 0)) {
     return std::nullopt;  // a move along the depth axis sweeps no area
   }
   ShadowPiece piece;
   auto& ring = piece.polygon.outer();
   ring.reserve(2 * path.size() + 1);
-  for (Point p : path) ring.push_back(toBg(p));
+  for (Point p : path) ring.push_back(toBg(p - sink * frame.away()));
   const Point shift = reach * frame.away();
   for (auto it = path.rbegin(); it != path.rend(); ++it) ring.push_back(toBg(*it + shift));
   bg::correct(piece.polygon);  // closes the ring and orients it clockwise
@@ -97,14 +98,15 @@ std::optional<ShadowPiece> shadowOfGraph(std::vector<Point> path, const DepthFra
 // (region.h).
 std::vector<ShadowPiece> shadowPieces(const Segment& move, const DepthFrame& frame, double reach,
                                       double chordTolerance,
-                                      double farDepth = std::numeric_limits<double>::infinity()) {
+                                      double farDepth = std::numeric_limits<double>::infinity(),
+                                      double sink = 0) {
   std::vector<ShadowPiece> pieces;
   for (const Segment& part : splitWhereTangentIsAlong(move, frame)) {
     std::vector<Point> path = flatten(part, chordTolerance);
     double nearest = frame.depth(path.front());
     for (Point p : path) nearest = std::min(nearest, frame.depth(p));
     const double needed = std::min(reach, farDepth + kShadowMargin - nearest);
-    if (auto piece = shadowOfGraph(std::move(path), frame, needed)) {
+    if (auto piece = shadowOfGraph(std::move(path), frame, needed, sink)) {
       pieces.push_back(std::move(*piece));
     }
   }
@@ -319,8 +321,7 @@ bool meetsMaterial(const ShadowPiece& shadow, const bg::model::box<BgPoint>& env
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || remaining_.empty()) return;
   bool changed = false;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
-                                                farDepth())) {
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
     if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;  // cheap tests first: a shadow in air removes nothing
     BgRegion rest;
     bg::difference(remaining_, shadow.polygon, rest);
@@ -343,8 +344,7 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   std::vector<BgPolygon> parts;
   if (remaining_.empty()) return {};
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_,
-                                                farDepth())) {
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
     if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
     BgRegion part;
     bg::intersection(remaining_, shadow.polygon, part);

@@ -37,6 +37,13 @@ struct Crossing {
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance);
 
+// What a feed removes sinks kShadowSink below the move: material left by earlier passes often
+// ends on the very line a later feed follows (a pass ending on the profile, then the semi-finish
+// along it), and Boost's difference mishandles such nearly collinear edges — it can leave the whole
+// piece standing. A sunk edge crosses them cleanly. Areas and thicknesses the model reports may
+// differ from the exact ones by this much per mm of move.
+inline constexpr double kShadowSink = 1e-7;  // mm: far below every tolerance, far above rounding
+
 class MaterialModel {
  public:
   // `stock` is taken as it is (a region from stock.h); `away` as in DepthFrame; `reach` should

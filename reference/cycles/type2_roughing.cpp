@@ -153,7 +153,18 @@ class Type2Planner {
     const bool infeedAlongHead = headAlongDepth() && onHeadLine(q) &&
                                  std::all_of(nearWall.begin(), nearWall.end(), [&](const Segment& s) { return onHeadLine(s.to); });
     travelTo(q, commonDepth(previous_, id), infeedAlongHead, n.start.p, returnPointBefore(id, q));
-    if (!infeedAlongHead) followPath(nearWall, {"G71.T2.FOLLOW"});
+    if (!infeedAlongHead) {
+      // G71.HEAD.G0G1: where the near wall begins with block ns itself (a shape that falls from B
+      // below the first level), that part is positioned in block ns's mode — rapid after G00 —
+      // and only the shape beyond B is followed in cutting feed.
+      std::size_t head = 0;
+      while (headAlongDepth() && head < nearWall.size() && !nearWall[head].isArc() && onHeadLine(nearWall[head].from) &&
+             onHeadLine(nearWall[head].to)) {
+        ++head;
+      }
+      if (head > 0) emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, nearWall[head - 1].to, "pass", {"G71.HEAD.G0G1"});
+      followPath({nearWall.begin() + static_cast<long>(head), nearWall.end()}, {"G71.T2.FOLLOW"});
+    }
     emit(MoveKind::Feed, n.end.p, "pass", {cutRule(), "G71.T2.ORDER"});
     leave(n);
     previous_ = id;
@@ -184,6 +195,12 @@ class Type2Planner {
     if (infeedAlongHead) {
       // The type I infeed along a head block parallel to the depth axis (G72.STEP2).
       emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, cutStart, "pass", {"G72.STEP2", "G71.HEAD.G0G1"});
+      return;
+    }
+    if (headAlongDepth() && onHeadLine(q)) {
+      // The entry point is on block ns (B, where the shape falls away from it): the way down to it
+      // runs along block ns, in its mode (G71.HEAD.G0G1), as the type I infeeds do.
+      emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, q, "pass", {"G71.HEAD.G0G1"});
       return;
     }
     const double approach = commonDepth - c_.clearance;
