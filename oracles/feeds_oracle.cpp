@@ -20,16 +20,17 @@ class FeedsOracle : public Oracle {
     const CycleSpec* c = in.program.singleRoughingCycle();
     if (!c || (c->typeII && c->noRepeatedPath)) return;  // G71.NSP makes the second A'→B' a rapid
     const double tol = in.settings.tolerance();
-    const Point aPrime = inFrame(*c, c->start + c->allowance);
+    const Point aPrime = inFrame(*c, c->start + c->allowance), a = inFrame(*c, c->start);
     const Point head = inFrame(*c, c->shape.front().to) - inFrame(*c, c->shape.front().from);
     if (std::abs(head.z) > tol) return;  // a type II head block that is not along the depth axis
     const int d = c->depthDirection();
     for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
       const Point from = inFrame(*c, in.path.from(i)), to = inFrame(*c, in.path.moves[i].to);
-      // Block ns spans A'→B': a move down the head line that ends at or above A' (a return to A
-      // from above it) is not along block ns.
+      // Block ns spans A'→B': a move down the head line that ends at or above A', or at A (the
+      // return to the start point, which lies on the head line below A' when Δu points away), is
+      // not along block ns.
       const bool infeed = std::abs(from.z - aPrime.z) <= tol && std::abs(to.z - aPrime.z) <= tol &&
-                          d * (to.x - from.x) > tol && d * (to.x - aPrime.x) > tol;
+                          d * (to.x - from.x) > tol && d * (to.x - aPrime.x) > tol && !nearlyEqual(to, a, tol);
       if (!infeed || (in.path.moves[i].kind == MoveKind::Rapid) == c->headIsRapid) continue;
       out.push_back(finding(*this, i, std::string("an infeed along the head block is a ") +
                                           (c->headIsRapid ? "cutting feed, but block ns is G00: it must be a rapid"

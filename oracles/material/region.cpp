@@ -35,25 +35,26 @@ bool near(const BgPoint& a, const BgPoint& b) {
   return std::abs(a.x() - b.x()) <= kTidyDistance && std::abs(a.y() - b.y()) <= kTidyDistance;
 }
 
-// Whether `b` adds nothing between `a` and `c`: it lies within kTidyDistance of the line a–c (a
-// collinear point, or the tip of a spike when a and c coincide).
-bool isFlat(const BgPoint& a, const BgPoint& b, const BgPoint& c) {
+// Whether `b` adds nothing between `a` and `c`: it lies within `flatness` of the line a–c (a
+// collinear point, or the tip of a spike — a and c coincide, or c lies back along a–b).
+bool isFlat(const BgPoint& a, const BgPoint& b, const BgPoint& c, double flatness) {
   const double ux = c.x() - a.x(), uy = c.y() - a.y();
   const double length = std::sqrt(ux * ux + uy * uy);
   if (length <= kTidyDistance) return true;
   const double cross = ux * (b.y() - a.y()) - uy * (b.x() - a.x());
-  return std::abs(cross) <= kTidyDistance * length;
+  return std::abs(cross) <= flatness * length;
 }
 
 // The ring's points (closing repetition excluded) with near-duplicates, collinear points and spikes
-// removed, also across the closing point.
-std::vector<BgPoint> tidyPoints(const std::vector<BgPoint>& points) {
+// removed, also across the closing point. `flatness`: how far off the line through its neighbours
+// a point may stand and still count as on it.
+std::vector<BgPoint> tidyPoints(const std::vector<BgPoint>& points, double flatness = kTidyDistance) {
   std::vector<BgPoint> out;
   out.reserve(points.size());
   for (const BgPoint& p : points) {
     while (true) {
       if (!out.empty() && near(out.back(), p)) break;
-      if (out.size() >= 2 && isFlat(out[out.size() - 2], out.back(), p)) {
+      if (out.size() >= 2 && isFlat(out[out.size() - 2], out.back(), p, flatness)) {
         out.pop_back();
         continue;
       }
@@ -66,10 +67,10 @@ std::vector<BgPoint> tidyPoints(const std::vector<BgPoint>& points) {
   while (changed && out.size() >= 3) {
     changed = false;
     const std::size_t n = out.size();
-    if (near(out[n - 1], out[0]) || isFlat(out[n - 2], out[n - 1], out[0])) {
+    if (near(out[n - 1], out[0]) || isFlat(out[n - 2], out[n - 1], out[0], flatness)) {
       out.pop_back();
       changed = true;
-    } else if (isFlat(out[n - 1], out[0], out[1])) {
+    } else if (isFlat(out[n - 1], out[0], out[1], flatness)) {
       out.erase(out.begin());
       changed = true;
     }
@@ -99,7 +100,10 @@ double sizeOf(const bg::model::box<BgPoint>& box) {
 void tidyRing(Ring& ring, double dust) {
   std::vector<BgPoint> open(ring.begin(), ring.end());
   if (open.size() >= 2 && bg::equals(open.front(), open.back())) open.pop_back();
-  open = tidyPoints(open);
+  // A boolean's output is only as exact as its resolution: a spike or a kink thinner than that
+  // (Boost leaves such spikes where a cut ends on the line a later move follows) is noise, and a
+  // ring with a spike is invalid input to the next boolean.
+  open = tidyPoints(open, dust);
   ring.clear();
   if (open.empty() || isDust(open, dust)) return;
   ring.assign(open.begin(), open.end());
