@@ -49,9 +49,15 @@ std::vector<FuzzSegment> withCollinearRun(std::vector<FuzzSegment> segs, int at)
 // Type II: some segments go down (pockets); the shape stays off the spindle axis and above B's
 // level is the caller's business (B is raised by the deepest dip).
 void makePockets(FuzzCase& c, const std::vector<int>& downs) {
+  // A step (no length along the cut axis) never goes down: down and up again at one cut coordinate
+  // is a slot of no width, the shape running back over itself.
   for (std::size_t i = 0; i < c.segments.size() && i < downs.size(); ++i) {
-    if (downs[i] % 3 == 0 && c.segments[i].kind == FuzzSegment::Line) c.segments[i].up = -c.segments[i].up;
+    const FuzzSegment& s = c.segments[i];
+    if (downs[i] % 3 == 0 && s.kind == FuzzSegment::Line && s.along > 0) c.segments[i].up = -s.up;
   }
+  // G71.T2.DW0: with pockets the allowance along the cut axis is 0, else the manual itself says the
+  // tool cuts into a side wall — a gouge the rules predict is no finding against an engine.
+  c.allowanceCut = 0;
 }
 
 }  // namespace
@@ -71,22 +77,26 @@ rc::Gen<FuzzCase> genFuzzCase() {
         c.segments = withCollinearRun(std::move(segs), choice[6]);
         if (c.segments.size() > 10) c.segments.resize(10);
         if (c.segments.empty()) c.segments.push_back({FuzzSegment::Line, 500, 300});
+        // A shape with no length along the cut axis (steps only) has nothing to rough.
+        if (std::all_of(c.segments.begin(), c.segments.end(), [](const FuzzSegment& s) { return s.along == 0; })) {
+          c.segments.front().along = 100;
+        }
+        // Δd: valid, or 0 (out of range: PS0062).
+        c.depthOfCut = choice[7] == 9 ? 0 : dd;
+        c.retract = e;
+        // Allowances: zero (boundary) or with the quadrant (valid).
+        c.allowanceDepth = choice[9] < 2 ? 0 : du;
+        c.allowanceCut = choice[10] < 3 ? 0 : dw;
         if (c.typeII) makePockets(c, downs);
         c.b = b;
         int lowest = 0, x = 0;
         for (const FuzzSegment& s : c.segments) lowest = std::min(lowest, x += s.up);
         c.b -= lowest;  // pockets never reach below B's level minus the deepest dip
-        // Δd: valid, the whole depth in one pass (boundary), or 0 (out of range: PS0062).
-        c.depthOfCut = choice[7] == 9 ? 0 : dd;
-        c.retract = e;
-        // Allowances: zero (boundary), with the quadrant (valid), or against it (out of range).
-        c.allowanceDepth = choice[9] < 2 ? 0 : du;
-        c.allowanceCut = choice[10] < 3 ? 0 : dw;
-        // A above C by more than the depth allowance (valid), exactly on it (boundary), or below
-        // C's level (out of range: G71.LIMIT.HEIGHT).
-        c.startAbove = choice[11] == 0 ? std::max(0, c.allowanceDepth) : choice[11] == 9 ? -above / 4 - 1
-                                                                    : std::max(0, c.allowanceDepth) + above;
-        c.startAlong = std::max(0, c.allowanceCut) + ahead;
+        // A above C by more than the depth allowance (valid), exactly on it (boundary), or — with
+        // a depth allowance, where G71.LIMIT.HEIGHT forbids it — below C's level (out of range).
+        const bool belowC = choice[11] == 9 && c.allowanceDepth > 0;
+        c.startAbove = choice[11] == 0 ? c.allowanceDepth : belowC ? -above / 4 - 1 : c.allowanceDepth + above;
+        c.startAlong = ahead;
         c.rf1 = choice[12] % 5 == 1;
         c.dtp = choice[12] % 7 == 2;
         c.r16 = choice[13] % 2;

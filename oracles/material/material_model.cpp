@@ -318,19 +318,45 @@ bool meetsMaterial(const ShadowPiece& shadow, const bg::model::box<BgPoint>& env
 
 }  // namespace
 
+namespace {
+
+// Boost's booleans can fail on nearly degenerate input — edges that nearly coincide, a shadow's
+// corner on one of the material's — and return an operand instead of the result. Such a failure
+// shows as an area no exact result can have: the boolean is then redone with the shadow sunk
+// deeper (×10, ×100), which moves the coincidence away.
+constexpr double kSinkRetries[] = {kShadowSink, 10 * kShadowSink, 100 * kShadowSink};
+
+bool plausibleArea(double result, double atMost, double atLeast) {
+  const double slack = 1e-9 * std::max(1.0, atMost);
+  return result <= atMost + slack && result >= atLeast - slack;
+}
+
+}  // namespace
+
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || remaining_.empty()) return;
   bool changed = false;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
-    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;  // cheap tests first: a shadow in air removes nothing
-    BgRegion rest;
-    bg::difference(remaining_, shadow.polygon, rest);
-    Box operands = envelope_;
-    bg::expand(operands, bg::return_envelope<Box>(shadow.polygon));
-    tidy(rest, std::max(operands.max_corner().x() - operands.min_corner().x(),
-                        operands.max_corner().y() - operands.min_corner().y()));
-    remaining_ = std::move(rest);
-    changed = true;
+  for (const double sink : kSinkRetries) {
+    changed = false;
+    BgRegion material = remaining_;
+    bool plausible = true;
+    for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), sink)) {
+      if (!meetsMaterial(shadow, envelope_, frame_, material)) continue;  // cheap tests first: a shadow in air removes nothing
+      BgRegion rest;
+      bg::difference(material, shadow.polygon, rest);
+      const double before = bg::area(material), after = bg::area(rest);
+      plausible = plausible && plausibleArea(after, before, before - bg::area(shadow.polygon));
+      Box operands = envelope_;
+      bg::expand(operands, bg::return_envelope<Box>(shadow.polygon));
+      tidy(rest, std::max(operands.max_corner().x() - operands.min_corner().x(),
+                          operands.max_corner().y() - operands.min_corner().y()));
+      material = std::move(rest);
+      changed = true;
+    }
+    if (plausible || sink == kSinkRetries[std::size(kSinkRetries) - 1]) {
+      remaining_ = std::move(material);
+      break;
+    }
   }
   if (changed) updateEnvelope();
 }
@@ -342,15 +368,22 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 }
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {
-  std::vector<BgPolygon> parts;
   if (remaining_.empty()) return {};
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
-    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
-    BgRegion part;
-    bg::intersection(remaining_, shadow.polygon, part);
-    for (BgPolygon& p : part) parts.push_back(std::move(p));
+  const double available = bg::area(remaining_);
+  BgRegion removed;
+  for (const double sink : kSinkRetries) {
+    std::vector<BgPolygon> parts;
+    bool plausible = true;
+    for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), sink)) {
+      if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
+      BgRegion part;
+      bg::intersection(remaining_, shadow.polygon, part);
+      plausible = plausible && plausibleArea(bg::area(part), std::min(available, bg::area(shadow.polygon)), 0);
+      for (BgPolygon& p : part) parts.push_back(std::move(p));
+    }
+    removed = unionOf(parts);
+    if (plausible) break;
   }
-  BgRegion removed = unionOf(parts);
   tidy(removed);
   return removed;
 }
