@@ -218,6 +218,9 @@ std::string describeFuzzCase(const FuzzCase& c) {
   std::ostringstream s;
   s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
     << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;
+  for (const auto& [set, name] : {std::pair{c.rf1, "RF1"}, {c.dtp, "DTP"}, {c.r16, "R16"}, {c.nsp, "NSP"}, {c.rf2, "RF2"}}) {
+    if (set) s << ", " << name << "=1";
+  }
   return s.str();
 }
 

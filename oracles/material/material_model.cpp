@@ -322,13 +322,37 @@ namespace {
 
 // Boost's booleans can fail on nearly degenerate input — edges that nearly coincide, a shadow's
 // corner on one of the material's — and return an operand instead of the result. Such a failure
-// shows as an area no exact result can have: the boolean is then redone with the shadow sunk
-// deeper (×10, ×100), which moves the coincidence away.
-constexpr double kSinkRetries[] = {kShadowSink, 10 * kShadowSink, 100 * kShadowSink};
+// shows as an area no exact result can have.
+// An intersection with the material lies within the material's envelope.
+bool withinBox(const BgRegion& region, const bg::model::box<BgPoint>& box) {
+  if (region.empty()) return true;
+  const auto e = bg::return_envelope<bg::model::box<BgPoint>>(region);
+  const double slack = 1e-6 * std::max(1.0, std::max(box.max_corner().x() - box.min_corner().x(),
+                                                     box.max_corner().y() - box.min_corner().y()));
+  return e.min_corner().x() >= box.min_corner().x() - slack && e.min_corner().y() >= box.min_corner().y() - slack &&
+         e.max_corner().x() <= box.max_corner().x() + slack && e.max_corner().y() <= box.max_corner().y() + slack;
+}
 
 bool plausibleArea(double result, double atMost, double atLeast) {
   const double slack = 1e-9 * std::max(1.0, atMost);
   return result <= atMost + slack && result >= atLeast - slack;
+}
+
+// Whether every point of `polygon` lies in the shadow of the line a→b (a parallelogram: convex, so
+// its vertices decide), within `tolerance`.
+bool insideLineShadow(const BgPolygon& polygon, Point a, Point b, const DepthFrame& frame, double reach,
+                      double tolerance) {
+  double ca = frame.cut(a), da = frame.depth(a), cb = frame.cut(b), db = frame.depth(b);
+  if (ca > cb) {
+    std::swap(ca, cb);
+    std::swap(da, db);
+  }
+  const double slope = (db - da) / (cb - ca);
+  for (const BgPoint& v : polygon.outer()) {
+    const double c = frame.cut(fromBg(v)), h = frame.depth(fromBg(v)) - da - slope * (c - ca);
+    if (c < ca - tolerance || c > cb + tolerance || h < -tolerance || h > reach + tolerance) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -336,27 +360,30 @@ bool plausibleArea(double result, double atMost, double atLeast) {
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || remaining_.empty()) return;
   bool changed = false;
-  for (const double sink : kSinkRetries) {
-    changed = false;
-    BgRegion material = remaining_;
-    bool plausible = true;
-    for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), sink)) {
-      if (!meetsMaterial(shadow, envelope_, frame_, material)) continue;  // cheap tests first: a shadow in air removes nothing
-      BgRegion rest;
-      bg::difference(material, shadow.polygon, rest);
-      const double before = bg::area(material), after = bg::area(rest);
-      plausible = plausible && plausibleArea(after, before, before - bg::area(shadow.polygon));
-      Box operands = envelope_;
-      bg::expand(operands, bg::return_envelope<Box>(shadow.polygon));
-      tidy(rest, std::max(operands.max_corner().x() - operands.min_corner().x(),
-                          operands.max_corner().y() - operands.min_corner().y()));
-      material = std::move(rest);
-      changed = true;
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
+    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;  // cheap tests first: a shadow in air removes nothing
+    BgRegion rest;
+    bg::difference(remaining_, shadow.polygon, rest);
+    Box operands = envelope_;
+    bg::expand(operands, bg::return_envelope<Box>(shadow.polygon));
+    const double size = std::max(operands.max_corner().x() - operands.min_corner().x(),
+                                 operands.max_corner().y() - operands.min_corner().y());
+    tidy(rest, size);
+    const double resolution = std::max(kDustWidth, kBooleanResolution * size);
+    if (!bg::is_valid(rest)) splitPinches(rest, resolution);
+    // Boost keeps a piece whose edges lie, within its resolution, on the shadow's edge even when the
+    // whole piece is inside the shadow (a step left by a pass, then the semi-finish along the
+    // profile it rests on): such a piece is cut material.
+    if (shadow.path.size() == 2) {
+      rest.erase(std::remove_if(rest.begin(), rest.end(),
+                                [&](const BgPolygon& piece) {
+                                  return insideLineShadow(piece, shadow.path[0], shadow.path[1], frame_, shadow.reach,
+                                                          resolution);
+                                }),
+                 rest.end());
     }
-    if (plausible || sink == kSinkRetries[std::size(kSinkRetries) - 1]) {
-      remaining_ = std::move(material);
-      break;
-    }
+    remaining_ = std::move(rest);
+    changed = true;
   }
   if (changed) updateEnvelope();
 }
@@ -370,20 +397,22 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   if (remaining_.empty()) return {};
   const double available = bg::area(remaining_);
-  BgRegion removed;
-  for (const double sink : kSinkRetries) {
-    std::vector<BgPolygon> parts;
-    bool plausible = true;
-    for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), sink)) {
-      if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
-      BgRegion part;
-      bg::intersection(remaining_, shadow.polygon, part);
-      plausible = plausible && plausibleArea(bg::area(part), std::min(available, bg::area(shadow.polygon)), 0);
-      for (BgPolygon& p : part) parts.push_back(std::move(p));
+  std::vector<BgPolygon> parts;
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
+    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
+    BgRegion part;
+    bg::intersection(remaining_, shadow.polygon, part);
+    if (!plausibleArea(bg::area(part), std::min(available, bg::area(shadow.polygon)), 0) ||
+        !withinBox(part, envelope_)) {
+      // What the difference leaves, taken from the material, is the same region by another route.
+      BgRegion rest;
+      bg::difference(remaining_, shadow.polygon, rest);
+      part.clear();
+      bg::difference(remaining_, rest, part);
     }
-    removed = unionOf(parts);
-    if (plausible) break;
+    for (BgPolygon& p : part) parts.push_back(std::move(p));
   }
+  BgRegion removed = unionOf(parts);
   tidy(removed);
   return removed;
 }

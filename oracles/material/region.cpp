@@ -208,6 +208,91 @@ BgRegion without(const BgRegion& a, const BgRegion& b) {
   return result;
 }
 
+namespace {
+
+double distanceToSegment(const BgPoint& p, const BgPoint& a, const BgPoint& b, double& t) {
+  const double ux = b.x() - a.x(), uy = b.y() - a.y();
+  const double lengthSquared = ux * ux + uy * uy;
+  t = lengthSquared > 0 ? ((p.x() - a.x()) * ux + (p.y() - a.y()) * uy) / lengthSquared : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  const double dx = a.x() + t * ux - p.x(), dy = a.y() + t * uy - p.y();
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+bool within(const BgPoint& a, const BgPoint& b, double tolerance) {
+  return std::abs(a.x() - b.x()) <= tolerance && std::abs(a.y() - b.y()) <= tolerance;
+}
+
+// The loops of a ring that touches itself: a vertex on another of its edges (made a vertex of that
+// edge too), or the same point twice; the ring is cut at each such point.
+std::vector<std::vector<BgPoint>> loopsOf(std::vector<BgPoint> ring, double tolerance) {
+  for (bool inserted = true; inserted;) {
+    inserted = false;
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n && !inserted; ++i) {
+      for (std::size_t j = 0; j < n && !inserted; ++j) {
+        const std::size_t k = (j + 1) % n;
+        if (i == j || i == k || within(ring[i], ring[j], tolerance) || within(ring[i], ring[k], tolerance)) continue;
+        double t = 0;
+        if (distanceToSegment(ring[i], ring[j], ring[k], t) <= tolerance && t > 0 && t < 1) {
+          ring.insert(ring.begin() + static_cast<long>(k == 0 ? n : k), ring[i]);
+          inserted = true;
+        }
+      }
+    }
+  }
+  std::vector<std::vector<BgPoint>> loops;
+  std::vector<BgPoint> path;
+  for (const BgPoint& p : ring) {
+    const auto seen = std::find_if(path.begin(), path.end(), [&](const BgPoint& q) { return within(p, q, tolerance); });
+    if (seen == path.end()) {
+      path.push_back(p);
+      continue;
+    }
+    loops.emplace_back(seen, path.end());
+    path.erase(seen + 1, path.end());
+  }
+  loops.push_back(std::move(path));
+  return loops;
+}
+
+}  // namespace
+
+void splitPinches(BgRegion& region, double tolerance) {
+  BgRegion out;
+  for (BgPolygon& polygon : region) {
+    std::vector<BgPoint> outer(polygon.outer().begin(), polygon.outer().end());
+    if (outer.size() >= 2 && bg::equals(outer.front(), outer.back())) outer.pop_back();
+    const auto loops = loopsOf(std::move(outer), tolerance);
+    if (loops.size() == 1) {
+      out.push_back(std::move(polygon));
+      continue;
+    }
+    // Each loop that encloses area with the ring's own orientation is a piece of its own; the
+    // polygon's holes go to the piece that holds them.
+    BgRegion pieces;
+    for (const auto& loop : loops) {
+      const std::vector<BgPoint> points = tidyPoints(loop);
+      if (points.size() < 3) continue;
+      BgPolygon piece;
+      piece.outer().assign(points.begin(), points.end());
+      piece.outer().push_back(points.front());
+      if (bg::area(piece) <= 0) continue;  // a loop turning the other way encloses nothing of it
+      pieces.push_back(std::move(piece));
+    }
+    for (const Ring& hole : polygon.inners()) {
+      for (BgPolygon& piece : pieces) {
+        if (bg::within(hole.front(), piece)) {
+          piece.inners().push_back(hole);
+          break;
+        }
+      }
+    }
+    for (BgPolygon& piece : pieces) out.push_back(std::move(piece));
+  }
+  region = std::move(out);
+}
+
 void tidy(BgRegion& region, double operandSize) {
   if (region.empty()) return;
   if (operandSize <= 0) operandSize = sizeOf(bg::return_envelope<bg::model::box<BgPoint>>(region));

@@ -85,4 +85,10 @@ BgRegion without(const BgRegion& a, const BgRegion& b);
 // `region`, which sets the booleans' resolution; 0 takes the region's own size.
 void tidy(BgRegion& region, double operandSize = 0);
 
+// Boost's difference returns "pinched" rings where what remains falls into pieces that meet at a
+// point (a ring through the same point twice, or a vertex on another of its edges) — and then
+// rejects them as invalid input to the next boolean. This cuts each pinched outer ring into its
+// pieces (points within `tolerance` count as the same).
+void splitPinches(BgRegion& region, double tolerance);
+
 }  // namespace cyclecert
