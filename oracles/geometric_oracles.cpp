@@ -35,9 +35,7 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
   const auto corner = [&](double cut, double depth) { return cut * along + depth * r.away; };
   const BgRegion span = regionFrom({corner(lo + tolerance, -r.reach), corner(hi - tolerance, -r.reach),
                                     corner(hi - tolerance, r.reach), corner(lo + tolerance, r.reach)});
-  BgRegion inside;
-  boost::geometry::intersection(without(r.remaining, r.part), span, inside);
-  return inside;
+  return checkedIntersection(without(r.remaining, r.part), span);
 }
 
 // no-gouge: no move enters the finish shape grown by the allowances by more than the tolerance.

@@ -94,7 +94,7 @@ rc::Gen<FuzzCase> genFuzzCase() {
         c.b -= lowest;  // pockets never reach below B's level minus the deepest dip
         // A above C by more than the depth allowance (valid), exactly on it (boundary), or — with
         // a depth allowance, where G71.LIMIT.HEIGHT forbids it — below C's level (out of range).
-        const bool belowC = choice[11] == 9 && c.allowanceDepth > 0;
+        const bool belowC = choice[11] == 9 && c.allowanceDepth > 0 && c.cycle == 71;
         c.startAbove = choice[11] == 0 ? c.allowanceDepth : belowC ? -above / 4 - 1 : c.allowanceDepth + above;
         c.startAlong = ahead;
         c.rf1 = choice[12] % 5 == 1;

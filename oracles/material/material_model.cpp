@@ -320,24 +320,6 @@ bool meetsMaterial(const ShadowPiece& shadow, const bg::model::box<BgPoint>& env
 
 namespace {
 
-// Boost's booleans can fail on nearly degenerate input — edges that nearly coincide, a shadow's
-// corner on one of the material's — and return an operand instead of the result. Such a failure
-// shows as an area no exact result can have.
-// An intersection with the material lies within the material's envelope.
-bool withinBox(const BgRegion& region, const bg::model::box<BgPoint>& box) {
-  if (region.empty()) return true;
-  const auto e = bg::return_envelope<bg::model::box<BgPoint>>(region);
-  const double slack = 1e-6 * std::max(1.0, std::max(box.max_corner().x() - box.min_corner().x(),
-                                                     box.max_corner().y() - box.min_corner().y()));
-  return e.min_corner().x() >= box.min_corner().x() - slack && e.min_corner().y() >= box.min_corner().y() - slack &&
-         e.max_corner().x() <= box.max_corner().x() + slack && e.max_corner().y() <= box.max_corner().y() + slack;
-}
-
-bool plausibleArea(double result, double atMost, double atLeast) {
-  const double slack = 1e-9 * std::max(1.0, atMost);
-  return result <= atMost + slack && result >= atLeast - slack;
-}
-
 // Whether every point of `polygon` lies in the shadow of the line a→b (a parallelogram: convex, so
 // its vertices decide), within `tolerance`.
 bool insideLineShadow(const BgPolygon& polygon, Point a, Point b, const DepthFrame& frame, double reach,
@@ -396,21 +378,10 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   if (remaining_.empty()) return {};
-  const double available = bg::area(remaining_);
   std::vector<BgPolygon> parts;
   for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
     if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
-    BgRegion part;
-    bg::intersection(remaining_, shadow.polygon, part);
-    if (!plausibleArea(bg::area(part), std::min(available, bg::area(shadow.polygon)), 0) ||
-        !withinBox(part, envelope_)) {
-      // What the difference leaves, taken from the material, is the same region by another route.
-      BgRegion rest;
-      bg::difference(remaining_, shadow.polygon, rest);
-      part.clear();
-      bg::difference(remaining_, rest, part);
-    }
-    for (BgPolygon& p : part) parts.push_back(std::move(p));
+    for (BgPolygon& p : checkedIntersection(remaining_, {shadow.polygon})) parts.push_back(std::move(p));
   }
   BgRegion removed = unionOf(parts);
   tidy(removed);

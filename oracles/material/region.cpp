@@ -293,6 +293,26 @@ void splitPinches(BgRegion& region, double tolerance) {
   region = std::move(out);
 }
 
+BgRegion checkedIntersection(const BgRegion& a, const BgRegion& b) {
+  BgRegion result;
+  bg::intersection(a, b, result);
+  if (result.empty() || a.empty()) return result;
+  using Box = bg::model::box<BgPoint>;
+  const Box limit = bg::return_envelope<Box>(a), got = bg::return_envelope<Box>(result);
+  const double slack = 1e-6 * std::max(1.0, sizeOf(limit));
+  const bool inside = got.min_corner().x() >= limit.min_corner().x() - slack &&
+                      got.min_corner().y() >= limit.min_corner().y() - slack &&
+                      got.max_corner().x() <= limit.max_corner().x() + slack &&
+                      got.max_corner().y() <= limit.max_corner().y() + slack;
+  const double area = bg::area(result);
+  if (inside && area <= std::min(bg::area(a), bg::area(b)) * (1 + 1e-9) + 1e-12) return result;
+  // The same region by another route: what the difference leaves, taken from `a`.
+  BgRegion rest, again;
+  bg::difference(a, b, rest);
+  bg::difference(a, rest, again);
+  return again;
+}
+
 void tidy(BgRegion& region, double operandSize) {
   if (region.empty()) return;
   if (operandSize <= 0) operandSize = sizeOf(bg::return_envelope<bg::model::box<BgPoint>>(region));

@@ -85,6 +85,12 @@ BgRegion without(const BgRegion& a, const BgRegion& b);
 // `region`, which sets the booleans' resolution; 0 takes the region's own size.
 void tidy(BgRegion& region, double operandSize = 0);
 
+// a ∩ b. Boost's intersection can fail on nearly degenerate input (edges that nearly coincide, a
+// corner on an edge) and return an operand instead of the result; a result outside a's envelope or
+// larger than either operand is such a failure, and the intersection is then taken by another
+// route, a ∖ (a ∖ b).
+BgRegion checkedIntersection(const BgRegion& a, const BgRegion& b);
+
 // Boost's difference returns "pinched" rings where what remains falls into pieces that meet at a
 // point (a ring through the same point twice, or a vertex on another of its edges) — and then
 // rejects them as invalid input to the next boolean. This cuts each pinched outer ring into its
