@@ -31,7 +31,7 @@ rc::Gen<FuzzSegment> genSegment() {
         }
       },
       rc::gen::weightedElement<int>({{6, 0}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {3, 5}, {1, 6}}),
-      rc::gen::inRange(10, 1200), rc::gen::inRange(10, 800));
+      rc::gen::inRange(10, 600), rc::gen::inRange(10, 300));
 }
 
 // Splits one line into two collinear halves (an engine must not treat the join as a corner).
@@ -75,7 +75,7 @@ rc::Gen<FuzzCase> genFuzzCase() {
         c.typeII = choice[4] % 3 == 1;
         c.headMotion = choice[5] == 9 ? 2 : choice[5] % 2;  // G02 (out of range) one time in ten
         c.segments = withCollinearRun(std::move(segs), choice[6]);
-        if (c.segments.size() > 10) c.segments.resize(10);
+        if (c.segments.size() > 8) c.segments.resize(8);
         if (c.segments.empty()) c.segments.push_back({FuzzSegment::Line, 500, 300});
         // A shape with no length along the cut axis (steps only) has nothing to rough.
         if (std::all_of(c.segments.begin(), c.segments.end(), [](const FuzzSegment& s) { return s.along == 0; })) {
@@ -107,8 +107,8 @@ rc::Gen<FuzzCase> genFuzzCase() {
       },
       rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
       rc::gen::container<std::vector<FuzzSegment>>(genSegment()), rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)),
-      rc::gen::inRange(20, 400), rc::gen::inRange(1, 200), rc::gen::inRange(1, 100), rc::gen::inRange(1, 60),
-      rc::gen::inRange(1, 1500), rc::gen::inRange(0, 400), rc::gen::inRange(0, 3000));
+      rc::gen::inRange(50, 300), rc::gen::inRange(1, 200), rc::gen::inRange(1, 100), rc::gen::inRange(1, 60),
+      rc::gen::inRange(1, 500), rc::gen::inRange(0, 400), rc::gen::inRange(0, 3000));
 }
 
 namespace {

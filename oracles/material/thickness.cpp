@@ -87,6 +87,8 @@ class ThicknessSearch {
     }
     const RegionEdge edge{c0, d0, c1, d1};
     profile_.overlapping(c0, c1, resolution_, under_);
+    underWidest_ = 0;
+    for (const ProfileStep* s : under_) underWidest_ = std::max(underWidest_, s->c1 - s->c0);
     for (const ProfileStep* s : under_) {
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
       measureAt(edge, lo);
@@ -106,8 +108,12 @@ class ThicknessSearch {
   void measureAt(const RegionEdge& edge, double c) {
     const double d = edge.depthAt(c);
     std::optional<double> beneath;
-    for (const ProfileStep* s : under_) {
-      if (s->c1 < c - window_ || s->c0 > c + window_) continue;
+    // under_ is sorted by c0: only the steps from c − window − the widest step on can reach c.
+    const auto first = std::lower_bound(under_.begin(), under_.end(), c - window_ - underWidest_,
+                                        [](const ProfileStep* s, double v) { return s->c0 < v; });
+    for (auto it = first; it != under_.end() && (*it)->c0 <= c + window_; ++it) {
+      const ProfileStep* s = *it;
+      if (s->c1 < c - window_) continue;
       const double v0 = s->depthAt(c - window_), v1 = s->depthAt(c + window_);
       if (std::min(v0, v1) > d + window_) continue;  // wholly above the point
       const double highest = std::min(std::max(v0, v1), d);
@@ -125,7 +131,8 @@ class ThicknessSearch {
   const DepthFrame& frame_;
   double resolution_;
   double window_;
-  std::vector<const ProfileStep*> under_;
+  std::vector<const ProfileStep*> under_;  // the steps under the edge being measured, by c0
+  double underWidest_ = 0;
   std::optional<Thickest> best_;
 };
 

@@ -1,0 +1,99 @@
+// Fuzz throughput (issue 5's targets: ≥ 10,000 cases/s per core against `reference`, ≥ 500 cases/s
+// against `linuxcnc`): the same generated cases, split into their stages so that the ratios show
+// where the time goes — generating a case, the engine planning it, the oracles judging it, and the
+// whole of `fuzz`'s per-case work (judgeFuzzCase). One core: the benchmarks run single-threaded.
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "harness/engines/engine.h"
+#include "harness/engines/linuxcnc/linuxcnc_engine.h"
+#include "harness/fuzz/fuzz_run.h"
+#include "harness/judging.h"
+
+namespace {
+
+using namespace cyclecert;
+
+constexpr std::uint64_t kSeed = 20261121;
+
+// A fixed sample of generated cases, as `fuzz --seed 20261121` draws them.
+const std::vector<SpecCase>& sampleCases() {
+  static const std::vector<SpecCase> cases = [] {
+    std::vector<SpecCase> out;
+    for (long i = 0; i < 200; ++i) {
+      const std::uint64_t seed = fuzzCaseSeed(kSeed, i);
+      out.push_back(fuzzSpecCase(generateFuzzCase(seed), std::to_string(seed)));
+    }
+    return out;
+  }();
+  return cases;
+}
+
+void BM_FuzzGenerate(benchmark::State& state) {
+  long i = 0;
+  for (auto _ : state) {
+    const std::uint64_t seed = fuzzCaseSeed(kSeed, i++);
+    benchmark::DoNotOptimize(fuzzSpecCase(generateFuzzCase(seed), "bench"));
+  }
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzGenerate)->Unit(benchmark::kMicrosecond);
+
+void BM_FuzzReferencePlanOnly(benchmark::State& state) {
+  const auto engine = makeEngine("reference");
+  const auto& cases = sampleCases();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(engine->run(cases[i++ % cases.size()]));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzReferencePlanOnly)->Unit(benchmark::kMicrosecond);
+
+void BM_FuzzOraclesOnly(benchmark::State& state) {
+  const auto engine = makeEngine("reference");
+  const auto& cases = sampleCases();
+  std::vector<JudgeInput> inputs;
+  for (const SpecCase& c : cases) inputs.push_back(judgeInputFor(judgeRequestFor(c), engine->run(c).path));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(judge(inputs[i++ % inputs.size()]));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzOraclesOnly)->Unit(benchmark::kMicrosecond);
+
+// The whole per-case work of `cyclecert fuzz --engine reference`.
+void BM_FuzzCaseReference(benchmark::State& state) {
+  const auto engine = makeEngine("reference");
+  const auto& cases = sampleCases();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(judgeFuzzCase(*engine, nullptr, cases[i++ % cases.size()], 1e-3));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzCaseReference)->Unit(benchmark::kMicrosecond);
+
+// LinuxCNC's rs274 on the same cases, one process per case and batched (when rs274 was fetched:
+// `make rs274`; otherwise the benchmark says so and is skipped).
+void linuxCncPlans(benchmark::State& state, bool batched) {
+  const auto made = makeEngine("linuxcnc");
+  auto& engine = dynamic_cast<LinuxCncEngine&>(*made);
+  if (!engine.available()) {
+    state.SkipWithError("rs274 is not fetched (make rs274)");
+    return;
+  }
+  const auto& cases = sampleCases();
+  const std::size_t batch = batched ? 50 : 1;
+  std::size_t done = 0;
+  for (auto _ : state) {
+    const std::vector<SpecCase> some(cases.begin() + static_cast<long>(done % cases.size()),
+                                     cases.begin() + static_cast<long>(done % cases.size() + batch));
+    benchmark::DoNotOptimize(batched ? engine.runBatch(some) : std::vector<EngineResult>{engine.run(some.front())});
+    done += batch;
+  }
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(done), benchmark::Counter::kIsRate);
+}
+void BM_FuzzLinuxCncOnePerProcess(benchmark::State& state) { linuxCncPlans(state, false); }
+void BM_FuzzLinuxCncBatched(benchmark::State& state) { linuxCncPlans(state, true); }
+BENCHMARK(BM_FuzzLinuxCncOnePerProcess)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FuzzLinuxCncBatched)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
