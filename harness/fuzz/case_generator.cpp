@@ -60,6 +60,15 @@ void makePockets(FuzzCase& c, const std::vector<int>& downs) {
   c.allowanceCut = 0;
 }
 
+// Out of range one time in ten: a line that turns back along the cut axis (PS0064), or — type I,
+// where the shape must also be monotone along the depth axis — along the depth axis (PS0329).
+void turnBack(FuzzCase& c, int choice, int at) {
+  FuzzSegment& s = c.segments[static_cast<std::size_t>(at) % c.segments.size()];
+  if (s.kind != FuzzSegment::Line) return;
+  if (choice == 9 && s.along > 0) s.along = -s.along;
+  if (choice == 8 && !c.typeII && s.up > 0) s.up = -s.up;
+}
+
 }  // namespace
 
 rc::Gen<FuzzCase> genFuzzCase() {
@@ -88,6 +97,7 @@ rc::Gen<FuzzCase> genFuzzCase() {
         c.allowanceDepth = choice[9] < 2 ? 0 : du;
         c.allowanceCut = choice[10] < 3 ? 0 : dw;
         if (c.typeII) makePockets(c, downs);
+        turnBack(c, choice[8], choice[6]);
         c.b = b;
         int lowest = 0, x = 0;
         for (const FuzzSegment& s : c.segments) lowest = std::min(lowest, x += s.up);
