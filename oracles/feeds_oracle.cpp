@@ -20,6 +20,9 @@ class FeedsOracle : public Oracle {
     const CycleSpec* c = in.program.singleRoughingCycle();
     if (!c || (c->typeII && c->noRepeatedPath)) return;  // G71.NSP makes the second A'→B' a rapid
     const double tol = in.settings.tolerance();
+    // On the head line itself: engines that round print 4 decimals at worst. (The whole tolerance
+    // would take in the first µm of a steep wall after B, where a pocket entry may rapid.)
+    const double onLine = std::min(tol, 1e-4);
     const Point aPrime = inFrame(*c, c->start + c->allowance), a = inFrame(*c, c->start);
     const Point head = inFrame(*c, c->shape.front().to) - inFrame(*c, c->shape.front().from);
     if (std::abs(head.z) > tol) return;  // a type II head block that is not along the depth axis
@@ -29,7 +32,10 @@ class FeedsOracle : public Oracle {
       // Block ns spans A'→B': a move down the head line that ends at or above A', or at A (the
       // return to the start point, which lies on the head line below A' when Δu points away), is
       // not along block ns.
-      const bool infeed = std::abs(from.z - aPrime.z) <= tol && std::abs(to.z - aPrime.z) <= tol &&
+      // Along the head line also in direction (within 0.6°): a short move down a steep wall just
+      // after B stays within the tolerance of the line without running along it.
+      const bool alongDepth = std::abs(to.z - from.z) <= 0.01 * std::abs(to.x - from.x);
+      const bool infeed = std::abs(from.z - aPrime.z) <= onLine && std::abs(to.z - aPrime.z) <= onLine && alongDepth &&
                           d * (to.x - from.x) > tol && d * (to.x - aPrime.x) > tol && !nearlyEqual(to, a, tol);
       if (!infeed || (in.path.moves[i].kind == MoveKind::Rapid) == c->headIsRapid) continue;
       out.push_back(finding(*this, i, std::string("an infeed along the head block is a ") +

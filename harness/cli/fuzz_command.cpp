@@ -45,6 +45,7 @@ Options:
   --no-save           do not write shrunk failures
   --shrink-budget R   engine runs spent shrinking one failure at most (default 400)
   --tolerance T       mm, for the oracles and --vs (default 0.001)
+  --max-failures N    stop once N cases have failed
   --resume            continue the run in OUT
   --timeout S         per-case timeout for engines in another process (default 10)
 Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage.
@@ -92,6 +93,7 @@ int commandFuzz(const std::vector<std::string>& args) {
         [&](const std::string& v) {
           try {
             std::size_t used = 0;
+            if (v.empty() || v[0] == '-' || v[0] == '+') throw std::invalid_argument(v);  // stoull takes "-1"
             seed = std::stoull(v, &used, 0);
             if (used != v.size()) throw std::invalid_argument(v);
           } catch (const std::exception&) {
@@ -105,6 +107,8 @@ int commandFuzz(const std::vector<std::string>& args) {
        {"--shrink-budget",
         [&](const std::string& v) { options.shrinkBudget = static_cast<int>(numberArg("--shrink-budget", v, 0, 1e6)); }},
        {"--tolerance", [&](const std::string& v) { options.tolerance = numberArg("--tolerance", v, 1e-9, 10); }},
+       {"--max-failures",
+        [&](const std::string& v) { options.maxFailures = static_cast<long>(numberArg("--max-failures", v, 1, 1e12)); }},
        {"--resume", [&] { options.resume = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
       "fuzz");

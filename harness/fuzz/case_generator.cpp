@@ -65,7 +65,10 @@ void makePockets(FuzzCase& c, const std::vector<int>& downs) {
 void turnBack(FuzzCase& c, int choice, int at) {
   FuzzSegment& s = c.segments[static_cast<std::size_t>(at) % c.segments.size()];
   if (s.kind != FuzzSegment::Line) return;
-  if (choice == 9 && s.along > 0) s.along = -s.along;
+  // Only a turn back: the shape as a whole still runs forward along the cut axis.
+  int along = 0;
+  for (const FuzzSegment& other : c.segments) along += other.along;
+  if (choice == 9 && s.along > 0 && along - 2 * s.along > 0) s.along = -s.along;
   if (choice == 8 && !c.typeII && s.up > 0) s.up = -s.up;
 }
 
@@ -99,16 +102,31 @@ rc::Gen<FuzzCase> genFuzzCase() {
         if (c.typeII) makePockets(c, downs);
         turnBack(c, choice[8], choice[6]);
         c.b = b;
-        int lowest = 0, x = 0;
-        for (const FuzzSegment& s : c.segments) lowest = std::min(lowest, x += s.up);
+        int lowest = 0, highest = 0, x = 0;
+        for (const FuzzSegment& s : c.segments) {
+          x += s.up;
+          lowest = std::min(lowest, x);
+          highest = std::max(highest, x);
+        }
         c.b -= lowest;  // pockets never reach below B's level minus the deepest dip
         // A above C by more than the depth allowance (valid), exactly on it (boundary), or — with
-        // a depth allowance, where G71.LIMIT.HEIGHT forbids it — below C's level (out of range).
-        const bool belowC = choice[11] == 9 && c.allowanceDepth > 0 && c.cycle == 71;
-        c.startAbove = choice[11] == 0 ? c.allowanceDepth : belowC ? -above / 4 - 1 : c.allowanceDepth + above;
+        // a depth allowance, where G71.LIMIT.HEIGHT forbids it — below C's level but still above B
+        // (out of range).
+        // One out-of-range draw at a time: where two alarms apply, the documents do not say which
+        // the controller raises first.
+        const bool turnedBack = choice[8] >= 8;
+        const bool belowC = choice[11] == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 && !turnedBack &&
+                            c.depthOfCut > 0 && c.headMotion != 2;
+        c.startAbove = choice[11] == 0 ? c.allowanceDepth
+                       : belowC        ? -std::min(above / 4 + 1, highest - 10)
+                                       : c.allowanceDepth + above;
         c.startAlong = ahead;
-        c.rf1 = choice[12] % 5 == 1;
         c.dtp = choice[12] % 7 == 2;
+        // RF1 skips the semi-finish, so a straight return (DTP = 1, GSK's only return) leaves from
+        // beside the last pass: with Δw it runs back through the allowance, as documented — a
+        // hazard of the documents, not a deviation, so that combination is not drawn.
+        const bool straightReturn = c.dtp || c.profile == "gsk";
+        c.rf1 = choice[12] % 5 == 1 && !(straightReturn && c.allowanceCut > 0);
         c.r16 = choice[13] % 2;
         c.nsp = choice[13] % 3 == 1;
         c.rf2 = choice[14] % 4 == 1;

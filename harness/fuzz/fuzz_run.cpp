@@ -126,6 +126,7 @@ FuzzSummary runFuzz(Engine& engine, Engine* vs, const FuzzOptions& options, std:
   std::set<std::string> shrunkKinds;  // each kind of failure is shrunk (and kept) once per run
   for (long i = options.shard - 1; i < total; i += options.shards) {
     if (options.seconds && elapsed() >= *options.seconds) break;
+    if (options.maxFailures && s.fail + s.engineFailure >= *options.maxFailures) break;
     const std::uint64_t caseSeed = fuzzCaseSeed(options.seed, i);
     const std::string id = "fuzz-" + hex(caseSeed);
     if (results.done().count({engine.name(), id})) {

@@ -28,6 +28,7 @@ struct FuzzOptions {
   std::string regressionsDir;     // where shrunk failures are written ("" for nowhere)
   bool resume = false;
   int shrinkBudget = 400;         // engine runs spent shrinking one failure at most
+  std::optional<long> maxFailures;  // stop once this many cases have failed
   double tolerance = 1e-3;        // mm, for the oracles and the comparison with --vs
 };
 

@@ -189,7 +189,10 @@ class Type2Planner {
   // Travel above what still stands, then down to the entry point (G71.T2.POCKET.EXIT (20), (21)).
   void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart, std::optional<double> viaI) {
     const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
-    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass", {"G71.T2.POCKET.EXIT"});
+    // Down block ns itself (the tool stands on the head line) it moves in block ns's mode.
+    const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kEps;
+    emit(downTheHead && !c_.headIsRapid ? MoveKind::Feed : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass",
+         {downTheHead ? "G71.HEAD.G0G1" : "G71.T2.POCKET.EXIT"});
     if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, "pass", {"G71.NSP"});
     emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
     if (infeedAlongHead) {

@@ -1,0 +1,261 @@
+// `cyclecert fuzz` and `merge`: the generator covers what the issue lists and is deterministic per
+// seed; the reference passes every oracle on generated cases; every mutant is caught; a failure is
+// shrunk, printed with a seed that reproduces it and kept as a spec case that `check` runs; a run
+// resumes; shards merge into the unsharded run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "harness/check_run.h"
+#include "harness/engines/engine.h"
+#include "harness/fuzz/fuzz_run.h"
+#include "harness/rule_catalogue.h"
+#include "harness/spec_case.h"
+#include "tests/cli_fixture.h"
+
+namespace cyclecert {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uint64_t kSeed = 424242;
+
+std::vector<FuzzCase> sample(long n) {
+  std::vector<FuzzCase> out;
+  for (long i = 0; i < n; ++i) out.push_back(generateFuzzCase(fuzzCaseSeed(kSeed, i)));
+  return out;
+}
+
+TEST(FuzzGenerator, TheSameSeedGivesTheSameCase) {
+  for (long i = 0; i < 50; ++i) {
+    const std::uint64_t seed = fuzzCaseSeed(kSeed, i);
+    EXPECT_EQ(fuzzProgram(generateFuzzCase(seed)), fuzzProgram(generateFuzzCase(seed)));
+  }
+  EXPECT_NE(fuzzProgram(generateFuzzCase(1)), fuzzProgram(generateFuzzCase(2)));
+  // Case 0 of a run is the run's seed itself: `--seed <case seed> --cases 1` reproduces a case.
+  EXPECT_EQ(fuzzCaseSeed(kSeed, 0), kSeed);
+}
+
+TEST(FuzzGenerator, CoversCyclesQuadrantsShapesAndParameterRanges) {
+  std::map<std::string, int> seen;
+  for (const FuzzCase& c : sample(3000)) {
+    ++seen["G" + std::to_string(c.cycle)];
+    ++seen[std::string("quadrant ") + (c.mirrorCut ? "1" : "0") + (c.mirrorDepth ? "1" : "0")];
+    if (c.typeII) ++seen["type II"];
+    ++seen[c.profile];
+    for (std::size_t i = 0; i < c.segments.size(); ++i) {
+      const FuzzSegment& s = c.segments[i];
+      if (s.kind == FuzzSegment::ConvexArc) ++seen["convex arc"];
+      if (s.kind == FuzzSegment::ConcaveArc) ++seen["concave arc"];
+      if (s.kind == FuzzSegment::Line && s.along > 0 && s.along == s.up) ++seen["chamfer"];
+      if (s.kind == FuzzSegment::Line && s.along == 0 && s.up == 0) ++seen["zero length"];
+      if (s.kind == FuzzSegment::Line && s.up < 0 && s.along > 0) ++seen["pocket wall"];
+      if (s.along < 0) ++seen["turns back along the cut axis"];
+      if (i > 0 && s.kind == FuzzSegment::Line && c.segments[i - 1].kind == FuzzSegment::Line &&
+          s.along == c.segments[i - 1].along && s.up == c.segments[i - 1].up && (s.along || s.up)) {
+        ++seen["collinear run"];
+      }
+      // A quarter arc after a line along the cut axis is tangent to it.
+      if (i > 0 && s.kind != FuzzSegment::Line && c.segments[i - 1].kind == FuzzSegment::Line &&
+          c.segments[i - 1].up == 0 && c.segments[i - 1].along > 0) {
+        ++seen["tangent arc"];
+      }
+    }
+    if (!c.typeII && std::any_of(c.segments.begin(), c.segments.end(), [](const FuzzSegment& s) { return s.up < 0; })) {
+      ++seen["turns back along the depth axis"];
+    }
+    if (c.depthOfCut == 0) ++seen["Δd = 0"];
+    if (c.headMotion == 2) ++seen["head block G02"];
+    if (c.startAbove < 0) ++seen["A below C"];
+    if (c.startAbove == c.allowanceDepth) ++seen["A on C's level"];
+    if (c.allowanceDepth == 0 && c.allowanceCut == 0) ++seen["no allowance"];
+    if (c.allowanceDepth > 0 && c.allowanceCut > 0) ++seen["both allowances"];
+    for (const auto& [set, name] : {std::pair{c.rf1, "RF1"}, {c.dtp, "DTP"}, {c.r16, "R16"}, {c.nsp, "NSP"}, {c.rf2, "RF2"}}) {
+      if (set) ++seen[name];
+    }
+  }
+  for (const char* feature :
+       {"G71", "G72", "quadrant 00", "quadrant 01", "quadrant 10", "quadrant 11", "type II", "fanuc-0i-f", "fanuc-0i-c",
+        "gsk", "convex arc", "concave arc", "chamfer", "zero length", "pocket wall", "collinear run", "tangent arc",
+        "turns back along the cut axis", "turns back along the depth axis", "Δd = 0", "head block G02", "A below C",
+        "A on C's level", "no allowance", "both allowances", "RF1", "DTP", "R16", "NSP", "RF2"}) {
+    EXPECT_GE(seen[feature], 5) << feature;
+  }
+}
+
+TEST(FuzzGenerator, EveryCaseIsAValidSpecCaseTheReferenceAnswers) {
+  const auto reference = makeEngine("reference");
+  std::map<std::string, int> outcomes;
+  long i = 0;
+  for (const FuzzCase& c : sample(1000)) {
+    const SpecCase spec = fuzzSpecCase(c, std::to_string(i++));
+    EXPECT_NO_THROW(parseSpecCase(spec.raw.dump(), "round trip"));
+    const EngineResult r = reference->run(spec);
+    ++outcomes[kindName(r.kind)];
+    EXPECT_TRUE(r.kind == EngineResult::Planned || r.kind == EngineResult::Alarmed) << spec.program << r.detail;
+  }
+  EXPECT_GT(outcomes["planned"], 700);
+  EXPECT_GT(outcomes["alarm"], 20);  // the out-of-range draws
+}
+
+std::string scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("cyclecert-fuzz-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  return p.string();
+}
+
+TEST(Fuzz, TheReferencePassesEveryOracleOnGeneratedCases) {
+  auto engine = makeEngine("reference");
+  FuzzOptions o;
+  o.seed = kSeed;
+  o.cases = 400;
+  o.outDir = scratch("reference");
+  std::ostringstream progress;
+  const FuzzSummary s = runFuzz(*engine, nullptr, o, progress);
+  fs::remove_all(o.outDir);
+  EXPECT_EQ(s.run, 400);
+  EXPECT_EQ(s.fail, 0) << progress.str();
+  EXPECT_EQ(s.engineFailure, 0) << progress.str();
+}
+
+// Every mutant fails a generated case (the default budget is 2000 cases; each is caught long
+// before), and the failure is shrunk, kept as a spec case, and that case fails `check` for the
+// mutant and passes it for the reference.
+TEST(Fuzz, EveryMutantIsFoundShrunkAndKeptAsARegression) {
+  int mutants = 0;
+  for (const auto& [name, description] : listEngines()) {
+    if (name.rfind("mutant:", 0) != 0) continue;
+    ++mutants;
+    SCOPED_TRACE(name);
+    auto engine = makeEngine(name);
+    FuzzOptions o;
+    o.seed = kSeed;
+    o.cases = kDefaultFuzzCases;
+    o.maxFailures = 1;
+    o.shrinkBudget = 60;
+    o.outDir = scratch("out-" + name.substr(7));
+    o.regressionsDir = scratch("regressions-" + name.substr(7));
+    std::ostringstream progress;
+    const FuzzSummary s = runFuzz(*engine, nullptr, o, progress);
+    ASSERT_EQ(s.failures.size(), 1u) << description << " escaped " << s.run << " generated cases";
+    const FuzzFailure& f = s.failures.front();
+    EXPECT_NE(progress.str().find("reproduce: cyclecert fuzz --engine '" + name + "' --seed " + std::to_string(f.caseSeed)),
+              std::string::npos)
+        << progress.str();
+    ASSERT_FALSE(f.regressionFile.empty());
+    const SpecCase kept = loadSpecCase(f.regressionFile);
+    EXPECT_TRUE(kept.oraclesOnly);
+    EXPECT_LE(generateFuzzCase(f.caseSeed).segments.size() + 1, f.shrunk.segments.size() + 1 + 20);  // never grows
+    EXPECT_LE(f.shrunk.segments.size(), generateFuzzCase(f.caseSeed).segments.size());
+    // `check` runs the kept case: the mutant fails it, the reference passes it.
+    CheckOptions co{scratch("no-specs"), o.regressionsDir, scratch("check-" + name.substr(7)), false};
+    fs::create_directories(co.specsDir + "/cases");
+    std::ostringstream checkProgress;
+    EXPECT_EQ(runCheck(*engine, co, checkProgress).fail, 1) << checkProgress.str();
+    auto reference = makeEngine("reference");
+    const CheckSummary r = runCheck(*reference, co, checkProgress);
+    EXPECT_EQ(r.pass, 1) << checkProgress.str();
+    for (const std::string& dir : {o.outDir, o.regressionsDir, co.specsDir, co.outDir}) fs::remove_all(dir);
+  }
+  EXPECT_GE(mutants, 12);
+}
+
+TEST(Fuzz, ComparedWithASecondEngineADivergenceIsAFailure) {
+  auto engine = makeEngine("mutant:retract-amount");
+  auto reference = makeEngine("reference");
+  // The same engine twice agrees with itself.
+  FuzzOptions o;
+  o.seed = kSeed;
+  o.cases = 30;
+  o.outDir = scratch("vs-self");
+  std::ostringstream progress;
+  EXPECT_EQ(runFuzz(*reference, makeEngine("reference").get(), o, progress).fail, 0) << progress.str();
+  // Judged alone by the oracles the mutant fails; a divergence from the reference is found when
+  // its own oracles pass — so compare a mutant the oracles also catch and check the kind named.
+  o.outDir = scratch("vs-mutant");
+  o.maxFailures = 1;
+  o.shrinkBudget = 20;
+  o.regressionsDir = scratch("vs-regressions");
+  const FuzzSummary s = runFuzz(*engine, reference.get(), o, progress);
+  ASSERT_EQ(s.failures.size(), 1u);
+  EXPECT_FALSE(s.failures.front().kind.empty());
+  for (const std::string& dir : {o.outDir, o.regressionsDir}) fs::remove_all(dir);
+}
+
+class FuzzCli : public CliFixture {};
+
+TEST_F(FuzzCli, HelpNamesEveryOption) {
+  const CliRun r = run("fuzz --help");
+  EXPECT_EQ(r.exitCode, 0);
+  for (const char* option : {"--engine", "--vs", "--cases", "--time", "--seed", "--shard", "--out", "--regressions",
+                             "--no-save", "--resume", "--max-failures"}) {
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+  }
+  EXPECT_EQ(run("merge --help").exitCode, 0);
+}
+
+TEST_F(FuzzCli, BadUsageExitsWith2) {
+  EXPECT_EQ(run("fuzz").exitCode, 2);
+  EXPECT_EQ(run("fuzz --engine nosuch").exitCode, 2);
+  const CliRun shard = run("fuzz --engine reference --shard 3/2");
+  EXPECT_EQ(shard.exitCode, 2);
+  EXPECT_NE(shard.err.find("--shard"), std::string::npos) << shard.err;
+  EXPECT_EQ(run("fuzz --engine reference --shard x").exitCode, 2);
+  EXPECT_EQ(run("fuzz --engine reference --seed -1").exitCode, 2);
+  EXPECT_EQ(run("fuzz --engine reference --cases 0").exitCode, 2);
+  EXPECT_EQ(run("merge --out " + path("m")).exitCode, 2);
+  EXPECT_EQ(run("merge --out " + path("m") + " " + path("nothing-here")).exitCode, 2);
+}
+
+TEST_F(FuzzCli, AFailurePrintsItsSeedAndTheCommandThatReproducesIt) {
+  const CliRun r = run("fuzz --engine mutant:start-not-returned --seed 7 --cases 50 --max-failures 1 --shrink-budget 30 --out " +
+                       path("out") + " --regressions " + path("regressions"));
+  EXPECT_EQ(r.exitCode, 1);
+  const auto at = r.err.find("reproduce: ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  std::string command = r.err.substr(at + 11, r.err.find('\n', at) - at - 11);
+  command = command.substr(command.find(" fuzz ") + 1);
+  // The command regenerates the same (unshrunk) case and fails it again.
+  const CliRun again = run(command + " --no-save --out " + path("again"));
+  EXPECT_EQ(again.exitCode, 1) << again.out << again.err;
+  EXPECT_NE(again.out.find("1 fail"), std::string::npos) << again.out;
+  EXPECT_NE(r.err.find("kept as " + path("regressions")), std::string::npos) << r.err;
+}
+
+TEST_F(FuzzCli, AStoppedRunResumesWhereItStopped) {
+  ASSERT_EQ(run("fuzz --engine reference --seed 5 --cases 40 --out " + path("out")).exitCode, 0);
+  // A killed run's last line may be cut short: resume drops it and runs that case again.
+  std::string results = read(path("out/results.jsonl"));
+  std::ofstream(path("out/results.jsonl")) << results.substr(0, results.size() - 20);
+  const CliRun r = run("fuzz --engine reference --seed 5 --cases 60 --resume --out " + path("out"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("21 cases"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("39 already done"), std::string::npos) << r.out;
+  std::istringstream lines(read(path("out/results.jsonl")));
+  std::set<std::string> ids;
+  for (std::string line; std::getline(lines, line);) ids.insert(nlohmann::json::parse(line).at("case").get<std::string>());
+  EXPECT_EQ(ids.size(), 60u);
+}
+
+TEST_F(FuzzCli, ShardsMergeIntoTheUnshardedRun) {
+  ASSERT_EQ(run("fuzz --engine reference --seed 9 --cases 30 --out " + path("whole")).exitCode, 0);
+  ASSERT_EQ(run("fuzz --engine reference --seed 9 --cases 30 --shard 1/2 --out " + path("s1")).exitCode, 0);
+  ASSERT_EQ(run("fuzz --engine reference --seed 9 --cases 30 --shard 2/2 --out " + path("s2")).exitCode, 0);
+  const CliRun m = run("merge --out " + path("merged") + " " + path("s1") + " " + path("s2") + " " + path("s2"));
+  EXPECT_EQ(m.exitCode, 0) << m.err;
+  EXPECT_NE(m.out.find("30 results, 15 duplicate(s) dropped"), std::string::npos) << m.out;
+  const auto idsOf = [&](const std::string& file) {
+    std::set<std::string> ids;
+    std::istringstream lines(read(file));
+    for (std::string line; std::getline(lines, line);) ids.insert(nlohmann::json::parse(line).at("case").get<std::string>());
+    return ids;
+  };
+  EXPECT_EQ(idsOf(path("merged/results.jsonl")), idsOf(path("whole/results.jsonl")));
+  EXPECT_EQ(idsOf(path("whole/results.jsonl")).size(), 30u);
+}
+
+}  // namespace
+}  // namespace cyclecert
