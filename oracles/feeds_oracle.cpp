@@ -29,14 +29,14 @@ class FeedsOracle : public Oracle {
     const int d = c->depthDirection();
     for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
       const Point from = inFrame(*c, in.path.from(i)), to = inFrame(*c, in.path.moves[i].to);
-      // Block ns spans A'→B': a move down the head line that ends at or above A', or at A (the
-      // return to the start point, which lies on the head line below A' when Δu points away), is
-      // not along block ns.
+      // Block ns spans A'→B': a move down the head line that ends at or above A', or no deeper
+      // than A (the return to the start point, which lies below A' when Δu points away), is not
+      // along block ns.
       // Along the head line also in direction (within 0.6°): a short move down a steep wall just
       // after B stays within the tolerance of the line without running along it.
       const bool alongDepth = std::abs(to.z - from.z) <= 0.01 * std::abs(to.x - from.x);
       const bool infeed = std::abs(from.z - aPrime.z) <= onLine && std::abs(to.z - aPrime.z) <= onLine && alongDepth &&
-                          d * (to.x - from.x) > tol && d * (to.x - aPrime.x) > tol && !nearlyEqual(to, a, tol);
+                          d * (to.x - from.x) > tol && d * (to.x - aPrime.x) > tol && d * (to.x - a.x) > tol;
       if (!infeed || (in.path.moves[i].kind == MoveKind::Rapid) == c->headIsRapid) continue;
       out.push_back(finding(*this, i, std::string("an infeed along the head block is a ") +
                                           (c->headIsRapid ? "cutting feed, but block ns is G00: it must be a rapid"

@@ -71,4 +71,11 @@ std::vector<std::pair<std::string, std::string>> listEngines() {
   return all;
 }
 
+std::vector<EngineResult> Engine::runBatch(const std::vector<SpecCase>& cases) {
+  std::vector<EngineResult> results;
+  results.reserve(cases.size());
+  for (const SpecCase& c : cases) results.push_back(run(c));
+  return results;
+}
+
 }  // namespace cyclecert

@@ -32,6 +32,9 @@ class Engine {
   virtual std::string description() const = 0;  // one line for `cyclecert engines`
   virtual std::string version() const = 0;      // for reports
   virtual EngineResult run(const SpecCase& c) = 0;
+  // Several cases at once, results in the same order: engines whose start-up dominates (LinuxCNC's
+  // rs274) run them in one go; the others one by one.
+  virtual std::vector<EngineResult> runBatch(const std::vector<SpecCase>& cases);
 };
 
 struct EngineOptions {

@@ -127,9 +127,10 @@ rc::Gen<FuzzCase> genFuzzCase() {
         // hazard of the documents, not a deviation, so that combination is not drawn.
         const bool straightReturn = c.dtp || c.profile == "gsk";
         c.rf1 = choice[12] % 5 == 1 && !(straightReturn && c.allowanceCut > 0);
-        c.r16 = choice[13] % 2;
-        c.nsp = choice[13] % 3 == 1;
-        c.rf2 = choice[14] % 4 == 1;
+        // R16, NSP and RF2 are type II's parameters.
+        c.r16 = c.typeII && choice[13] % 2;
+        c.nsp = c.typeII && choice[13] % 3 == 1;
+        c.rf2 = c.typeII && choice[14] % 4 == 1;
         c.finish = choice[15] % 3 == 0;
         return c;
       },

@@ -35,8 +35,12 @@ std::string hex(std::uint64_t v) {
 FuzzCase generateFuzzCase(std::uint64_t caseSeed) { return shrinkTree(caseSeed).value(); }
 
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance) {
+  return judgeFuzzResult(engine.run(c), engine, vs, c, tolerance);
+}
+
+FuzzVerdict judgeFuzzResult(const EngineResult& r, const Engine& engine, Engine* vs, const SpecCase& c,
+                            double tolerance) {
   FuzzVerdict v;
-  const EngineResult r = engine.run(c);
   v.seconds = r.seconds;
   if (r.kind == EngineResult::Failed) {
     v.verdict = v.kind = "engine-failure";
@@ -116,63 +120,107 @@ std::string reproduceCommand(const Engine& engine, const Engine* vs, std::uint64
 
 }  // namespace
 
-FuzzSummary runFuzz(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress) {
-  ResultsFile results(options.outDir, options.resume);
-  FuzzSummary s;
-  const long total = options.cases ? *options.cases : options.seconds ? LONG_MAX : kDefaultFuzzCases;
-  const auto started = std::chrono::steady_clock::now();
-  auto lastReport = started;
-  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  std::set<std::string> shrunkKinds;  // each kind of failure is shrunk (and kept) once per run
-  for (long i = options.shard - 1; i < total; i += options.shards) {
-    if (options.seconds && elapsed() >= *options.seconds) break;
-    if (options.maxFailures && s.fail + s.engineFailure >= *options.maxFailures) break;
-    const std::uint64_t caseSeed = fuzzCaseSeed(options.seed, i);
-    const std::string id = "fuzz-" + hex(caseSeed);
-    if (results.done().count({engine.name(), id})) {
-      ++s.skipped;
-      continue;
-    }
-    const SpecCase c = fuzzSpecCase(generateFuzzCase(caseSeed), hex(caseSeed));
-    const FuzzVerdict v = judgeFuzzCase(engine, vs, c, options.tolerance);
-    CaseResult r{engine.name(), id, "", c.rules, v.verdict, v.detail, v.findings, v.seconds, caseSeed, "", vs ? vs->name() : ""};
-    ++s.run;
-    if (v.verdict == "pass") ++s.pass;
-    else if (v.verdict == "not-applicable") ++s.notApplicable;
-    else (v.verdict == "fail" ? s.fail : s.engineFailure)++;
-    if ((v.verdict == "fail" || v.verdict == "engine-failure") && shrunkKinds.insert(v.kind).second) {
-      FuzzFailure f = shrinkFailure(engine, vs, caseSeed, v, options);
-      const SpecCase shrunk = fuzzSpecCase(f.shrunk, hex(caseSeed));
-      if (!options.regressionsDir.empty()) {
-        // The rules behind the failure: the oracle's, recomputed on the shrunk case.
-        const FuzzVerdict again = judgeFuzzCase(engine, vs, shrunk, options.tolerance);
-        std::vector<std::string> rules = again.findings.empty() ? c.rules : again.findings.front().rules;
-        f.regressionFile = writeRegressionCase(options.regressionsDir, f, engine.name(), vs ? vs->name() : "", rules,
-                                               reproduceCommand(engine, vs, caseSeed));
+namespace {
+
+// One campaign: cases in batches (one engine call each), each judged, recorded and — the first
+// failure of each kind — shrunk, printed and kept.
+class FuzzCampaign {
+ public:
+  FuzzCampaign(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress)
+      : engine_(engine), vs_(vs), options_(options), progress_(progress), results_(options.outDir, options.resume) {}
+
+  FuzzSummary run() {
+    const long total = options_.cases ? *options_.cases : options_.seconds ? LONG_MAX : kDefaultFuzzCases;
+    for (long next = options_.shard - 1; next < total;) {
+      if (options_.seconds && elapsed() >= *options_.seconds) break;
+      if (options_.maxFailures && summary_.fail + summary_.engineFailure >= *options_.maxFailures) break;
+      std::vector<std::uint64_t> seeds;
+      std::vector<SpecCase> batch;
+      // With --max-failures one case at a time, so that the run stops at the failure itself.
+      const std::size_t batchSize = options_.maxFailures ? 1 : kFuzzBatch;
+      for (; next < total && batch.size() < batchSize; next += options_.shards) {
+        const std::uint64_t caseSeed = fuzzCaseSeed(options_.seed, next);
+        if (results_.done().count({engine_.name(), "fuzz-" + hex(caseSeed)})) {
+          ++summary_.skipped;
+          continue;
+        }
+        seeds.push_back(caseSeed);
+        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed), hex(caseSeed)));
       }
-      r.program = shrunk.program;
-      r.file = f.regressionFile;
-      r.detail = v.detail + " | shrunk in " + std::to_string(f.shrinkRuns) + " runs: " + f.detail;
-      progress << "FAIL " << v.kind << " (seed " << caseSeed << "): " << f.detail << "\n  shrunk case ("
-               << describeFuzzCase(f.shrunk) << "):\n";
-      std::istringstream lines(shrunk.program);
-      for (std::string line; std::getline(lines, line);) progress << "    " << line << "\n";
-      progress << "  reproduce: " << reproduceCommand(engine, vs, caseSeed) << "\n";
-      if (!f.regressionFile.empty()) progress << "  kept as " << f.regressionFile << "\n";
-      s.failures.push_back(std::move(f));
+      const std::vector<EngineResult> planned = engine_.runBatch(batch);
+      for (std::size_t k = 0; k < batch.size(); ++k) record(seeds[k], batch[k], planned[k]);
     }
-    results.append(r);
-    const auto now = std::chrono::steady_clock::now();
-    if (now - lastReport > std::chrono::seconds(2)) {
-      const double t = elapsed();
-      progress << "  " << s.run << " cases in " << std::fixed << std::setprecision(1) << t << " s ("
-               << std::setprecision(0) << s.run / t << "/s), " << s.fail + s.engineFailure << " failing\n"
-               << std::defaultfloat;
-      lastReport = now;
-    }
+    summary_.seconds = elapsed();
+    return summary_;
   }
-  s.seconds = elapsed();
-  return s;
+
+ private:
+  void record(std::uint64_t caseSeed, const SpecCase& c, const EngineResult& planned) {
+    const FuzzVerdict v = judgeFuzzResult(planned, engine_, vs_, c, options_.tolerance);
+    CaseResult r{engine_.name(), "fuzz-" + hex(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
+                 caseSeed, "", vs_ ? vs_->name() : ""};
+    ++summary_.run;
+    if (v.verdict == "pass") ++summary_.pass;
+    else if (v.verdict == "not-applicable") ++summary_.notApplicable;
+    else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
+    if ((v.verdict == "fail" || v.verdict == "engine-failure") && shrunkKinds_.insert(v.kind).second) {
+      keepFailure(caseSeed, c, v, r);
+    }
+    results_.append(r);  // a killed run keeps every result written so far
+    reportProgress();
+  }
+
+  void keepFailure(std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v, CaseResult& r) {
+    FuzzFailure f = shrinkFailure(engine_, vs_, caseSeed, v, options_);
+    const SpecCase shrunk = fuzzSpecCase(f.shrunk, hex(caseSeed));
+    const std::string reproduce = reproduceCommand(engine_, vs_, caseSeed);
+    if (!options_.regressionsDir.empty()) {
+      // The rules behind the failure: the oracle's, found again on the shrunk case.
+      const FuzzVerdict again = judgeFuzzCase(engine_, vs_, shrunk, options_.tolerance);
+      const std::vector<std::string> rules = again.findings.empty() ? c.rules : again.findings.front().rules;
+      f.regressionFile = writeRegressionCase(options_.regressionsDir, f, engine_.name(), vs_ ? vs_->name() : "", rules,
+                                             reproduce);
+    }
+    r.program = shrunk.program;
+    r.file = f.regressionFile;
+    r.detail = v.detail + " | shrunk in " + std::to_string(f.shrinkRuns) + " runs: " + f.detail;
+    progress_ << "FAIL " << v.kind << " (seed " << caseSeed << "): " << f.detail << "\n  shrunk case ("
+              << describeFuzzCase(f.shrunk) << "):\n";
+    std::istringstream lines(shrunk.program);
+    for (std::string line; std::getline(lines, line);) progress_ << "    " << line << "\n";
+    progress_ << "  reproduce: " << reproduce << "\n";
+    if (!f.regressionFile.empty()) progress_ << "  kept as " << f.regressionFile << "\n";
+    summary_.failures.push_back(std::move(f));
+  }
+
+  void reportProgress() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastReport_ <= std::chrono::seconds(2)) return;
+    const double t = elapsed();
+    progress_ << "  " << summary_.run << " cases in " << std::fixed << std::setprecision(1) << t << " s ("
+              << std::setprecision(0) << summary_.run / t << "/s), " << summary_.fail + summary_.engineFailure
+              << " failing\n"
+              << std::defaultfloat;
+    lastReport_ = now;
+  }
+
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(); }
+
+  Engine& engine_;
+  Engine* vs_;
+  const FuzzOptions& options_;
+  std::ostream& progress_;
+  ResultsFile results_;
+  FuzzSummary summary_;
+  std::set<std::string> shrunkKinds_;  // each kind of failure is shrunk (and kept) once per run
+  const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point lastReport_ = started_;
+};
+
+}  // namespace
+
+FuzzSummary runFuzz(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress) {
+  return FuzzCampaign(engine, vs, options, progress).run();
 }
 
 }  // namespace cyclecert

@@ -63,6 +63,12 @@ struct FuzzVerdict {
   double seconds = 0;
 };
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance);
+// The same for a result the engine already gave (a batch's).
+FuzzVerdict judgeFuzzResult(const EngineResult& r, const Engine& engine, Engine* vs, const SpecCase& c,
+                            double tolerance);
+
+// Cases per engine batch: one rs274 start serves this many.
+inline constexpr std::size_t kFuzzBatch = 64;
 
 // Runs the campaign; progress (cases/s, failures so far) goes to `progress` every few seconds,
 // and each failure as it is found, with its seed and the command that reproduces it.

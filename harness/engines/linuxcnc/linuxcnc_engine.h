@@ -86,7 +86,7 @@ class LinuxCncEngine : public Engine {
   // Several cases in one rs274 process (one start instead of one per case). A case whose
   // translation is not applicable gets that result; when rs274 stops on an error, the case it
   // stopped in gets the alarm and the cases after it are run again in a new batch.
-  std::vector<EngineResult> runBatch(const std::vector<SpecCase>& cases);
+  std::vector<EngineResult> runBatch(const std::vector<SpecCase>& cases) override;
 
   bool available() const;           // rs274 is there
   std::string rs274Path() const;    // BUILD/linuxcnc/usr/bin/rs274
