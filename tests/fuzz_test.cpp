@@ -226,11 +226,11 @@ TEST_F(FuzzCli, AFailurePrintsItsSeedAndTheCommandThatReproducesIt) {
 }
 
 TEST_F(FuzzCli, AStoppedRunResumesWhereItStopped) {
-  ASSERT_EQ(run("fuzz --engine reference --seed 5 --cases 40 --out " + path("out")).exitCode, 0);
+  ASSERT_EQ(run("fuzz --engine reference --no-save --seed 5 --cases 40 --out " + path("out")).exitCode, 0);
   // A killed run's last line may be cut short: resume drops it and runs that case again.
   std::string results = read(path("out/results.jsonl"));
   std::ofstream(path("out/results.jsonl")) << results.substr(0, results.size() - 20);
-  const CliRun r = run("fuzz --engine reference --seed 5 --cases 60 --resume --out " + path("out"));
+  const CliRun r = run("fuzz --engine reference --no-save --seed 5 --cases 60 --resume --out " + path("out"));
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("21 cases"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("39 already done"), std::string::npos) << r.out;
@@ -241,9 +241,9 @@ TEST_F(FuzzCli, AStoppedRunResumesWhereItStopped) {
 }
 
 TEST_F(FuzzCli, ShardsMergeIntoTheUnshardedRun) {
-  ASSERT_EQ(run("fuzz --engine reference --seed 9 --cases 30 --out " + path("whole")).exitCode, 0);
-  ASSERT_EQ(run("fuzz --engine reference --seed 9 --cases 30 --shard 1/2 --out " + path("s1")).exitCode, 0);
-  ASSERT_EQ(run("fuzz --engine reference --seed 9 --cases 30 --shard 2/2 --out " + path("s2")).exitCode, 0);
+  ASSERT_EQ(run("fuzz --engine reference --no-save --seed 9 --cases 30 --out " + path("whole")).exitCode, 0);
+  ASSERT_EQ(run("fuzz --engine reference --no-save --seed 9 --cases 30 --shard 1/2 --out " + path("s1")).exitCode, 0);
+  ASSERT_EQ(run("fuzz --engine reference --no-save --seed 9 --cases 30 --shard 2/2 --out " + path("s2")).exitCode, 0);
   const CliRun m = run("merge --out " + path("merged") + " " + path("s1") + " " + path("s2") + " " + path("s2"));
   EXPECT_EQ(m.exitCode, 0) << m.err;
   EXPECT_NE(m.out.find("30 results, 15 duplicate(s) dropped"), std::string::npos) << m.out;
@@ -255,6 +255,33 @@ TEST_F(FuzzCli, ShardsMergeIntoTheUnshardedRun) {
   };
   EXPECT_EQ(idsOf(path("merged/results.jsonl")), idsOf(path("whole/results.jsonl")));
   EXPECT_EQ(idsOf(path("whole/results.jsonl")).size(), 30u);
+}
+
+}  // namespace
+}  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+// The first real engine: a short fuzz against LinuxCNC's rs274 answers every case (a toolpath, an
+// alarm, or not applicable — never an engine failure) and finds what the README lists.
+TEST(Fuzz, LinuxCncAnswersEveryGeneratedCaseAndIsFoundWanting) {
+  if (!fs::exists(fs::path(CYCLECERT_CLI).parent_path() / "linuxcnc/usr/bin/rs274"))
+    GTEST_SKIP() << "rs274 is not fetched (make rs274: harness/engines/linuxcnc/fetch-rs274.sh build)";
+  auto engine = makeEngine("linuxcnc");
+  FuzzOptions o;
+  o.seed = 1;
+  o.cases = 200;
+  o.shrinkBudget = 30;
+  o.outDir = scratch("linuxcnc");
+  std::ostringstream progress;
+  const FuzzSummary s = runFuzz(*engine, nullptr, o, progress);
+  fs::remove_all(o.outDir);
+  EXPECT_EQ(s.engineFailure, 0) << progress.str();
+  EXPECT_GT(s.notApplicable, 0);
+  std::set<std::string> kinds;
+  for (const FuzzFailure& f : s.failures) kinds.insert(f.kind);
+  EXPECT_TRUE(kinds.count("pass-levels")) << progress.str();  // the first pass at A's level (README)
 }
 
 }  // namespace
