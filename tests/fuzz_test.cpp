@@ -225,6 +225,13 @@ TEST_F(FuzzCli, AFailurePrintsItsSeedAndTheCommandThatReproducesIt) {
   EXPECT_NE(r.err.find("kept as " + path("regressions")), std::string::npos) << r.err;
 }
 
+TEST_F(FuzzCli, ATimeBudgetStopsTheRunAndPrintsTheSeed) {
+  const CliRun r = run("fuzz --engine reference --no-save --time 1 --out " + path("out"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("(reproduce the run with --seed "), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("cases in 1."), std::string::npos) << r.out;  // stopped after about a second
+}
+
 TEST_F(FuzzCli, AStoppedRunResumesWhereItStopped) {
   ASSERT_EQ(run("fuzz --engine reference --no-save --seed 5 --cases 40 --out " + path("out")).exitCode, 0);
   // A killed run's last line may be cut short: resume drops it and runs that case again.
