@@ -46,18 +46,31 @@ std::vector<FuzzSegment> withCollinearRun(std::vector<FuzzSegment> segs, int at)
   return segs;
 }
 
-// Type II: some segments go down (pockets); the shape stays off the spindle axis and above B's
-// level is the caller's business (B is raised by the deepest dip).
+// What RapidCheck draws for one case; caseFrom() turns it into a case, step by step.
+struct Draws {
+  std::vector<int> choice;  // 16 choices 0…9: profile, cycle, quadrant, type, out-of-range draws, …
+  std::vector<FuzzSegment> segments;
+  std::vector<int> downs;   // type II: which segments go down
+  int depthOfCut, retract, allowanceDepth, allowanceCut, above, along, b;  // hundredths
+};
+
+void chooseCycle(FuzzCase& c, const std::vector<int>& choice) {
+  c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
+  c.cycle = choice[1] % 2 ? 72 : 71;
+  c.mirrorCut = choice[2] % 4 == 1;
+  c.mirrorDepth = choice[3] % 4 == 1;
+  c.typeII = choice[4] % 3 == 1;
+  c.headMotion = choice[5] == 9 ? 2 : choice[5] % 2;  // G02 (out of range: PS0065) one time in ten
+  c.finish = choice[15] % 3 == 0;
+}
+
+// Type II: some lines go down (pockets). A step (no length along the cut axis) never does: down
+// and up again at one cut coordinate is a slot of no width, the shape running back over itself.
 void makePockets(FuzzCase& c, const std::vector<int>& downs) {
-  // A step (no length along the cut axis) never goes down: down and up again at one cut coordinate
-  // is a slot of no width, the shape running back over itself.
   for (std::size_t i = 0; i < c.segments.size() && i < downs.size(); ++i) {
     const FuzzSegment& s = c.segments[i];
     if (downs[i] % 3 == 0 && s.kind == FuzzSegment::Line && s.along > 0) c.segments[i].up = -s.up;
   }
-  // G71.T2.DW0: with pockets the allowance along the cut axis is 0, else the manual itself says the
-  // tool cuts into a side wall — a gouge the rules predict is no finding against an engine.
-  c.allowanceCut = 0;
 }
 
 // Out of range one time in ten: a line that turns back along the cut axis (PS0064), or — type I,
@@ -72,72 +85,89 @@ void turnBack(FuzzCase& c, int choice, int at) {
   if (choice == 8 && !c.typeII && s.up > 0) s.up = -s.up;
 }
 
+void drawShape(FuzzCase& c, const Draws& d) {
+  c.segments = withCollinearRun(d.segments, d.choice[6]);
+  if (c.segments.size() > 8) c.segments.resize(8);
+  if (c.segments.empty()) c.segments.push_back({FuzzSegment::Line, 500, 300});
+  // A shape with no length along the cut axis (steps only) has nothing to rough.
+  if (std::all_of(c.segments.begin(), c.segments.end(), [](const FuzzSegment& s) { return s.along == 0; })) {
+    c.segments.front().along = 100;
+  }
+  if (c.typeII) makePockets(c, d.downs);
+  turnBack(c, d.choice[8], d.choice[6]);
+  // B is raised by the deepest dip, so that no pocket reaches below where B was drawn.
+  int lowest = 0, x = 0;
+  for (const FuzzSegment& s : c.segments) lowest = std::min(lowest, x += s.up);
+  c.b = d.b - lowest;
+}
+
+void drawCycleParameters(FuzzCase& c, const Draws& d) {
+  c.depthOfCut = d.choice[7] == 9 ? 0 : d.depthOfCut;  // Δd 0: out of range (PS0062)
+  c.retract = d.retract;
+  // Allowances: none (boundary) or with the quadrant (valid). G71.T2.DW0: with pockets the
+  // allowance along the cut axis is 0, else the manual itself says the tool cuts into a side
+  // wall — a gouge the rules predict is no finding against an engine.
+  c.allowanceDepth = d.choice[9] < 2 ? 0 : d.allowanceDepth;
+  c.allowanceCut = d.choice[10] < 3 || c.typeII ? 0 : d.allowanceCut;
+}
+
+// A above C by more than the depth allowance (valid), exactly on it (boundary), or — with a depth
+// allowance, where G71.LIMIT.HEIGHT forbids it — below C's level but still above B (out of range).
+// One out-of-range draw at a time: where two alarms apply, the documents do not say which the
+// controller raises first.
+void placeStart(FuzzCase& c, const Draws& d) {
+  int highest = 0, x = 0;
+  for (const FuzzSegment& s : c.segments) highest = std::max(highest, x += s.up);
+  const bool otherOutOfRange = d.choice[8] >= 8 || c.depthOfCut == 0 || c.headMotion == 2;
+  const bool belowC = d.choice[11] == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 && !otherOutOfRange;
+  c.startAbove = d.choice[11] == 0 ? c.allowanceDepth
+                 : belowC          ? -std::min(d.above / 4 + 1, highest - 10)
+                                   : c.allowanceDepth + d.above;
+  c.startAlong = d.along;
+}
+
+void drawMachineParameters(FuzzCase& c, const std::vector<int>& choice) {
+  c.dtp = choice[12] % 7 == 2;
+  // RF1 skips the semi-finish, so a straight return (DTP = 1, GSK's only return) leaves from
+  // beside the last pass: with Δw it runs back through the allowance, as documented — a hazard of
+  // the documents, not a deviation, so that combination is not drawn.
+  const bool straightReturn = c.dtp || c.profile == "gsk";
+  c.rf1 = choice[12] % 5 == 1 && !(straightReturn && c.allowanceCut > 0);
+  // R16, NSP and RF2 are type II's parameters.
+  c.r16 = c.typeII && choice[13] % 2;
+  c.nsp = c.typeII && choice[13] % 3 == 1;
+  c.rf2 = c.typeII && choice[14] % 4 == 1;
+}
+
+FuzzCase caseFrom(Draws d) {
+  d.choice.resize(16, 0);
+  FuzzCase c;
+  chooseCycle(c, d.choice);
+  drawCycleParameters(c, d);
+  drawShape(c, d);
+  placeStart(c, d);
+  drawMachineParameters(c, d.choice);
+  return c;
+}
+
 }  // namespace
 
 rc::Gen<FuzzCase> genFuzzCase() {
   return rc::gen::apply(
-      [](std::vector<int> choice, std::vector<FuzzSegment> segs, std::vector<int> downs, int dd, int e, int du,
-         int dw, int above, int ahead, int b) {
-        choice.resize(16, 0);
-        FuzzCase c;
-        c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
-        c.cycle = choice[1] % 2 ? 72 : 71;
-        c.mirrorCut = choice[2] % 4 == 1;
-        c.mirrorDepth = choice[3] % 4 == 1;
-        c.typeII = choice[4] % 3 == 1;
-        c.headMotion = choice[5] == 9 ? 2 : choice[5] % 2;  // G02 (out of range) one time in ten
-        c.segments = withCollinearRun(std::move(segs), choice[6]);
-        if (c.segments.size() > 8) c.segments.resize(8);
-        if (c.segments.empty()) c.segments.push_back({FuzzSegment::Line, 500, 300});
-        // A shape with no length along the cut axis (steps only) has nothing to rough.
-        if (std::all_of(c.segments.begin(), c.segments.end(), [](const FuzzSegment& s) { return s.along == 0; })) {
-          c.segments.front().along = 100;
-        }
-        // Δd: valid, or 0 (out of range: PS0062).
-        c.depthOfCut = choice[7] == 9 ? 0 : dd;
-        c.retract = e;
-        // Allowances: zero (boundary) or with the quadrant (valid).
-        c.allowanceDepth = choice[9] < 2 ? 0 : du;
-        c.allowanceCut = choice[10] < 3 ? 0 : dw;
-        if (c.typeII) makePockets(c, downs);
-        turnBack(c, choice[8], choice[6]);
-        c.b = b;
-        int lowest = 0, highest = 0, x = 0;
-        for (const FuzzSegment& s : c.segments) {
-          x += s.up;
-          lowest = std::min(lowest, x);
-          highest = std::max(highest, x);
-        }
-        c.b -= lowest;  // pockets never reach below B's level minus the deepest dip
-        // A above C by more than the depth allowance (valid), exactly on it (boundary), or — with
-        // a depth allowance, where G71.LIMIT.HEIGHT forbids it — below C's level but still above B
-        // (out of range).
-        // One out-of-range draw at a time: where two alarms apply, the documents do not say which
-        // the controller raises first.
-        const bool turnedBack = choice[8] >= 8;
-        const bool belowC = choice[11] == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 && !turnedBack &&
-                            c.depthOfCut > 0 && c.headMotion != 2;
-        c.startAbove = choice[11] == 0 ? c.allowanceDepth
-                       : belowC        ? -std::min(above / 4 + 1, highest - 10)
-                                       : c.allowanceDepth + above;
-        c.startAlong = ahead;
-        c.dtp = choice[12] % 7 == 2;
-        // RF1 skips the semi-finish, so a straight return (DTP = 1, GSK's only return) leaves from
-        // beside the last pass: with Δw it runs back through the allowance, as documented — a
-        // hazard of the documents, not a deviation, so that combination is not drawn.
-        const bool straightReturn = c.dtp || c.profile == "gsk";
-        c.rf1 = choice[12] % 5 == 1 && !(straightReturn && c.allowanceCut > 0);
-        // R16, NSP and RF2 are type II's parameters.
-        c.r16 = c.typeII && choice[13] % 2;
-        c.nsp = c.typeII && choice[13] % 3 == 1;
-        c.rf2 = c.typeII && choice[14] % 4 == 1;
-        c.finish = choice[15] % 3 == 0;
-        return c;
+      [](std::vector<int> choice, std::vector<FuzzSegment> segments, std::vector<int> downs, int dd, int e, int du,
+         int dw, int above, int along, int b) {
+        return caseFrom({std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b});
       },
       rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
-      rc::gen::container<std::vector<FuzzSegment>>(genSegment()), rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)),
-      rc::gen::inRange(50, 300), rc::gen::inRange(1, 200), rc::gen::inRange(1, 100), rc::gen::inRange(1, 60),
-      rc::gen::inRange(1, 500), rc::gen::inRange(0, 400), rc::gen::inRange(0, 3000));
+      rc::gen::container<std::vector<FuzzSegment>>(genSegment()),
+      rc::gen::container<std::vector<int>>(rc::gen::inRange(0, 99)),
+      rc::gen::inRange(50, 300),   // Δd 0.5 … 3 mm
+      rc::gen::inRange(1, 200),    // e
+      rc::gen::inRange(1, 100),    // Δu/2
+      rc::gen::inRange(1, 60),     // Δw
+      rc::gen::inRange(1, 500),    // A above C
+      rc::gen::inRange(0, 400),    // A's cut coordinate
+      rc::gen::inRange(0, 3000));  // B's depth coordinate
 }
 
 namespace {

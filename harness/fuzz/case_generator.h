@@ -9,12 +9,13 @@
 // (or stands still along z: a step) and +x (type I), or also −x (type II: pockets).
 //
 // What is drawn: lines, 45° chamfers, convex and concave quarter arcs (a quarter arc after a line
-// along the cut axis is tangent to it), degenerate segments (zero length, a line split into a
-// collinear run); parameters Δd, e, Δu, Δw valid, on their boundary (Δd = the whole depth, e = 0,
-// zero allowances, A exactly on C's level) and out of range (Δd = 0, a head block in G02, A below
-// C's level, allowances against the quadrant); machine parameters RF1, DTP, R16, NSP, RF2; the
-// profiles fanuc-0i-f, fanuc-0i-c and gsk. Lengths are whole hundredths of a mm, so the program
-// text is exact.
+// along the cut axis is tangent to it), steps, degenerate segments (zero length, a line split into
+// a collinear run); type II pockets; parameters Δd, e, Δu, Δw valid or on their boundary (no
+// allowance, A exactly on C's level) and, one at a time, out of range (Δd = 0, a head block in
+// G02, A below C's level with Δu, a line turning back along either axis); machine parameters RF1,
+// DTP (and, for type II, R16, NSP, RF2); the profiles fanuc-0i-f, fanuc-0i-c and gsk. Lengths are
+// whole hundredths of a mm, so the program text is exact. Combinations whose collisions the
+// documents themselves cause are not drawn (see caseFrom() and fuzzProgram()).
 #include <cstdint>
 #include <string>
 #include <utility>
