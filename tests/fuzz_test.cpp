@@ -117,6 +117,7 @@ TEST(Fuzz, TheReferencePassesEveryOracleOnGeneratedCases) {
   const FuzzSummary s = runFuzz(*engine, nullptr, o, progress);
   fs::remove_all(o.outDir);
   EXPECT_EQ(s.run, 400);
+  EXPECT_EQ(s.notApplicable, 0) << progress.str();  // every generated case is one the oracles judge
   EXPECT_EQ(s.fail, 0) << progress.str();
   EXPECT_EQ(s.engineFailure, 0) << progress.str();
 }

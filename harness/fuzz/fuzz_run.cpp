@@ -24,13 +24,13 @@ rc::Shrinkable<FuzzCase> shrinkTree(std::uint64_t caseSeed) {
   return genFuzzCase()(rc::Random(caseSeed), static_cast<int>(caseSeed % 101));
 }
 
-std::string hex(std::uint64_t v) {
+}  // namespace
+
+std::string caseSeedTag(std::uint64_t caseSeed) {
   std::ostringstream s;
-  s << std::hex << std::setw(16) << std::setfill('0') << v;
+  s << std::hex << std::setw(16) << std::setfill('0') << caseSeed;
   return s.str();
 }
-
-}  // namespace
 
 FuzzCase generateFuzzCase(std::uint64_t caseSeed) { return shrinkTree(caseSeed).value(); }
 
@@ -98,7 +98,7 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
     auto candidates = current.shrinks();
     while (auto candidate = candidates.next()) {
       if (f.shrinkRuns++ >= options.shrinkBudget) break;
-      const FuzzVerdict v = judgeFuzzCase(engine, vs, fuzzSpecCase(candidate->value(), hex(caseSeed)), options.tolerance);
+      const FuzzVerdict v = judgeFuzzCase(engine, vs, fuzzSpecCase(candidate->value(), caseSeedTag(caseSeed)), options.tolerance);
       if (v.verdict == first.verdict && v.kind == first.kind) {
         current = *candidate;
         f.detail = v.detail;
@@ -140,12 +140,12 @@ class FuzzCampaign {
       const std::size_t batchSize = options_.maxFailures ? 1 : kFuzzBatch;
       for (; next < total && batch.size() < batchSize; next += options_.shards) {
         const std::uint64_t caseSeed = fuzzCaseSeed(options_.seed, next);
-        if (results_.done().count({engine_.name(), "fuzz-" + hex(caseSeed)})) {
+        if (results_.done().count({engine_.name(), "fuzz-" + caseSeedTag(caseSeed)})) {
           ++summary_.skipped;
           continue;
         }
         seeds.push_back(caseSeed);
-        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed), hex(caseSeed)));
+        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed), caseSeedTag(caseSeed)));
       }
       const std::vector<EngineResult> planned = engine_.runBatch(batch);
       for (std::size_t k = 0; k < batch.size(); ++k) record(seeds[k], batch[k], planned[k]);
@@ -157,7 +157,7 @@ class FuzzCampaign {
  private:
   void record(std::uint64_t caseSeed, const SpecCase& c, const EngineResult& planned) {
     const FuzzVerdict v = judgeFuzzResult(planned, engine_, vs_, c, options_.tolerance);
-    CaseResult r{engine_.name(), "fuzz-" + hex(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
+    CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
                  caseSeed, "", vs_ ? vs_->name() : ""};
     ++summary_.run;
     if (v.verdict == "pass") ++summary_.pass;
@@ -172,7 +172,7 @@ class FuzzCampaign {
 
   void keepFailure(std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v, CaseResult& r) {
     FuzzFailure f = shrinkFailure(engine_, vs_, caseSeed, v, options_);
-    const SpecCase shrunk = fuzzSpecCase(f.shrunk, hex(caseSeed));
+    const SpecCase shrunk = fuzzSpecCase(f.shrunk, caseSeedTag(caseSeed));
     const std::string reproduce = reproduceCommand(engine_, vs_, caseSeed);
     if (!options_.regressionsDir.empty()) {
       // The rules behind the failure: the oracle's, found again on the shrunk case.

@@ -51,6 +51,7 @@ struct FuzzSummary {
 };
 
 std::uint64_t fuzzCaseSeed(std::uint64_t runSeed, long index);
+std::string caseSeedTag(std::uint64_t caseSeed);  // 16 hex digits: names the case's results and files
 
 // The case a case seed generates (its RapidCheck shrink tree's root).
 FuzzCase generateFuzzCase(std::uint64_t caseSeed);

@@ -2,8 +2,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
-#include <sstream>
 
 namespace cyclecert {
 
@@ -22,12 +20,11 @@ std::string slug(const std::string& name) {
 std::string writeRegressionCase(const std::string& dir, const FuzzFailure& failure, const std::string& engineName,
                                 const std::string& vsName, const std::vector<std::string>& rules,
                                 const std::string& reproduce) {
-  std::ostringstream seed;
-  seed << std::hex << std::setw(16) << std::setfill('0') << failure.caseSeed;
-  const SpecCase c = fuzzSpecCase(failure.shrunk, seed.str());
+  const std::string seed = caseSeedTag(failure.caseSeed);
+  const SpecCase c = fuzzSpecCase(failure.shrunk, seed);
   nlohmann::json j = c.raw;
   const std::string folder = failure.shrunk.profile + "/g" + std::to_string(failure.shrunk.cycle);
-  const std::string name = "fuzz-" + slug(engineName) + "-" + seed.str();
+  const std::string name = "fuzz-" + slug(engineName) + "-" + seed;
   j["id"] = folder + "/" + name;
   j["title"] = "shrunk fuzz failure (" + failure.kind + ") of " + engineName + ": " + describeFuzzCase(failure.shrunk);
   j["rules"] = rules;
