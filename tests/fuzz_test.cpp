@@ -233,6 +233,26 @@ TEST_F(FuzzCli, ATimeBudgetStopsTheRunAndPrintsTheSeed) {
   EXPECT_NE(r.out.find("cases in 1."), std::string::npos) << r.out;  // stopped after about a second
 }
 
+TEST_F(FuzzCli, AKilledRunKeepsEveryResultWrittenAndResumes) {
+  // SIGKILL after a second: no chance to flush anything at exit.
+  const std::string fuzz = std::string(CYCLECERT_CLI) + " fuzz --engine reference --no-save --seed 3 --cases 100000 --out " +
+                           path("out");
+  ASSERT_NE(std::system(("sh -c '" + fuzz + " 2>/dev/null & pid=$!; sleep 2; kill -9 $pid; wait $pid' ").c_str()), -1);
+  std::istringstream lines(read(path("out/results.jsonl")));
+  long complete = 0;
+  for (std::string line; std::getline(lines, line);) {
+    try {
+      if (nlohmann::json::parse(line).contains("case")) ++complete;
+    } catch (const std::exception&) {  // the line the kill cut short
+    }
+  }
+  EXPECT_GT(complete, 0);
+  const CliRun r = run("fuzz --engine reference --no-save --seed 3 --cases " + std::to_string(complete + 5) +
+                       " --resume --out " + path("out"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find(std::to_string(complete) + " already done"), std::string::npos) << r.out;
+}
+
 TEST_F(FuzzCli, AStoppedRunResumesWhereItStopped) {
   ASSERT_EQ(run("fuzz --engine reference --no-save --seed 5 --cases 40 --out " + path("out")).exitCode, 0);
   // A killed run's last line may be cut short: resume drops it and runs that case again.
