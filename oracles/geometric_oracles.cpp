@@ -95,11 +95,11 @@ class CompleteOracle : public Oracle {
     const bool finished = r->cycle->semiFinish || in.program.hasFinishingCycle;
     const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
     const BgRegion left = leftover(*r, tolerance(in));
-    // Measured against a finely flattened profile: see kMeasuringChord in material_replay.cpp.
-    auto thickest = thickestAbove(left, r->target, r->away, 1e-7);
+    // Measured against a finely flattened profile (kMeasuringChord, material_replay.h).
+    auto thickest = thickestAbove(left, r->target, r->away, kMeasuringChord);
     if (!thickest || thickest->thickness <= allowed) return;
     // A skin narrower than the tolerance along the cut axis is not material left.
-    const auto solid = thickestAbove(withoutSkins(left, r->away, tolerance(in)), r->target, r->away, 1e-7);
+    const auto solid = thickestAbove(withoutSkins(left, r->away, tolerance(in)), r->target, r->away, kMeasuringChord);
     if (!solid || solid->thickness <= allowed) return;
     thickest = solid;
     std::ostringstream m;

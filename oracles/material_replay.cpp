@@ -69,11 +69,6 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
 
 namespace {
 
-// Thickness is measured along the depth axis. Where an arc runs nearly parallel to that axis, a
-// chord error of δ becomes a depth error of δ / sin θ, so the profile a thickness is measured
-// against is flattened far finer than the material (whose vertices lie on the arcs exactly).
-constexpr double kMeasuringChord = 1e-7;
-
 BgRegion stockFor(const JudgeInput& in, const CycleSpec& c, Point away, double reach) {
   switch (in.stock.kind) {
     case Stock::Bar: return barStock(in.stock.diameter, in.stock.length, in.stock.frontZ);
