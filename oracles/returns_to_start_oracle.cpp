@@ -21,6 +21,7 @@ class ReturnsToStartOracle : public Oracle {
     const double tol = in.settings.tolerance();
     const std::size_t last = in.path.moves.size() - 1;
     const Point cPrime = c->shape.back().to + c->allowance;
+    if (distance(cPrime, c->start) <= tol) return;  // the semi-finish ends at A itself: no return to shape
     const Point end = inFrame(*c, in.path.moves[last].to), before = inFrame(*c, in.path.from(last));
     if (c->directReturn) {
       if (distance(in.path.from(last), cPrime) > tol) {
