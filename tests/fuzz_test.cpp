@@ -12,6 +12,7 @@
 #include "harness/check_run.h"
 #include "harness/engines/engine.h"
 #include "harness/fuzz/fuzz_run.h"
+#include "harness/fuzz/regression_case.h"
 #include "harness/rule_catalogue.h"
 #include "harness/spec_case.h"
 #include "tests/cli_fixture.h"
@@ -184,6 +185,29 @@ TEST(Fuzz, ComparedWithASecondEngineADivergenceIsAFailure) {
   ASSERT_EQ(s.failures.size(), 1u);
   EXPECT_FALSE(s.failures.front().kind.empty());
   for (const std::string& dir : {o.outDir, o.regressionsDir}) fs::remove_all(dir);
+}
+
+// A disagreement with the reference is kept as a case that must agree with the reference, run at
+// check time — never as a copy of either engine's toolpath.
+TEST(Fuzz, ADivergenceIsKeptAsAgreementWithTheReference) {
+  FuzzFailure f;
+  f.caseSeed = fuzzCaseSeed(kSeed, 3);
+  f.kind = "diverges";
+  f.detail = "move 2: reference …, process:x …";
+  f.shrunk = generateFuzzCase(f.caseSeed);
+  const std::string dir = scratch("agrees");
+  const std::string file = writeRegressionCase(dir, f, "process:my engine", "reference", {"G71.QUAD"}, "cyclecert fuzz …");
+  const SpecCase kept = loadSpecCase(file);
+  ASSERT_TRUE(kept.agreesWith);
+  EXPECT_EQ(*kept.agreesWith, "reference");
+  EXPECT_FALSE(kept.expectedMoves);
+  EXPECT_NE(file.find("fuzz-process-my-engine-"), std::string::npos) << file;
+  CheckOptions co{scratch("agrees-specs"), dir, scratch("agrees-out"), false};
+  fs::create_directories(co.specsDir + "/cases");
+  std::ostringstream progress;
+  EXPECT_EQ(runCheck(*makeEngine("reference"), co, progress).pass, 1) << progress.str();
+  EXPECT_EQ(runCheck(*makeEngine("mutant:start-not-returned"), co, progress).fail, 1) << progress.str();
+  for (const std::string& d : {dir, co.specsDir, co.outDir}) fs::remove_all(d);
 }
 
 class FuzzCli : public CliFixture {};
