@@ -148,7 +148,12 @@ class FuzzCampaign {
         batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed), caseSeedTag(caseSeed)));
       }
       const std::vector<EngineResult> planned = engine_.runBatch(batch);
-      for (std::size_t k = 0; k < batch.size(); ++k) record(seeds[k], batch[k], planned[k]);
+      for (std::size_t k = 0; k < batch.size(); ++k) {
+        // The time budget holds within a batch too: cases planned but not judged are not recorded
+        // (a resumed run runs them).
+        if (options_.seconds && elapsed() >= *options_.seconds) break;
+        record(seeds[k], batch[k], planned[k]);
+      }
     }
     summary_.seconds = elapsed();
     return summary_;
