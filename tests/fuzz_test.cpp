@@ -250,6 +250,15 @@ TEST_F(FuzzCli, AFailurePrintsItsSeedAndTheCommandThatReproducesIt) {
   EXPECT_NE(r.err.find("kept as " + path("regressions")), std::string::npos) << r.err;
 }
 
+TEST_F(FuzzCli, AnEngineThatAnswersGarbageFailsEveryCaseAndTheRunFinishes) {
+  const CliRun r = run("fuzz --engine 'process:sh tests/data/engines/garbage.sh' --seed 2 --cases 12 --shrink-budget 3 "
+                       "--no-save --out " + path("out"));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.out.find("12 engine failure(s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("FAIL engine-failure"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("invalid JSON reply"), std::string::npos) << r.err;
+}
+
 TEST_F(FuzzCli, ATimeBudgetStopsTheRunAndPrintsTheSeed) {
   const CliRun r = run("fuzz --engine reference --no-save --time 1 --out " + path("out"));
   EXPECT_EQ(r.exitCode, 0) << r.err;
