@@ -168,10 +168,12 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
     } else if (!onFinishShape(in, *c, move)) {
-      const BgRegion removed = model.removedBy(move);
-      // The layer is the removed material the move itself touches: material the shadow reaches
-      // beyond a part overhang (a shape turning back within 5145/5146) is not a layer of this pass.
-      const BgRegion layer = touching(removed, move, tolerance);
+      // The layer is the material the move itself touches, measured above it (its shadow): material
+      // the shadow reaches beyond a part overhang (a shape turning back within 5145/5146) is not a
+      // layer of this pass. The pieces of material that touch the move are measured whole —
+      // thickestAbove counts only what stands above the move within its span — which spares a
+      // boolean per feed.
+      const BgRegion layer = touching(model.remaining(), move, tolerance);
       if (!layer.empty()) {
         r.removedThickness[i] = thickestAbove(layer, {move}, r.away, kMeasuringChord);
         // A skin narrower than the tolerance along the cut axis is not a layer: measure without it.
