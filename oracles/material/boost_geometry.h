@@ -9,7 +9,9 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #pragma GCC diagnostic pop
 #else
 #include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #endif

@@ -352,7 +352,7 @@ void MaterialModel::apply(const Segment& move, MoveKind kind) {
                                  operands.max_corner().y() - operands.min_corner().y());
     tidy(rest, size);
     const double resolution = std::max(kDustWidth, kBooleanResolution * size);
-    if (!bg::is_valid(rest)) splitPinches(rest, resolution);
+    splitPinches(rest, resolution);
     // Boost keeps a piece whose edges lie, within its resolution, on the shadow's edge even when the
     // whole piece is inside the shadow (a step left by a pass, then the semi-finish along the
     // profile it rests on): such a piece is cut material.

@@ -258,11 +258,55 @@ std::vector<std::vector<BgPoint>> loopsOf(std::vector<BgPoint> ring, double tole
 
 }  // namespace
 
+namespace {
+
+// Whether a ring (closing point excluded) touches itself: a vertex within `tolerance` of an edge
+// that does not end at it or at a neighbour of it — the same point twice, or a vertex on another
+// edge. Edges are found through an R-tree, so this costs O(n log n), far less than is_valid.
+bool touchesItself(const std::vector<BgPoint>& ring, double tolerance) {
+  const std::size_t n = ring.size();
+  if (n < 4) return false;
+  using Box = bg::model::box<BgPoint>;
+  using Entry = std::pair<Box, std::size_t>;
+  std::vector<Entry> edges;
+  edges.reserve(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const BgPoint& a = ring[j];
+    const BgPoint& b = ring[(j + 1) % n];
+    edges.push_back({Box({std::min(a.x(), b.x()) - tolerance, std::min(a.y(), b.y()) - tolerance},
+                         {std::max(a.x(), b.x()) + tolerance, std::max(a.y(), b.y()) + tolerance}),
+                     j});
+  }
+  const bg::index::rtree<Entry, bg::index::quadratic<16>> tree(edges.begin(), edges.end());
+  std::vector<Entry> near;
+  for (std::size_t i = 0; i < n; ++i) {
+    near.clear();
+    tree.query(bg::index::intersects(ring[i]), std::back_inserter(near));
+    const std::size_t previous = (i + n - 1) % n, next = (i + 1) % n;
+    for (const auto& [box, j] : near) {
+      const std::size_t k = (j + 1) % n;
+      if (i == j || i == k) continue;  // its own edges
+      double t = 0;
+      if (distanceToSegment(ring[i], ring[j], ring[k], t) > tolerance) continue;
+      // Close to a neighbour's end only: a short edge, not a pinch.
+      if ((t == 0 && j == next) || (t == 1 && k == previous)) continue;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 void splitPinches(BgRegion& region, double tolerance) {
   BgRegion out;
   for (BgPolygon& polygon : region) {
     std::vector<BgPoint> outer(polygon.outer().begin(), polygon.outer().end());
     if (outer.size() >= 2 && bg::equals(outer.front(), outer.back())) outer.pop_back();
+    if (!touchesItself(outer, tolerance)) {
+      out.push_back(std::move(polygon));
+      continue;
+    }
     const auto loops = loopsOf(std::move(outer), tolerance);
     if (loops.size() == 1) {
       out.push_back(std::move(polygon));
