@@ -1,5 +1,6 @@
 // returns-to-start: a roughing (and finishing) cycle ends where it started, at A (G72.STEP8,
 // G71.T1.STEP8, G71.T2.RETURN, G70.EX).
+#include <cmath>
 #include <sstream>
 
 #include "oracles/oracles.h"
@@ -21,8 +22,10 @@ class ReturnsToStartOracle : public Oracle {
     const double tol = in.settings.tolerance();
     const std::size_t last = in.path.moves.size() - 1;
     const Point cPrime = c->shape.back().to + c->allowance;
-    if (distance(cPrime, c->start) <= tol) return;  // the semi-finish ends at A itself: no return to shape
     const Point end = inFrame(*c, in.path.moves[last].to), before = inFrame(*c, in.path.from(last));
+    // The semi-finish ends level with A along the cut axis (or at A): the return has no cut-axis
+    // leg, so it has no shape to judge.
+    if (std::abs(inFrame(*c, cPrime).z - inFrame(*c, c->start).z) <= tol) return;
     if (c->directReturn) {
       if (distance(in.path.from(last), cPrime) > tol) {
         out.push_back(finding(*this, last, "with DTP = 1 the tool returns from C' straight to A"));
