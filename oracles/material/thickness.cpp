@@ -88,7 +88,17 @@ class ThicknessSearch {
     const RegionEdge edge{c0, d0, c1, d1};
     profile_.overlapping(c0, c1, resolution_, under_);
     underWidest_ = 0;
-    for (const ProfileStep* s : under_) underWidest_ = std::max(underWidest_, s->c1 - s->c0);
+    double lowestStep = INFINITY;
+    for (const ProfileStep* s : under_) {
+      underWidest_ = std::max(underWidest_, s->c1 - s->c0);
+      lowestStep = std::min({lowestStep, s->d0, s->d1});
+    }
+    // Bounds that decide without measuring (exactly: a point's thickness is its depth less the
+    // depth of a step beneath it): an edge wholly beneath every step stands above none, and one
+    // that cannot beat the thickest found so far need not be measured.
+    const double highestPoint = std::max(d0, d1);
+    if (highestPoint + window_ < lowestStep) return;
+    if (best_ && highestPoint - lowestStep <= best_->thickness) return;
     for (const ProfileStep* s : under_) {
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
       measureAt(edge, lo);
