@@ -45,7 +45,7 @@ run: build rs274
 	$(BUILD)/cyclecert check --engine reference --specs specs --out $(BUILD)/report/reference
 	-$(BUILD)/cyclecert check --engine linuxcnc --specs specs --out $(BUILD)/report/linuxcnc
 	$(BUILD)/cyclecert fuzz --engine reference --seed 1 --time 10 --out $(BUILD)/report/fuzz-reference --regressions $(BUILD)/report/regressions
-	-$(BUILD)/cyclecert fuzz --engine linuxcnc --seed 1 --time 10 --out $(BUILD)/report/fuzz-linuxcnc --regressions $(BUILD)/report/regressions
+	-$(BUILD)/cyclecert fuzz --engine linuxcnc --seed 1 --time 10 --timeout 2 --out $(BUILD)/report/fuzz-linuxcnc --regressions $(BUILD)/report/regressions
 
 bench: build
 	$(BUILD)/cyclecert-bench --benchmark_min_time=0.2

@@ -306,12 +306,21 @@ std::vector<EngineResult> LinuxCncEngine::runBatch(const std::vector<SpecCase>& 
       }
     }
     std::vector<std::size_t> again;
-    const bool processFailed = o.timedOut || o.overCap || o.signal != 0 || (o.exitCode != 0 && order.empty());
+    // A batch that times out stopped in the case that had begun last: the batch's time allows each
+    // case its own timeout beyond what the cases before it took, so that case hung. It gets the
+    // timeout at once (running it alone would cost the timeout again) and the cases after it run on
+    // in a new batch.
+    const bool hungInBatch = o.timedOut && pending.size() > 1 && !order.empty();
+    const bool processFailed =
+        !hungInBatch && (o.timedOut || o.overCap || o.signal != 0 || (o.exitCode != 0 && order.empty()));
     for (std::size_t k = 0; k < pending.size(); ++k) {
       const std::size_t i = pending[k];
       const bool reached = std::find(order.begin(), order.end(), i) != order.end();
       const bool last = !order.empty() && order.back() == i;
-      if (reached && !last) {
+      if (hungInBatch && last) {
+        results[i] = EngineResult::failed("rs274 timed out after " + seconds(options_.timeoutSeconds) +
+                                          " s (in a batch: this case was running when it expired)");
+      } else if (reached && !last) {
         results[i] = interpret(cases[i], *programs[i], chunks[i], "", 0);  // finished: a later case began
       } else if (last && !processFailed) {
         results[i] = interpret(cases[i], *programs[i], chunks[i], o.exitCode == 0 ? "" : o.err, o.exitCode);
