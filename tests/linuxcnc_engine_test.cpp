@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
+#include "harness/spec_case.h"
 
 namespace cyclecert {
 namespace {
@@ -370,6 +371,27 @@ TEST_F(LinuxCnc, TimeoutAndOutputCapAreEngineFailures) {
   const EngineResult flood = chatty.run(makeCase("stepped", kStepped));
   EXPECT_EQ(flood.kind, EngineResult::Failed);
   EXPECT_NE(flood.detail.find("more than 200 bytes"), std::string::npos) << flood.detail;
+}
+
+// A case on which rs274 hangs (kept in corpus/regressions), between two that plan: in one batch the
+// timeout lands on that case alone, and the others get what they get when run alone.
+TEST_F(LinuxCnc, ACaseThatHangsInABatchGetsTheTimeoutAndTheOthersTheirResults) {
+  if (!haveRs274()) GTEST_SKIP() << skipMessage();
+  LinuxCncOptions quick;
+  quick.timeoutSeconds = 1;
+  LinuxCncEngine engine(buildDir(), quick);
+  const SpecCase hangs =
+      loadSpecCase(std::string(CYCLECERT_SOURCE_DIR) + "/corpus/regressions/fanuc-0i-f/g71/fuzz-linuxcnc-41467b9476da404d.json");
+  const SpecCase before = makeCase("before", kStepped), after = makeCase("after", kStepped);
+  const std::vector<EngineResult> batch = engine.runBatch({before, hangs, after});
+  ASSERT_EQ(batch.size(), 3u);
+  EXPECT_EQ(batch[1].kind, EngineResult::Failed);
+  EXPECT_NE(batch[1].detail.find("timed out"), std::string::npos) << batch[1].detail;
+  for (const std::size_t i : {0u, 2u}) {
+    const EngineResult alone = engine.run(i == 0 ? before : after);
+    EXPECT_EQ(batch[i].kind, alone.kind) << batch[i].detail;
+    EXPECT_EQ(batch[i].path.moves.size(), alone.path.moves.size());
+  }
 }
 
 TEST_F(LinuxCnc, WithoutRs274TheEngineFailsWithTheFetchCommand) {
