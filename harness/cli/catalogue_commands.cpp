@@ -38,11 +38,7 @@ Lists the controller profiles and the parameter defaults in which they differ.
 
 }  // namespace
 
-int commandRules(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kRulesHelp;
-    return kExitOk;
-  }
+static int commandRules(const std::vector<std::string>& args) {
   std::string cycle, specs = defaultSpecsDir();
   bool uncitedOnly = false, json = false;
   const auto positional = parseOptions(args,
@@ -77,11 +73,7 @@ int commandRules(const std::vector<std::string>& args) {
   return uncitedOnly && uncited > 0 ? 1 : kExitOk;
 }
 
-int commandParams(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kParamsHelp;
-    return kExitOk;
-  }
+static int commandParams(const std::vector<std::string>& args) {
   bool json = false;
   const auto positional = parseOptions(args, {{"--json", [&] { json = true; }}}, "params");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
@@ -103,11 +95,7 @@ int commandParams(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-int commandProfiles(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kProfilesHelp;
-    return kExitOk;
-  }
+static int commandProfiles(const std::vector<std::string>& args) {
   const auto positional = parseOptions(args, {}, "profiles");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   const MachineParams base;
@@ -122,5 +110,9 @@ int commandProfiles(const std::vector<std::string>& args) {
   }
   return kExitOk;
 }
+
+extern const Command kRulesCommand{"rules", kRulesHelp, commandRules};
+extern const Command kParamsCommand{"params", kParamsHelp, commandParams};
+extern const Command kProfilesCommand{"profiles", kProfilesHelp, commandProfiles};
 
 }  // namespace cyclecert::cli

@@ -36,11 +36,7 @@ Lists the engines `check` can run: the reference, any external program speaking 
 
 }  // namespace
 
-int commandCheck(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kCheckHelp;
-    return kExitOk;
-  }
+static int commandCheck(const std::vector<std::string>& args) {
   std::string engineName;
   CheckOptions options{defaultSpecsDir(), defaultRegressionsDir(), "build/check", false};
   EngineOptions engineOptions;
@@ -65,15 +61,14 @@ int commandCheck(const std::vector<std::string>& args) {
   return s.clean() ? kExitOk : kExitAlarm;
 }
 
-int commandEngines(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kEnginesHelp;
-    return kExitOk;
-  }
+static int commandEngines(const std::vector<std::string>& args) {
   const auto positional = parseOptions(args, {}, "engines");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   for (const auto& [name, description] : listEngines()) std::cout << std::left << std::setw(28) << name << description << "\n";
   return kExitOk;
 }
+
+extern const Command kCheckCommand{"check", kCheckHelp, commandCheck};
+extern const Command kEnginesCommand{"engines", kEnginesHelp, commandEngines};
 
 }  // namespace cyclecert::cli

@@ -43,16 +43,15 @@ double numberArg(const std::string& option, const std::string& text, double min,
 // --param NAME=VALUE texts, validated, as (name, value) settings.
 std::vector<std::pair<std::string, double>> parsedParams(const std::vector<std::string>& texts);
 
-// The commands (one file each).
-int commandPlan(const std::vector<std::string>& args);
-int commandJudge(const std::vector<std::string>& args);
-int commandCheck(const std::vector<std::string>& args);
-int commandEngines(const std::vector<std::string>& args);
-int commandDiff(const std::vector<std::string>& args);
-int commandFuzz(const std::vector<std::string>& args);
-int commandMerge(const std::vector<std::string>& args);
-int commandRules(const std::vector<std::string>& args);
-int commandParams(const std::vector<std::string>& args);
-int commandProfiles(const std::vector<std::string>& args);
+// A subcommand: its name, its --help text (printed by the dispatcher whenever the arguments ask for
+// help) and what it does otherwise. One file each.
+struct Command {
+  const char* name;
+  const char* help;
+  int (*run)(const std::vector<std::string>& args);
+};
+
+extern const Command kPlanCommand, kJudgeCommand, kCheckCommand, kEnginesCommand, kDiffCommand, kFuzzCommand,
+    kMergeCommand, kRulesCommand, kParamsCommand, kProfilesCommand;
 
 }  // namespace cyclecert::cli

@@ -307,11 +307,7 @@ std::string diffSvg(const std::string& title, const EngineResult& a, const std::
 
 }  // namespace
 
-int commandDiff(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kDiffHelp;
-    return kExitOk;
-  }
+static int commandDiff(const std::vector<std::string>& args) {
   const DiffArgs a = parseDiffArgs(args);
   // Both engines first, so that a misspelt --vs is reported before anything runs.
   const auto engineA = makeEngine(a.engineA, a.engineOptions);
@@ -376,5 +372,7 @@ int commandDiff(const std::vector<std::string>& args) {
   }
   return agree ? kExitOk : kExitAlarm;
 }
+
+extern const Command kDiffCommand{"diff", kDiffHelp, commandDiff};
 
 }  // namespace cyclecert::cli

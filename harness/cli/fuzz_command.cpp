@@ -73,11 +73,7 @@ void parseShard(const std::string& text, FuzzOptions& o) {
 
 }  // namespace
 
-int commandFuzz(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kFuzzHelp;
-    return kExitOk;
-  }
+static int commandFuzz(const std::vector<std::string>& args) {
   std::string engineName, vsName;
   FuzzOptions options;
   options.regressionsDir = defaultRegressionsDir();
@@ -134,11 +130,7 @@ int commandFuzz(const std::vector<std::string>& args) {
   return s.clean() ? kExitOk : kExitAlarm;
 }
 
-int commandMerge(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kMergeHelp;
-    return kExitOk;
-  }
+static int commandMerge(const std::vector<std::string>& args) {
   std::string outDir;
   const auto inputs = parseOptions(args, {{"--out", [&](const std::string& v) { outDir = v; }}}, "merge");
   if (outDir.empty()) throw UsageError("give --out DIR (see `cyclecert merge --help`)");
@@ -167,5 +159,8 @@ int commandMerge(const std::vector<std::string>& args) {
   std::cout << "; in " << outDir << "/results.jsonl\n";
   return kExitOk;
 }
+
+extern const Command kFuzzCommand{"fuzz", kFuzzHelp, commandFuzz};
+extern const Command kMergeCommand{"merge", kMergeHelp, commandMerge};
 
 }  // namespace cyclecert::cli

@@ -34,11 +34,7 @@ the move index), 3 the program needs a cycle the reference does not read yet.
 
 }  // namespace
 
-int commandJudge(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kJudgeHelp;
-    return kExitOk;
-  }
+static int commandJudge(const std::vector<std::string>& args) {
   std::string casePath, programPath, toolpathPath, svgOut, profile;
   std::vector<std::string> params;
   bool json = false, reference = false, mdi = false;
@@ -116,5 +112,7 @@ int commandJudge(const std::vector<std::string>& args) {
   if (!svgOut.empty()) writeFile(svgOut, renderToolpathSvg(judgePlot(in, findings, title, materialAfterMove)));
   return findings.empty() ? kExitOk : kExitAlarm;
 }
+
+extern const Command kJudgeCommand{"judge", kJudgeHelp, commandJudge};
 
 }  // namespace cyclecert::cli

@@ -56,16 +56,15 @@ int run(const std::vector<std::string>& argv) {
     std::cout << "cyclecert " << CYCLECERT_VERSION << "\n";
     return kExitOk;
   }
-  if (command == "plan") return commandPlan(args);
-  if (command == "params") return commandParams(args);
-  if (command == "rules") return commandRules(args);
-  if (command == "judge") return commandJudge(args);
-  if (command == "check") return commandCheck(args);
-  if (command == "engines") return commandEngines(args);
-  if (command == "diff") return commandDiff(args);
-  if (command == "fuzz") return commandFuzz(args);
-  if (command == "merge") return commandMerge(args);
-  if (command == "profiles") return commandProfiles(args);
+  for (const Command* c : {&kPlanCommand, &kParamsCommand, &kRulesCommand, &kJudgeCommand, &kCheckCommand,
+                           &kEnginesCommand, &kDiffCommand, &kFuzzCommand, &kMergeCommand, &kProfilesCommand}) {
+    if (command != c->name) continue;
+    if (wantsHelp(args)) {
+      std::cout << c->help;
+      return kExitOk;
+    }
+    return c->run(args);
+  }
   throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
 }
 

@@ -74,11 +74,7 @@ PlanArgs parsePlanArgs(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int commandPlan(const std::vector<std::string>& args) {
-  if (wantsHelp(args)) {
-    std::cout << kPlanHelp;
-    return kExitOk;
-  }
+static int commandPlan(const std::vector<std::string>& args) {
   const PlanArgs a = parsePlanArgs(args);
   std::optional<SpecCase> specCase;
   PlanRequest request;
@@ -118,5 +114,7 @@ int commandPlan(const std::vector<std::string>& args) {
   }
   return path.alarm ? kExitAlarm : kExitOk;
 }
+
+extern const Command kPlanCommand{"plan", kPlanHelp, commandPlan};
 
 }  // namespace cyclecert::cli
