@@ -2,10 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <nlohmann/json.hpp>
-#include <set>
+#include <ostream>
 
 #include "harness/engine_diff.h"
 #include "harness/judging.h"
@@ -48,13 +45,8 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
   out.rules = c.rules;
   const EngineResult r = engine.run(c);
   out.seconds = r.seconds;
-  if (r.kind == EngineResult::Failed) {
-    out.verdict = "engine-failure";
-    out.detail = r.detail;
-    return out;
-  }
-  if (r.kind == EngineResult::NotApplicable) {
-    out.verdict = "not-applicable";
+  if (r.kind == EngineResult::Failed || r.kind == EngineResult::NotApplicable) {
+    out.verdict = kindName(r.kind);  // "engine-failure", "not-applicable"
     out.detail = r.detail;
     return out;
   }

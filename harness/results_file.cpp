@@ -24,9 +24,8 @@ ResultLines readResultLines(const std::string& file) {
   while (std::getline(in, line)) {
     try {
       const auto j = nlohmann::json::parse(line);
-      if (!j.is_object() || !j.contains("engine") || !j.contains("case")) throw std::runtime_error("not a result");
-      out.lines.push_back(line);
-    } catch (const std::exception&) {
+      out.lines.push_back({line, {j.at("engine").get<std::string>(), j.at("case").get<std::string>()}});
+    } catch (const std::exception&) {  // not JSON, or not a result
       ++out.skipped;
     }
   }
@@ -35,18 +34,13 @@ ResultLines readResultLines(const std::string& file) {
 
 ResultsFile::ResultsFile(const std::string& outDir, bool resume) : path_(outDir + "/results.jsonl") {
   std::filesystem::create_directories(outDir);
-  std::vector<std::string> kept;
-  if (resume) {
-    kept = readResultLines(path_).lines;
-    for (const std::string& line : kept) {
-      const auto j = nlohmann::json::parse(line);
-      done_.insert({j.at("engine").get<std::string>(), j.at("case").get<std::string>()});
-    }
-  }
+  std::vector<ResultLines::Line> kept;
+  if (resume) kept = readResultLines(path_).lines;
+  for (const ResultLines::Line& line : kept) done_.insert(line.key);
   // Rewritten with the complete lines only, then appended to.
   {
     std::ofstream fresh(path_, std::ios::trunc);
-    for (const std::string& line : kept) fresh << line << "\n";
+    for (const ResultLines::Line& line : kept) fresh << line.text << "\n";
   }
   out_.open(path_, std::ios::app);
 }

@@ -44,9 +44,14 @@ class ResultsFile {
   std::ofstream out_;
 };
 
-// Every complete line of a results file as JSON (a torn or garbled line is skipped and counted).
+// Every complete line of a results file, with the (engine, case) it is the result of; a torn or
+// garbled line is skipped and counted.
 struct ResultLines {
-  std::vector<std::string> lines;
+  struct Line {
+    std::string text;
+    std::pair<std::string, std::string> key;  // engine, case
+  };
+  std::vector<Line> lines;
   std::size_t skipped = 0;
 };
 ResultLines readResultLines(const std::string& file);

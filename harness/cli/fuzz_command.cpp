@@ -1,12 +1,10 @@
 // `cyclecert fuzz` (generated cases through an engine and the oracles, shrinking failures) and
 // `cyclecert merge` (the results of shards joined into one run).
 #include <filesystem>
+#include <fstream>
 #include <iostream>
-#include <map>
-#include <nlohmann/json.hpp>
 #include <random>
 #include <set>
-#include <fstream>
 
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
@@ -143,9 +141,8 @@ static int commandMerge(const std::vector<std::string>& args) {
     if (!std::filesystem::is_regular_file(file)) throw UsageError("no results in '" + dir + "' (expected " + file + ")");
     const ResultLines lines = readResultLines(file);
     torn += lines.skipped;
-    for (const std::string& line : lines.lines) {
-      const auto j = nlohmann::json::parse(line);
-      if (seen.insert({j.at("engine").get<std::string>(), j.at("case").get<std::string>()}).second) merged.push_back(line);
+    for (const ResultLines::Line& line : lines.lines) {
+      if (seen.insert(line.key).second) merged.push_back(line.text);
       else ++duplicates;
     }
   }

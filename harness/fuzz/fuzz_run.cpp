@@ -42,13 +42,9 @@ FuzzVerdict judgeFuzzResult(const EngineResult& r, const Engine& engine, Engine*
                             double tolerance) {
   FuzzVerdict v;
   v.seconds = r.seconds;
-  if (r.kind == EngineResult::Failed) {
-    v.verdict = v.kind = "engine-failure";
-    v.detail = r.detail;
-    return v;
-  }
-  if (r.kind == EngineResult::NotApplicable) {
-    v.verdict = "not-applicable";
+  if (r.kind == EngineResult::Failed || r.kind == EngineResult::NotApplicable) {
+    v.verdict = kindName(r.kind);  // "engine-failure", "not-applicable"
+    if (r.kind == EngineResult::Failed) v.kind = v.verdict;
     v.detail = r.detail;
     return v;
   }
