@@ -87,6 +87,10 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
   f.caseSeed = caseSeed;
   f.kind = first.kind;
   f.detail = first.detail;
+  const auto rulesOf = [](const FuzzVerdict& v) {
+    return v.findings.empty() ? std::vector<std::string>{} : v.findings.front().rules;
+  };
+  f.rules = rulesOf(first);
   rc::Shrinkable<FuzzCase> current = shrinkTree(caseSeed);
   bool smaller = true;
   while (smaller && f.shrinkRuns < options.shrinkBudget) {
@@ -98,6 +102,7 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
       if (v.verdict == first.verdict && v.kind == first.kind) {
         current = *candidate;
         f.detail = v.detail;
+        f.rules = rulesOf(v);
         smaller = true;
         break;
       }
@@ -173,21 +178,19 @@ class FuzzCampaign {
 
   void keepFailure(std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v, CaseResult& r) {
     FuzzFailure f = shrinkFailure(engine_, vs_, caseSeed, v, options_);
-    const SpecCase shrunk = fuzzSpecCase(f.shrunk, caseSeedTag(caseSeed));
     const std::string reproduce = reproduceCommand(engine_, vs_, caseSeed);
     if (!options_.regressionsDir.empty()) {
-      // The rules behind the failure: the oracle's, found again on the shrunk case.
-      const FuzzVerdict again = judgeFuzzCase(engine_, vs_, shrunk, options_.tolerance);
-      const std::vector<std::string> rules = again.findings.empty() ? c.rules : again.findings.front().rules;
+      // The rules behind the failure: the oracle's on the shrunk case, else the case's.
+      const std::vector<std::string>& rules = f.rules.empty() ? c.rules : f.rules;
       f.regressionFile = writeRegressionCase(options_.regressionsDir, f, engine_.name(), vs_ ? vs_->name() : "", rules,
                                              reproduce);
     }
-    r.program = shrunk.program;
+    r.program = fuzzProgram(f.shrunk);
     r.file = f.regressionFile;
     r.detail = v.detail + " | shrunk in " + std::to_string(f.shrinkRuns) + " runs: " + f.detail;
     progress_ << "FAIL " << v.kind << " (seed " << caseSeed << "): " << f.detail << "\n  shrunk case ("
               << describeFuzzCase(f.shrunk) << "):\n";
-    std::istringstream lines(shrunk.program);
+    std::istringstream lines(r.program);
     for (std::string line; std::getline(lines, line);) progress_ << "    " << line << "\n";
     progress_ << "  reproduce: " << reproduce << "\n";
     if (!f.regressionFile.empty()) progress_ << "  kept as " << f.regressionFile << "\n";

@@ -38,6 +38,7 @@ struct FuzzFailure {
   std::uint64_t caseSeed = 0;
   std::string kind;       // the oracle that found it, "diverges", or "engine-failure"
   std::string detail;     // of the shrunk case
+  std::vector<std::string> rules;  // the rules of the oracle that found it (none for the other kinds)
   FuzzCase shrunk;
   int shrinkRuns = 0;     // engine runs spent shrinking
   std::string regressionFile;  // "" when not written
