@@ -31,9 +31,11 @@ double largestChordAngle(double radius, double chordTolerance) {
   return ratio >= 1 ? 2 * std::numbers::pi : 4 * std::asin(std::sqrt(ratio));
 }
 
-bool near(const BgPoint& a, const BgPoint& b) {
-  return std::abs(a.x() - b.x()) <= kTidyDistance && std::abs(a.y() - b.y()) <= kTidyDistance;
+bool within(const BgPoint& a, const BgPoint& b, double tolerance) {
+  return std::abs(a.x() - b.x()) <= tolerance && std::abs(a.y() - b.y()) <= tolerance;
 }
+
+bool near(const BgPoint& a, const BgPoint& b) { return within(a, b, kTidyDistance); }
 
 // Whether `b` adds nothing between `a` and `c`: it lies within `flatness` of the line a–c (a
 // collinear point, or the tip of a spike — a and c coincide, or c lies back along a–b).
@@ -217,10 +219,6 @@ double distanceToSegment(const BgPoint& p, const BgPoint& a, const BgPoint& b, d
   t = std::clamp(t, 0.0, 1.0);
   const double dx = a.x() + t * ux - p.x(), dy = a.y() + t * uy - p.y();
   return std::sqrt(dx * dx + dy * dy);
-}
-
-bool within(const BgPoint& a, const BgPoint& b, double tolerance) {
-  return std::abs(a.x() - b.x()) <= tolerance && std::abs(a.y() - b.y()) <= tolerance;
 }
 
 // The loops of a ring that touches itself: a vertex on another of its edges (made a vertex of that
