@@ -162,7 +162,7 @@ class Type2Planner {
              onHeadLine(nearWall[head].to)) {
         ++head;
       }
-      if (head > 0) emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, nearWall[head - 1].to, "pass", {"G71.HEAD.G0G1"});
+      if (head > 0) emit(headMode(), nearWall[head - 1].to, "pass", {"G71.HEAD.G0G1"});
       followPath({nearWall.begin() + static_cast<long>(head), nearWall.end()}, {"G71.T2.FOLLOW"});
     }
     emit(MoveKind::Feed, n.end.p, "pass", {cutRule(), "G71.T2.ORDER"});
@@ -191,19 +191,19 @@ class Type2Planner {
     const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
     // Down block ns itself (the tool stands on the head line) it moves in block ns's mode.
     const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kEps;
-    emit(downTheHead && !c_.headIsRapid ? MoveKind::Feed : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass",
+    emit(downTheHead ? headMode() : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass",
          {downTheHead ? "G71.HEAD.G0G1" : "G71.T2.POCKET.EXIT"});
     if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, "pass", {"G71.NSP"});
     emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
     if (infeedAlongHead) {
       // The type I infeed along a head block parallel to the depth axis (G72.STEP2).
-      emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, cutStart, "pass", {"G72.STEP2", "G71.HEAD.G0G1"});
+      emit(headMode(), cutStart, "pass", {"G72.STEP2", "G71.HEAD.G0G1"});
       return;
     }
     if (headAlongDepth() && onHeadLine(q)) {
       // The entry point is on block ns (B, where the shape falls away from it): the way down to it
       // runs along block ns, in its mode (G71.HEAD.G0G1), as the type I infeeds do.
-      emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, q, "pass", {"G71.HEAD.G0G1"});
+      emit(headMode(), q, "pass", {"G71.HEAD.G0G1"});
       return;
     }
     const double approach = commonDepth - c_.clearance;
@@ -267,6 +267,8 @@ class Type2Planner {
   // ---- moves ------------------------------------------------------------------------------------
 
   bool onHeadLine(Point p) const { return std::abs(p.z - aPrime_.z) <= kEps; }
+  // G71.HEAD.G0G1: moves along block ns run in its mode — rapid after G00, cutting feed after G01.
+  MoveKind headMode() const { return c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed; }
   bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kEps; }
   std::string cutRule() const { return c_.code == "G72" ? "G72.T2" : "G71.OP"; }
   double depthOf(Point p) const { return profile_.depth(p); }
