@@ -260,32 +260,40 @@ namespace {
 
 // Whether a ring (closing point excluded) touches itself: a vertex within `tolerance` of an edge
 // that does not end at it or at a neighbour of it — the same point twice, or a vertex on another
-// edge. Edges are found through an R-tree, so this costs O(n log n), far less than is_valid.
+// edge. A sweep along x meets each vertex only with the edges whose x-range (grown by the
+// tolerance) holds it, so this costs O(n log n) for the rings the model makes, far less than
+// is_valid (or an R-tree built per ring).
 bool touchesItself(const std::vector<BgPoint>& ring, double tolerance) {
   const std::size_t n = ring.size();
   if (n < 4) return false;
-  using Box = bg::model::box<BgPoint>;
-  using Entry = std::pair<Box, std::size_t>;
-  std::vector<Entry> edges;
+  struct Edge {
+    double minX, maxX, minY, maxY;
+    std::size_t from;
+  };
+  std::vector<Edge> edges;
   edges.reserve(n);
   for (std::size_t j = 0; j < n; ++j) {
     const BgPoint& a = ring[j];
     const BgPoint& b = ring[(j + 1) % n];
-    edges.push_back({Box({std::min(a.x(), b.x()) - tolerance, std::min(a.y(), b.y()) - tolerance},
-                         {std::max(a.x(), b.x()) + tolerance, std::max(a.y(), b.y()) + tolerance}),
-                     j});
+    edges.push_back({std::min(a.x(), b.x()) - tolerance, std::max(a.x(), b.x()) + tolerance,
+                     std::min(a.y(), b.y()) - tolerance, std::max(a.y(), b.y()) + tolerance, j});
   }
-  const bg::index::rtree<Entry, bg::index::quadratic<16>> tree(edges.begin(), edges.end());
-  std::vector<Entry> near;
-  for (std::size_t i = 0; i < n; ++i) {
-    near.clear();
-    tree.query(bg::index::intersects(ring[i]), std::back_inserter(near));
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.minX < b.minX; });
+  std::vector<std::size_t> byX(n);
+  for (std::size_t i = 0; i < n; ++i) byX[i] = i;
+  std::sort(byX.begin(), byX.end(), [&](std::size_t a, std::size_t b) { return ring[a].x() < ring[b].x(); });
+  std::vector<const Edge*> active;  // edges whose x-range has begun and not yet ended
+  std::size_t nextEdge = 0;
+  for (const std::size_t i : byX) {
+    const BgPoint& p = ring[i];
+    for (; nextEdge < n && edges[nextEdge].minX <= p.x(); ++nextEdge) active.push_back(&edges[nextEdge]);
+    std::erase_if(active, [&](const Edge* e) { return e->maxX < p.x(); });
     const std::size_t previous = (i + n - 1) % n, next = (i + 1) % n;
-    for (const auto& [box, j] : near) {
-      const std::size_t k = (j + 1) % n;
-      if (i == j || i == k) continue;  // its own edges
+    for (const Edge* e : active) {
+      const std::size_t j = e->from, k = (j + 1) % n;
+      if (i == j || i == k || p.y() < e->minY || p.y() > e->maxY) continue;  // its own edges, or far
       double t = 0;
-      if (distanceToSegment(ring[i], ring[j], ring[k], t) > tolerance) continue;
+      if (distanceToSegment(p, ring[j], ring[k], t) > tolerance) continue;
       // Close to a neighbour's end only: a short edge, not a pinch.
       if ((t == 0 && j == next) || (t == 1 && k == previous)) continue;
       return true;
