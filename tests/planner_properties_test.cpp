@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "harness/reference_plan.h"
+#include "reference/model/offset.h"
 
 namespace cyclecert {
 namespace {
@@ -261,12 +262,22 @@ RC_GTEST_PROP(PlannerProperties, TypeIIStaysOutOfThePartReachesEveryValleyBottom
     }
     at = seg.to;
   }
-  // Every valley bottom below A' (a block along z, or a V) is reached by a roughing move.
+  // Every valley bottom below A' (a block along z, or a V) is reached by a roughing move: a move
+  // ends there or runs through it (a bottom made of collinear blocks is cut in one move).
   const double top = rough.front().from.x;
   const auto reached = [&](Point b) {
-    return std::any_of(t.moves.begin(), t.moves.end(), [&](const Move& m) {
-      return m.phase == "pass" && distance(toFrame(m.to, c, zOffset), b) < 1e-6;
-    });
+    for (std::size_t i = 0; i < t.moves.size(); ++i) {
+      if (t.moves[i].phase != "pass") continue;
+      Segment seg = t.segment(i);
+      if (seg.isArc()) {
+        if (distance(toFrame(seg.to, c, zOffset), b) < 1e-6) return true;
+        continue;
+      }
+      seg.from = toFrame(seg.from, c, zOffset);
+      seg.to = toFrame(seg.to, c, zOffset);
+      if (distanceToSegment(b, seg) < 1e-6) return true;
+    }
+    return false;
   };
   for (std::size_t i = 1; i < rough.size(); ++i) {
     const Segment& s = rough[i];
