@@ -126,6 +126,29 @@ BgRegion touching(const BgRegion& region, const Segment& move, double tolerance)
   return near;
 }
 
+// The layer a feed removes when it may be thicker than Δd (nothing when it provably is not, or
+// when the feed touches no material). The layer is the material the move itself touches, measured
+// above it (its shadow): material the shadow reaches beyond a part overhang (a shape turning back
+// within 5145/5146) is not a layer of this pass. The pieces of material that touch the move are
+// measured whole — thickestAbove counts only what stands above the move within its span — which
+// spares a boolean per feed.
+std::optional<Thickest> layerBeyondDepthOfCut(const BgRegion& material, const Segment& move, const CycleSpec& c,
+                                              Point away, const JudgeSettings& settings) {
+  const double tolerance = settings.tolerance();
+  const double allowed = c.depthOfCut + tolerance;
+  // Most passes provably remove no more than Δd: a bound spares measuring them.
+  const auto bound = thicknessAboveBound(material, move, away, settings.chordTolerance);
+  if (!bound || *bound <= allowed) return std::nullopt;
+  const BgRegion layer = touching(material, move, tolerance);
+  if (layer.empty()) return std::nullopt;
+  auto thickest = thickestAbove(layer, {move}, away, kMeasuringChord);
+  // A skin narrower than the tolerance along the cut axis is not a layer: measure without it.
+  if (thickest && thickest->thickness > allowed) {
+    thickest = thickestAbove(withoutSkins(layer, away, tolerance), {move}, away, kMeasuringChord);
+  }
+  return thickest;
+}
+
 // A move along the finish shape (G70's finishing pass) removes the allowance, not a roughing layer.
 bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move) {
   if (!in.program.hasFinishingCycle) return false;
@@ -168,19 +191,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
     } else if (!onFinishShape(in, *c, move)) {
-      // The layer is the material the move itself touches, measured above it (its shadow): material
-      // the shadow reaches beyond a part overhang (a shape turning back within 5145/5146) is not a
-      // layer of this pass. The pieces of material that touch the move are measured whole —
-      // thickestAbove counts only what stands above the move within its span — which spares a
-      // boolean per feed.
-      const BgRegion layer = touching(model.remaining(), move, tolerance);
-      if (!layer.empty()) {
-        r.removedThickness[i] = thickestAbove(layer, {move}, r.away, kMeasuringChord);
-        // A skin narrower than the tolerance along the cut axis is not a layer: measure without it.
-        if (r.removedThickness[i] && r.removedThickness[i]->thickness > c->depthOfCut + tolerance) {
-          r.removedThickness[i] = thickestAbove(withoutSkins(layer, r.away, tolerance), {move}, r.away, kMeasuringChord);
-        }
-      }
+      r.removedThickness[i] = layerBeyondDepthOfCut(model.remaining(), move, *c, r.away, in.settings);
     }
     model.apply(move, in.path.moves[i].kind);
   }

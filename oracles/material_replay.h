@@ -24,8 +24,9 @@ struct MaterialReplay {
                                      // finish shape when a G70 follows
   BgRegion part;                     // everything beyond `target`: no move may enter it
   std::vector<Crossing> rapidCrossings;                   // per move: material a rapid crosses (empty for feeds)
-  std::vector<std::optional<Thickest>> removedThickness;  // per move: thickness a feed removes (not on
-                                                          // the finish shape: G70 removes the allowance)
+  // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
+  // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).
+  std::vector<std::optional<Thickest>> removedThickness;
   BgRegion remaining;                // after the last move
 };
 

@@ -175,4 +175,38 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
   return search.best();
 }
 
+std::optional<double> thicknessAboveBound(const BgRegion& region, const Segment& move, Point away,
+                                          double chordTolerance) {
+  const DepthFrame frame(away);
+  double c0 = INFINITY, c1 = -INFINITY, shallowest = INFINITY;
+  for (Point p : flatten(move, chordTolerance)) {
+    c0 = std::min(c0, frame.cut(p));
+    c1 = std::max(c1, frame.cut(p));
+    shallowest = std::min(shallowest, frame.depth(p));
+  }
+  if (move.isArc()) shallowest -= chordTolerance;
+  std::optional<double> deepest;
+  // The deepest point of an edge within [c0, c1] is one of its ends clipped to that range.
+  const auto clipEdge = [&](Point p, Point q) {
+    double a = frame.cut(p), da = frame.depth(p), b = frame.cut(q), db = frame.depth(q);
+    if (a > b) {
+      std::swap(a, b);
+      std::swap(da, db);
+    }
+    if (b < c0 || a > c1) return;
+    const auto depthAt = [&](double c) { return b - a > 0 ? da + (c - a) / (b - a) * (db - da) : std::max(da, db); };
+    const double top = std::max(depthAt(std::max(a, c0)), depthAt(std::min(b, c1)));
+    if (!deepest || top > *deepest) deepest = top;
+  };
+  const auto visitRing = [&](const BgPolygon::ring_type& ring) {
+    for (std::size_t i = 1; i < ring.size(); ++i) clipEdge(fromBg(ring[i - 1]), fromBg(ring[i]));
+  };
+  for (const BgPolygon& polygon : region) {
+    visitRing(polygon.outer());
+    for (const auto& hole : polygon.inners()) visitRing(hole);
+  }
+  if (!deepest) return std::nullopt;
+  return *deepest - shallowest;
+}
+
 }  // namespace cyclecert

@@ -41,4 +41,13 @@ struct Thickest {
 std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<Segment>& profile,
                                       Point away, double chordTolerance);
 
+// An upper bound of thickestAbove(region, {move}, away, ·) for any chord tolerance of at most
+// `chordTolerance`, in one pass over the region's edges: the deepest the region comes within the
+// move's span along the cut axis, less the shallowest the move comes (its flattened vertices lie on
+// it, so its chords come at most chordTolerance nearer the part). A feed whose bound is within Δd
+// provably removes no thicker layer, and is not measured. Nothing when the region has no point
+// within the move's span.
+std::optional<double> thicknessAboveBound(const BgRegion& region, const Segment& move, Point away,
+                                          double chordTolerance);
+
 }  // namespace cyclecert
