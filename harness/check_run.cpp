@@ -5,8 +5,12 @@
 #include <ostream>
 
 #include "harness/engine_diff.h"
+#include "harness/failure_plot.h"
 #include "harness/judging.h"
+#include "harness/reproduce.h"
 #include "harness/spec_check.h"
+#include "harness/toolpath_compare.h"
+#include "reports/svg/plot_json.h"
 
 namespace cyclecert {
 
@@ -21,18 +25,39 @@ std::optional<std::string> unmet(const SpecCase& c, const EngineResult& r, const
 }
 
 // A case that must agree with a built-in engine: that engine runs the case now.
-std::optional<std::string> disagreement(const SpecCase& c, const EngineResult& r, const std::string& engineName) {
+struct AgreementCheck {
+  std::optional<std::string> disagreement;
+  std::optional<PlotComparison> theirs;  // the other engine's toolpath, for the plot
+};
+
+AgreementCheck checkAgreement(const SpecCase& c, const EngineResult& r, const std::string& engineName) {
+  AgreementCheck out;
   try {
     const auto other = makeEngine(*c.agreesWith);
     const EngineResult theirs = other->run(c);
     if (theirs.kind == EngineResult::Failed || theirs.kind == EngineResult::NotApplicable) {
-      return "cannot compare with " + *c.agreesWith + ": " + kindName(theirs.kind) + ": " + theirs.detail;
+      out.disagreement = "cannot compare with " + *c.agreesWith + ": " + kindName(theirs.kind) + ": " + theirs.detail;
+      return out;
     }
-    if (auto d = compareEngineResults(theirs, *c.agreesWith, r, engineName, c.tolerance)) return d->text;
+    const auto d = compareEngineResults(theirs, *c.agreesWith, r, engineName, c.tolerance);
+    if (d) out.disagreement = d->text;
+    out.theirs = PlotComparison{*c.agreesWith, theirs.path, d ? d->move : std::nullopt};
   } catch (const std::exception& e) {
-    return "cannot compare with " + *c.agreesWith + ": " + e.what();
+    out.disagreement = "cannot compare with " + *c.agreesWith + ": " + e.what();
   }
-  return std::nullopt;
+  return out;
+}
+
+// What the failure's plot draws over the engine's path: the expected toolpath, else the toolpath
+// of the engine the case must agree with.
+std::optional<PlotComparison> comparisonFor(const SpecCase& c, const EngineResult& r,
+                                            const std::optional<PlotComparison>& agreement) {
+  if (!c.expectedMoves) return agreement;
+  PlotComparison expected{"expected", {}, std::nullopt};
+  expected.path.start = r.path.start;
+  expected.path.moves = *c.expectedMoves;
+  if (const auto d = firstMoveDivergence(*c.expectedMoves, r.path.moves, c.tolerance)) expected.divergence = d->move;
+  return expected;
 }
 
 }  // namespace
@@ -43,21 +68,25 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
   out.caseId = c.id;
   out.file = c.file;
   out.rules = c.rules;
+  const std::string reproduce = caseReproduceCommand(engine.name(), c.file, c.agreesWith.value_or(""));
   const EngineResult r = engine.run(c);
   out.seconds = r.seconds;
   if (r.kind == EngineResult::Failed || r.kind == EngineResult::NotApplicable) {
     out.verdict = kindName(r.kind);  // "engine-failure", "not-applicable"
     out.detail = r.detail;
+    if (r.kind == EngineResult::Failed) out.reproduce = reproduce;
     return out;
   }
   if (const auto why = unmet(c, r, engine.name())) {
     out.verdict = "fail";
     out.detail = *why;
   }
+  AgreementCheck agreement;
   if (c.agreesWith) {
-    if (const auto why = disagreement(c, r, engine.name())) {
+    agreement = checkAgreement(c, r, engine.name());
+    if (agreement.disagreement) {
       out.verdict = "fail";
-      out.detail = *why;
+      out.detail = *agreement.disagreement;
     }
   }
   // A planned toolpath is judged by every oracle; an alarm too when the case expects nothing in
@@ -75,7 +104,14 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
       if (out.detail.empty()) out.detail = out.findings.front().oracle + ": " + out.findings.front().message;
     }
   }
-  if (out.verdict.empty()) out.verdict = "pass";
+  if (out.verdict.empty()) {
+    out.verdict = "pass";
+    return out;
+  }
+  out.reproduce = reproduce;
+  if (const auto plot = failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
+    out.plot = plotToJson(*plot);
+  }
   return out;
 }
 

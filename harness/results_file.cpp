@@ -14,7 +14,10 @@ std::string resultLine(const CaseResult& r) {
   if (r.seed) j["seed"] = *r.seed;
   if (!r.program.empty()) j["program"] = r.program;
   if (!r.vs.empty()) j["vs"] = r.vs;
-  return j.dump() + "\n";
+  if (r.plot) j["plot"] = *r.plot;
+  if (!r.reproduce.empty()) j["reproduce"] = r.reproduce;
+  // An engine's reply may hold anything (a process engine's message); the line must stay JSON.
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 ResultLines readResultLines(const std::string& file) {

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "oracles/judgement.h"
 
 namespace cyclecert {
@@ -24,6 +26,8 @@ struct CaseResult {
   std::optional<std::uint64_t> seed;  // fuzz cases: the seed that regenerates the case
   std::string program;                // fuzz failures: the shrunk case's program
   std::string vs;                     // fuzz --vs: the engine compared with
+  std::optional<nlohmann::json> plot;  // failures: the picture (reports/svg/plot_json.h)
+  std::string reproduce;              // failures: the command that shows it again
 };
 
 std::string resultLine(const CaseResult& r);  // one JSON line, with its newline

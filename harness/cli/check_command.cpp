@@ -6,6 +6,7 @@
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
 #include "harness/rule_catalogue.h"
+#include "harness/run_record.h"
 
 namespace cyclecert::cli {
 
@@ -18,10 +19,16 @@ failure kept as a spec case under corpus/regressions/, against engine E
 (`cyclecert engines`). A case passes when the engine meets its expectation — the toolpath within
 the case's tolerance, or the alarm — and every oracle finds nothing on its toolpath. Each result
 is appended to OUT/results.jsonl (default build/check) as soon as it is known, so a killed run keeps
-every result; --resume skips the cases already there.
+every result; --resume skips the cases already there. OUT/run.json records the run (engine and its
+version, cyclecert's version and git revision, the spec suite's hash, the start, the command line;
+--resume adds a record), and at the end the report is written: OUT/report.json, OUT/junit.xml and
+OUT/index.html (`cyclecert report`).
 
 Options:
   --engine E     reference | linuxcnc | process:COMMAND | mutant:NAME
+  --specs DIR    the spec suite: DIR/cases and DIR/rules.json (default: the repository's specs/)
+  --out DIR      where results.jsonl, run.json and the report go (default build/check)
+  --resume       continue the run in OUT, skipping the cases it has
   --timeout S    per-case timeout for engines in another process (default 10)
   --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
   --no-regressions    run the spec cases only
@@ -53,11 +60,15 @@ static int commandCheck(const std::vector<std::string>& args) {
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
   const auto engine = makeEngine(engineName, engineOptions);
+  std::vector<std::string> argv{"cyclecert", "check"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  recordRun(options.outDir, startRunRecord("check", *engine, nullptr, options.specsDir, std::nullopt, argv), options.resume);
   const CheckSummary s = runCheck(*engine, options, std::cerr);
   std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable
             << " not applicable, " << s.engineFailure << " engine failure(s)";
   if (s.skipped) std::cout << ", " << s.skipped << " already done";
   std::cout << "; results in " << options.outDir << "/results.jsonl\n";
+  writeRunReport(options.outDir, options.specsDir);
   return s.clean() ? kExitOk : kExitAlarm;
 }
 

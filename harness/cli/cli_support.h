@@ -52,6 +52,10 @@ struct Command {
 };
 
 extern const Command kPlanCommand, kJudgeCommand, kCheckCommand, kEnginesCommand, kDiffCommand, kFuzzCommand,
-    kMergeCommand, kRulesCommand, kParamsCommand, kProfilesCommand;
+    kMergeCommand, kReportCommand, kRulesCommand, kParamsCommand, kProfilesCommand;
+
+// The report files of the run in `outDir` (`cyclecert report`; `check` and `fuzz` at the end of a
+// run), with one line on standard output saying the headline numbers and where they are.
+void writeRunReport(const std::string& outDir, const std::string& specsDir);
 
 }  // namespace cyclecert::cli

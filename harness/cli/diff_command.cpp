@@ -16,6 +16,7 @@
 #include "harness/cli/cli_support.h"
 #include "harness/engine_diff.h"
 #include "harness/engines/engine.h"
+#include "harness/failure_plot.h"
 #include "harness/reference_plan.h"
 #include "harness/spec_case.h"
 #include "harness/toolpath_compare.h"
@@ -290,18 +291,7 @@ std::string diffSvg(const std::string& title, const EngineResult& a, const std::
                     const std::string& bName, const std::optional<EngineDivergence>& divergence) {
   PlotInput in = plotInputFor(a.path.cycles.empty() ? b.path : a.path, title);
   in.path = a.path;
-  in.overlay = b.path;
-  in.pathLabel = svgLabel(aName, a);
-  in.overlayLabel = svgLabel(bName, b);
-  if (divergence && divergence->move) {
-    const std::size_t i = *divergence->move;
-    Highlight marker;
-    marker.label = "first divergence: move " + std::to_string(i);
-    marker.labelShown = true;
-    if (i < a.path.moves.size()) marker.points.push_back(a.path.moves[i].to);
-    if (i < b.path.moves.size()) marker.points.push_back(b.path.moves[i].to);
-    in.highlights.push_back(marker);
-  }
+  addComparison(in, svgLabel(aName, a), {svgLabel(bName, b), b.path, divergence ? divergence->move : std::nullopt});
   return renderToolpathSvg(in);
 }
 

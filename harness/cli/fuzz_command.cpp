@@ -1,5 +1,6 @@
 // `cyclecert fuzz` (generated cases through an engine and the oracles, shrinking failures) and
 // `cyclecert merge` (the results of shards joined into one run).
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/results_file.h"
 #include "harness/rule_catalogue.h"
+#include "harness/run_record.h"
 
 namespace cyclecert::cli {
 
@@ -27,8 +29,10 @@ with --vs, compares E's result with engine B's. The first failure of each kind (
 it, and written as a spec case to the regressions directory, which `check` runs from then on.
 
 Each result is appended to OUT/results.jsonl as it is known (a killed run keeps every result);
---resume continues a run, skipping the cases already there. Shards split one campaign: run
---shard 1/4 … --shard 4/4 with the same --seed and --cases, then `cyclecert merge`.
+--resume continues a run, skipping the cases already there. OUT/run.json records the run (engines
+and versions, git revision, spec suite hash, start, seed, command line), and at the end the report
+is written: OUT/report.json, OUT/junit.xml, OUT/index.html (`cyclecert report`). Shards split one
+campaign: run --shard 1/4 … --shard 4/4 with the same --seed and --cases, then `cyclecert merge`.
 
 Options:
   --engine E          reference | linuxcnc | process:COMMAND | mutant:NAME (`cyclecert engines`)
@@ -38,7 +42,7 @@ Options:
   --seed S            the run's seed (default: random, printed); case i uses S + i·0x9E3779B97F4A7C15,
                       so `--seed <case seed> --cases 1` regenerates one case
   --shard K/N         run only the cases i with i mod N = K−1
-  --out DIR           where results.jsonl goes (default build/fuzz)
+  --out DIR           where results.jsonl, run.json and the report go (default build/fuzz)
   --regressions DIR   where shrunk failures are written (default corpus/regressions)
   --no-save           do not write shrunk failures
   --shrink-budget R   engine runs spent shrinking one failure at most (default 400)
@@ -52,9 +56,10 @@ Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage.
 const char* kMergeHelp = R"HELP(Usage: cyclecert merge --out DIR SHARD_DIR...
 
 Joins the results.jsonl of several runs (the shards of one fuzz campaign, or check runs of
-different engines) into DIR/results.jsonl. A result that appears in more than one input (the same
-engine and case) is kept once; torn lines of killed runs are skipped and counted.
-Exit: 0 merged, 2 bad usage or an input without results.jsonl.
+different engines) into DIR/results.jsonl, and their run.json records into DIR/run.json. A result
+that appears in more than one input (the same engine and case) is kept once; torn lines of killed
+runs are skipped and counted. `cyclecert report DIR` then writes the joined report.
+Exit: 0 merged, 2 bad usage, an input without results.jsonl, or a run.json that cannot be read.
 )HELP";
 
 std::uint64_t randomSeed() {
@@ -114,6 +119,9 @@ static int commandFuzz(const std::vector<std::string>& args) {
   std::cerr << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": seed " << options.seed;
   if (options.shards > 1) std::cerr << ", shard " << options.shard << "/" << options.shards;
   std::cerr << " (reproduce the run with --seed " << options.seed << ")\n";
+  std::vector<std::string> argv{"cyclecert", "fuzz"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  recordRun(options.outDir, startRunRecord("fuzz", *engine, vs.get(), defaultSpecsDir(), options.seed, argv), options.resume);
   const FuzzSummary s = runFuzz(*engine, vs.get(), options, std::cerr);
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
             << s.seconds << " s (" << static_cast<long>(s.run / std::max(s.seconds, 1e-9)) << "/s): " << s.pass
@@ -125,6 +133,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
     std::cout << "  " << f.kind << ": seed " << f.caseSeed << (f.regressionFile.empty() ? "" : ", kept as " + f.regressionFile)
               << "\n";
   }
+  writeRunReport(options.outDir, defaultSpecsDir());
   return s.clean() ? kExitOk : kExitAlarm;
 }
 
@@ -134,11 +143,15 @@ static int commandMerge(const std::vector<std::string>& args) {
   if (outDir.empty()) throw UsageError("give --out DIR (see `cyclecert merge --help`)");
   if (inputs.empty()) throw UsageError("give the run directories to merge (see `cyclecert merge --help`)");
   std::vector<std::string> merged;
+  std::vector<nlohmann::json> runs;
   std::set<std::pair<std::string, std::string>> seen;
   std::size_t duplicates = 0, torn = 0;
   for (const std::string& dir : inputs) {
     const std::string file = dir + "/results.jsonl";
     if (!std::filesystem::is_regular_file(file)) throw UsageError("no results in '" + dir + "' (expected " + file + ")");
+    for (nlohmann::json& run : readRunRecords(dir)) {
+      if (std::find(runs.begin(), runs.end(), run) == runs.end()) runs.push_back(std::move(run));  // a dir given twice
+    }
     const ResultLines lines = readResultLines(file);
     torn += lines.skipped;
     for (const ResultLines::Line& line : lines.lines) {
@@ -150,6 +163,7 @@ static int commandMerge(const std::vector<std::string>& args) {
   std::ofstream out(outDir + "/results.jsonl", std::ios::trunc);
   for (const std::string& line : merged) out << line << "\n";
   if (!out) throw UsageError("cannot write '" + outDir + "/results.jsonl'");
+  writeRunRecords(outDir, runs);
   std::cout << "merged " << inputs.size() << " run(s): " << merged.size() << " results";
   if (duplicates) std::cout << ", " << duplicates << " duplicate(s) dropped";
   if (torn) std::cout << ", " << torn << " torn line(s) skipped";

@@ -26,6 +26,7 @@ Commands:
   fuzz       generated cases through an engine and every oracle (--vs: against a second
              engine); failures shrunk, printed with their seed, kept in corpus/regressions
   merge      join the results.jsonl of several runs (fuzz shards)
+  report     write a run's report.json, junit.xml and index.html from its results
   judge      judge a toolpath (any engine's, as JSON) with every oracle
   rules      list the rule catalogue with, per rule, how many spec cases cite it
   params     list the machine parameters, their defaults and the rules they serve
@@ -57,7 +58,8 @@ int run(const std::vector<std::string>& argv) {
     return kExitOk;
   }
   for (const Command* c : {&kPlanCommand, &kParamsCommand, &kRulesCommand, &kJudgeCommand, &kCheckCommand,
-                           &kEnginesCommand, &kDiffCommand, &kFuzzCommand, &kMergeCommand, &kProfilesCommand}) {
+                           &kEnginesCommand, &kDiffCommand, &kFuzzCommand, &kMergeCommand, &kReportCommand,
+                           &kProfilesCommand}) {
     if (command != c->name) continue;
     if (wantsHelp(args)) {
       std::cout << c->help;

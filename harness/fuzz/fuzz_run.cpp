@@ -8,8 +8,11 @@
 #include <sstream>
 
 #include "harness/engine_diff.h"
+#include "harness/failure_plot.h"
 #include "harness/fuzz/regression_case.h"
 #include "harness/judging.h"
+#include "harness/reproduce.h"
+#include "reports/svg/plot_json.h"
 
 namespace cyclecert {
 
@@ -112,17 +115,6 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
   return f;
 }
 
-std::string reproduceCommand(const Engine& engine, const Engine* vs, std::uint64_t caseSeed) {
-  std::ostringstream s;
-  s << "cyclecert fuzz --engine '" << engine.name() << "'" << (vs ? " --vs '" + vs->name() + "'" : "") << " --seed "
-    << caseSeed << " --cases 1";
-  return s.str();
-}
-
-}  // namespace
-
-namespace {
-
 // One campaign: cases in batches (one engine call each), each judged, recorded and — the first
 // failure of each kind — shrunk, printed and kept.
 class FuzzCampaign {
@@ -164,13 +156,14 @@ class FuzzCampaign {
   void record(std::uint64_t caseSeed, const SpecCase& c, const EngineResult& planned) {
     const FuzzVerdict v = judgeFuzzResult(planned, engine_, vs_, c, options_.tolerance);
     CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
-                 caseSeed, "", vs_ ? vs_->name() : ""};
+                 caseSeed, "", vs_ ? vs_->name() : "", std::nullopt, ""};
     ++summary_.run;
     if (v.verdict == "pass") ++summary_.pass;
     else if (v.verdict == "not-applicable") ++summary_.notApplicable;
     else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
-    if ((v.verdict == "fail" || v.verdict == "engine-failure") && shrunkKinds_.insert(v.kind).second) {
-      keepFailure(caseSeed, c, v, r);
+    if (v.verdict == "fail" || v.verdict == "engine-failure") {
+      r.reproduce = fuzzReproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed);
+      if (shrunkKinds_.insert(v.kind).second) keepFailure(caseSeed, c, v, r);
     }
     results_.append(r);  // a killed run keeps every result written so far
     reportProgress();
@@ -178,7 +171,7 @@ class FuzzCampaign {
 
   void keepFailure(std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v, CaseResult& r) {
     FuzzFailure f = shrinkFailure(engine_, vs_, caseSeed, v, options_);
-    const std::string reproduce = reproduceCommand(engine_, vs_, caseSeed);
+    const std::string& reproduce = r.reproduce;
     if (!options_.regressionsDir.empty()) {
       // The rules behind the failure: the oracle's on the shrunk case, else the case's.
       const std::vector<std::string>& rules = f.rules.empty() ? c.rules : f.rules;
@@ -188,6 +181,7 @@ class FuzzCampaign {
     r.program = fuzzProgram(f.shrunk);
     r.file = f.regressionFile;
     r.detail = v.detail + " | shrunk in " + std::to_string(f.shrinkRuns) + " runs: " + f.detail;
+    drawShrunk(f, r);
     progress_ << "FAIL " << v.kind << " (seed " << caseSeed << "): " << f.detail << "\n  shrunk case ("
               << describeFuzzCase(f.shrunk) << "):\n";
     std::istringstream lines(r.program);
@@ -195,6 +189,27 @@ class FuzzCampaign {
     progress_ << "  reproduce: " << reproduce << "\n";
     if (!f.regressionFile.empty()) progress_ << "  kept as " << f.regressionFile << "\n";
     summary_.failures.push_back(std::move(f));
+  }
+
+  // The shrunk case run again (engines are deterministic), judged, and drawn — with --vs, the other
+  // engine's toolpath over it. The result then shows the shrunk case throughout: its program, its
+  // findings and its plot (the detail keeps the first finding of the case as generated).
+  void drawShrunk(const FuzzFailure& f, CaseResult& r) {
+    const SpecCase shrunk = fuzzSpecCase(f.shrunk, caseSeedTag(f.caseSeed));
+    const EngineResult mine = engine_.run(shrunk);
+    const FuzzVerdict v = judgeFuzzResult(mine, engine_, nullptr, shrunk, options_.tolerance);
+    std::optional<PlotComparison> theirs;
+    if (vs_) {
+      const EngineResult other = vs_->run(shrunk);
+      if (other.kind == EngineResult::Planned || other.kind == EngineResult::Alarmed) {
+        const auto d = compareEngineResults(mine, engine_.name(), other, vs_->name(), options_.tolerance);
+        theirs = PlotComparison{vs_->name(), other.path, d ? d->move : std::nullopt};
+      }
+    }
+    r.findings = v.findings;
+    if (const auto plot = failurePlot(shrunk, mine, engine_.name(), v.findings, options_.tolerance, theirs)) {
+      r.plot = plotToJson(*plot);
+    }
   }
 
   void reportProgress() {

@@ -1,0 +1,97 @@
+#include "harness/run_record.h"
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "cyclecert_git_revision.h"
+#include "cyclecert_version.h"
+#include "harness/spec_suite_hash.h"
+
+namespace cyclecert {
+
+using nlohmann::json;
+
+std::string utcNowIso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+RunRecord startRunRecord(const std::string& command, const Engine& engine, const Engine* vs, const std::string& specsDir,
+                         std::optional<std::uint64_t> seed, std::vector<std::string> argv) {
+  RunRecord r;
+  r.command = command;
+  r.engine = engine.name();
+  r.engineVersion = engine.version();
+  if (vs) r.vs = vs->name();
+  r.cyclecertVersion = CYCLECERT_VERSION;
+  r.gitRevision = CYCLECERT_GIT_REVISION;
+  r.specSuiteHash = specSuiteHash(specsDir);
+  r.started = utcNowIso8601();
+  r.seed = seed;
+  r.argv = std::move(argv);
+  return r;
+}
+
+json runRecordJson(const RunRecord& r) {
+  json j{{"command", r.command},
+         {"engine", r.engine},
+         {"engine_version", r.engineVersion},
+         {"cyclecert_version", r.cyclecertVersion},
+         {"git_revision", r.gitRevision},
+         {"spec_suite_hash", r.specSuiteHash},
+         {"started", r.started},
+         {"argv", r.argv}};
+  if (!r.vs.empty()) j["vs"] = r.vs;
+  if (r.seed) j["seed"] = *r.seed;
+  return j;
+}
+
+std::vector<json> readRunRecords(const std::string& outDir) {
+  const std::string file = outDir + "/run.json";
+  if (!std::filesystem::exists(file)) return {};
+  std::ifstream in(file);
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw std::runtime_error(file + ": not JSON: " + e.what());
+  }
+  if (!j.is_object() || !j.contains("runs") || !j["runs"].is_array()) {
+    throw std::runtime_error(file + ": expected {\"runs\": [...]}");
+  }
+  std::vector<json> runs;
+  for (std::size_t i = 0; i < j["runs"].size(); ++i) {
+    const json& run = j["runs"][i];
+    if (!run.is_object() || !run.contains("engine") || !run["engine"].is_string()) {
+      throw std::runtime_error(file + ": /runs/" + std::to_string(i) + ": expected a run record with its \"engine\"");
+    }
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+void writeRunRecords(const std::string& outDir, const std::vector<json>& runs) {
+  std::filesystem::create_directories(outDir);
+  const std::string file = outDir + "/run.json";
+  const std::string partial = file + ".partial";
+  {
+    std::ofstream out(partial, std::ios::trunc);
+    out << json{{"runs", runs}}.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+    if (!out) throw std::runtime_error("cannot write " + partial);
+  }
+  std::filesystem::rename(partial, file);
+}
+
+void recordRun(const std::string& outDir, const RunRecord& r, bool append) {
+  std::vector<json> runs = append ? readRunRecords(outDir) : std::vector<json>{};
+  runs.push_back(runRecordJson(r));
+  writeRunRecords(outDir, runs);
+}
+
+}  // namespace cyclecert

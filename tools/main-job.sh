@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# `make run`'s job: the spec suite and a fuzz campaign against each built-in engine, joined into one
+# report in BUILD/report (index.html, report.json, junit.xml).
+#
+# Exit 0 when every run completed: findings — a failing case, a fuzz failure — are what the run is
+# for, not a failure of it (check and fuzz exit 1 for them). Any other exit (bad usage, an input
+# that cannot be read, a crash of cyclecert itself) stops the job with that status.
+set -uo pipefail
+build=${1:-build}
+fuzz_seconds=${FUZZ_SECONDS:-30}
+cli="$build/cyclecert"
+report="$build/report"
+runs="$report/runs"
+rm -rf "$report"
+mkdir -p "$runs"
+
+step() {
+  echo "== $*"
+  "$@"
+  local status=$?
+  if [ "$status" -gt 1 ]; then
+    echo "make run: '$*' stopped with exit $status" >&2
+    exit "$status"
+  fi
+}
+
+engines=(reference linuxcnc)
+for engine in "${engines[@]}"; do
+  step "$cli" check --engine "$engine" --out "$runs/check-$engine"
+done
+for engine in "${engines[@]}"; do
+  # rs274 answers in milliseconds; a case it has not answered in 2 s hangs (README: LinuxCNC findings).
+  step "$cli" fuzz --engine "$engine" --seed 1 --time "$fuzz_seconds" --timeout 2 --out "$runs/fuzz-$engine" \
+    --regressions "$report/regressions"
+done
+step "$cli" merge --out "$report" "$runs"/*
+step "$cli" report "$report"
+
+# The closing lines: where the report is, and per engine the headline numbers.
+python3 - "$report" <<'PY'
+import json, sys
+out = sys.argv[1]
+report = json.load(open(f"{out}/report.json"))
+nonconforming = {}
+for entry in report["certification"]["nonconforming_rules"]:
+    for engine in entry["engines"]:
+        nonconforming[engine] = nonconforming.get(engine, 0) + 1
+print(f"\nmake run: done; the report is {out}/index.html ({out}/report.json and {out}/junit.xml beside it)")
+for e in report["engines"]:
+    t, f = e["totals"], e["fuzz"]
+    spec = f"{t['pass']} of {t['cases']} spec/regression cases pass"
+    others = [f"{t[k]} {label}" for k, label in
+              (("fail", "fail"), ("not_applicable", "not applicable"), ("engine_failure", "engine failure(s)")) if t[k]]
+    if others:
+        spec += " (" + ", ".join(others) + ")"
+    fuzz = f"fuzz {f['cases']} cases, {f['fail'] + f['engine_failure']} failing"
+    rules = f"{nonconforming.get(e['name'], 0)} rule(s) not conformed to"
+    print(f"  {e['name']:<10} {spec}; {fuzz}; {rules}")
+PY
