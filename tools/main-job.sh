@@ -6,6 +6,10 @@
 # for, not a failure of it (check and fuzz exit 1 for them). Any other exit (bad usage, an input
 # that cannot be read, a crash of cyclecert itself) stops the job with that status.
 set -uo pipefail
+if [ ! -d specs/cases ]; then
+  echo "main-job.sh: run it from the repository's root (make run does)" >&2
+  exit 2
+fi
 build=${1:-build}
 fuzz_seconds=${FUZZ_SECONDS:-30}
 cli="$build/cyclecert"
@@ -26,7 +30,8 @@ step() {
 
 engines=(reference linuxcnc)
 for engine in "${engines[@]}"; do
-  step "$cli" check --engine "$engine" --out "$runs/check-$engine"
+  # Paths relative to the repository, so that the report names files as a reader finds them.
+  step "$cli" check --engine "$engine" --specs specs --regressions corpus/regressions --out "$runs/check-$engine"
 done
 for engine in "${engines[@]}"; do
   # rs274 answers in milliseconds; a case it has not answered in 2 s hangs (README: LinuxCNC findings).
