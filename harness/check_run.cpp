@@ -1,5 +1,6 @@
 #include "harness/check_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <ostream>
@@ -60,6 +61,35 @@ std::optional<PlotComparison> comparisonFor(const SpecCase& c, const EngineResul
   return expected;
 }
 
+// An expected toolpath not met, as a finding naming the rules the diverging move follows: the
+// rules the reference annotates its move with there (its path is the expected one: it passes every
+// spec case) — a wrong retract fails the retract rule, not the format rule the case is about.
+// Nothing when the reference names none — then the failure stands against every rule the case
+// cites.
+std::optional<Finding> expectationFinding(const SpecCase& c, const EngineResult& r, const std::string& why) {
+  if (!c.expectedMoves) return std::nullopt;
+  const auto d = firstMoveDivergence(*c.expectedMoves, r.path.moves, c.tolerance);
+  if (!d) return std::nullopt;
+  std::vector<std::string> rules;
+  try {
+    const EngineResult reference = makeEngine("reference")->run(c);
+    if (d->move >= reference.path.moves.size()) return std::nullopt;
+    for (const std::string& rule : reference.path.moves[d->move].rules) {
+      if (std::find(rules.begin(), rules.end(), rule) == rules.end()) rules.push_back(rule);
+    }
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (rules.empty()) return std::nullopt;
+  Finding f;
+  f.oracle = "expectation";
+  f.rules = rules;
+  f.move = d->move;
+  f.message = why;
+  if (d->move < r.path.moves.size()) f.witness.segment = r.path.segment(d->move);
+  return f;
+}
+
 }  // namespace
 
 CaseResult checkCase(Engine& engine, const SpecCase& c) {
@@ -80,6 +110,7 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
   if (const auto why = unmet(c, r, engine.name())) {
     out.verdict = "fail";
     out.detail = *why;
+    if (auto f = expectationFinding(c, r, *why)) out.findings.push_back(std::move(*f));
   }
   AgreementCheck agreement;
   if (c.agreesWith) {
@@ -95,7 +126,7 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
     try {
       Toolpath path = r.path;
       const JudgeInput in = judgeInputFor(judgeRequestFor(c), std::move(path));
-      out.findings = judge(in);
+      for (Finding& f : judge(in)) out.findings.push_back(std::move(f));
     } catch (const std::exception& e) {
       out.detail += (out.detail.empty() ? "" : "; ") + std::string("the oracles could not judge it: ") + e.what();
     }
