@@ -132,14 +132,15 @@ BgRegion touching(const BgRegion& region, const Segment& move, double tolerance)
 // within 5145/5146) is not a layer of this pass. The pieces of material that touch the move are
 // measured whole — thickestAbove counts only what stands above the move within its span — which
 // spares a boolean per feed.
-std::optional<Thickest> layerBeyondDepthOfCut(const BgRegion& material, const Segment& move, const CycleSpec& c,
+std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const Segment& move, const CycleSpec& c,
                                               Point away, const JudgeSettings& settings) {
   const double tolerance = settings.tolerance();
   const double allowed = c.depthOfCut + tolerance;
-  // Most passes provably remove no more than Δd: a bound spares measuring them.
-  const auto bound = thicknessAboveBound(material, move, away, settings.chordTolerance);
+  // Most passes provably remove no more than Δd: a bound spares measuring them (and making the
+  // material left).
+  const auto bound = model.layerBound(move);
   if (!bound || *bound <= allowed) return std::nullopt;
-  const BgRegion layer = touching(material, move, tolerance);
+  const BgRegion layer = touching(model.remaining(), move, tolerance);
   if (layer.empty()) return std::nullopt;
   auto thickest = thickestAbove(layer, {move}, away, kMeasuringChord);
   // A skin narrower than the tolerance along the cut axis is not a layer: measure without it.
@@ -191,7 +192,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
     } else if (!onFinishShape(in, *c, move)) {
-      r.removedThickness[i] = layerBeyondDepthOfCut(model.remaining(), move, *c, r.away, in.settings);
+      r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, r.away, in.settings);
     }
     model.apply(move, in.path.moves[i].kind);
   }

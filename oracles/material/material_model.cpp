@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "oracles/material/boost_geometry.h"
+#include "oracles/material/thickness.h"
 
 namespace cyclecert {
 
@@ -76,14 +77,14 @@ struct ShadowPiece {
 };
 
 std::optional<ShadowPiece> shadowOfGraph(std::vector<Point> path, const DepthFrame& frame,
-                                         double reach, double sink) {
+                                         double reach) {
   if (std::abs(frame.cut(path.back()) - frame.cut(path.front())) <= kTidyDistance || !(reach > 0)) {
     return std::nullopt;  // a move along the depth axis sweeps no area
   }
   ShadowPiece piece;
   auto& ring = piece.polygon.outer();
   ring.reserve(2 * path.size() + 1);
-  for (Point p : path) ring.push_back(toBg(p - sink * frame.away()));
+  for (Point p : path) ring.push_back(toBg(p));
   const Point shift = reach * frame.away();
   for (auto it = path.rbegin(); it != path.rend(); ++it) ring.push_back(toBg(*it + shift));
   bg::correct(piece.polygon);  // closes the ring and orients it clockwise
@@ -98,54 +99,18 @@ std::optional<ShadowPiece> shadowOfGraph(std::vector<Point> path, const DepthFra
 // (region.h).
 std::vector<ShadowPiece> shadowPieces(const Segment& move, const DepthFrame& frame, double reach,
                                       double chordTolerance,
-                                      double farDepth = std::numeric_limits<double>::infinity(),
-                                      double sink = 0) {
+                                      double farDepth = std::numeric_limits<double>::infinity()) {
   std::vector<ShadowPiece> pieces;
   for (const Segment& part : splitWhereTangentIsAlong(move, frame)) {
     std::vector<Point> path = flatten(part, chordTolerance);
     double nearest = frame.depth(path.front());
     for (Point p : path) nearest = std::min(nearest, frame.depth(p));
     const double needed = std::min(reach, farDepth + kShadowMargin - nearest);
-    if (auto piece = shadowOfGraph(std::move(path), frame, needed, sink)) {
+    if (auto piece = shadowOfGraph(std::move(path), frame, needed)) {
       pieces.push_back(std::move(*piece));
     }
   }
   return pieces;
-}
-
-// Whether the shadow of a line a→b (a parallelogram) reaches more than kTidyDistance into the
-// region: an edge of the region enters it, or it lies wholly inside the region. A cheap test that
-// spares Boost's difference for the many feeds that cut only air (retracts, moves over ground
-// already cut). In frame coordinates the parallelogram is c ∈ [ca, cb], 0 ≤ h ≤ reach with
-// h = d − da − slope·(c − ca).
-bool lineShadowMeets(Point a, Point b, const DepthFrame& frame, double reach,
-                     const BgRegion& region) {
-  double ca = frame.cut(a), da = frame.depth(a), cb = frame.cut(b), db = frame.depth(b);
-  if (ca > cb) {
-    std::swap(ca, cb);
-    std::swap(da, db);
-  }
-  const double slope = (db - da) / (cb - ca);
-  bool meets = false;
-  auto edge = [&](const BgPoint& p, const BgPoint& q) {
-    const double cp = frame.cut(fromBg(p)), dp = frame.depth(fromBg(p));
-    const double cq = frame.cut(fromBg(q)), dq = frame.depth(fromBg(q));
-    double t0 = 0, t1 = 1;
-    meets = meets ||
-            (clipLinear(cp, cq - cp, ca + kTidyDistance, cb - kTidyDistance, t0, t1) &&
-             clipLinear(dp - da - slope * (cp - ca), (dq - dp) - slope * (cq - cp), kTidyDistance,
-                        reach - kTidyDistance, t0, t1));
-  };
-  auto ringEdges = [&](const BgPolygon::ring_type& ring) {
-    for (std::size_t i = 1; i < ring.size() && !meets; ++i) edge(ring[i - 1], ring[i]);
-  };
-  for (const BgPolygon& polygon : region) {
-    ringEdges(polygon.outer());
-    for (const auto& hole : polygon.inners()) ringEdges(hole);
-  }
-  if (meets) return true;
-  // No edge enters: the parallelogram is wholly inside the region or wholly outside.
-  return bg::within(toBg(0.5 * (a + b) + (reach / 2) * frame.away()), region);
 }
 
 BgRegion unionOf(const std::vector<BgPolygon>& polygons) {
@@ -232,34 +197,59 @@ void forEachEdge(const BgRegion& region, Visit visit) {
   }
 }
 
-// A chord's pieces deeper than ε inside the region. Away from every edge's ε-capsule the chord
-// cannot cross the boundary, so each gap between the near intervals lies wholly inside or wholly
-// outside: its midpoint decides.
-void addChordCrossing(const BgRegion& region, const Box& envelope, const Chord& chord,
-                      double epsilon, std::vector<Interval>& near, Crossing& crossing) {
-  if (chord.length <= kGeomEps) return;
+// The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region. Away from
+// every edge's ε-capsule the chord cannot cross the boundary, so each gap between the near
+// intervals lies wholly inside or wholly outside: its midpoint decides.
+std::vector<Interval> insideIntervals(const BgRegion& region, const Box& envelope, const Chord& chord, double epsilon,
+                                      std::vector<Interval>& near) {
+  std::vector<Interval> inside;
   const Box chordBox{{chord.zMin, chord.xMin}, {chord.zMax, chord.xMax}};
-  if (bg::disjoint(chordBox, envelope)) return;
+  if (region.empty() || bg::disjoint(chordBox, envelope)) return inside;
   near.clear();
   forEachEdge(region, [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
   for (const Interval& gap : gapsBetween(near)) {
-    if (bg::within(toBg(chord.at(0.5 * (gap.first + gap.second))), region)) {
-      const Segment piece{SegmentKind::Line, chord.at(gap.first), chord.at(gap.second), {}, 0};
-      crossing.pieces.push_back(piece);
-      crossing.length += (gap.second - gap.first) * chord.length;
-    }
+    if (bg::within(toBg(chord.at(0.5 * (gap.first + gap.second))), region)) inside.push_back(gap);
   }
+  return inside;
 }
 
-Crossing crossingWithin(const BgRegion& region, const Box& envelope, const Segment& move,
-                        double epsilon, double chordTolerance) {
+// The common parts of two sorted lists of disjoint intervals.
+std::vector<Interval> common(const std::vector<Interval>& a, const std::vector<Interval>& b) {
+  std::vector<Interval> out;
+  for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+    const double lo = std::max(a[i].first, b[j].first), hi = std::min(a[i].second, b[j].second);
+    if (lo < hi) out.push_back({lo, hi});
+    (a[i].second < b[j].second ? i : j)++;
+  }
+  return out;
+}
+
+// A region with its envelope, for the crossing tests.
+struct BoxedRegion {
+  const BgRegion& region;
+  Box envelope;
+};
+
+// The pieces of `move` deeper than ε inside every one of the regions (inside their intersection:
+// a point is ε inside an intersection exactly when it is ε inside each).
+Crossing crossingWithin(const std::vector<BoxedRegion>& regions, const Segment& move, double epsilon,
+                        double chordTolerance) {
   Crossing crossing;
-  if (region.empty()) return crossing;
+  if (regions.empty()) return crossing;
   epsilon = std::max(epsilon, kTidyDistance);
   const std::vector<Point> points = flatten(move, chordTolerance);
   std::vector<Interval> near;
   for (std::size_t i = 1; i < points.size(); ++i) {
-    addChordCrossing(region, envelope, Chord(points[i - 1], points[i]), epsilon, near, crossing);
+    const Chord chord(points[i - 1], points[i]);
+    if (chord.length <= kGeomEps) continue;
+    std::vector<Interval> inside = insideIntervals(regions.front().region, regions.front().envelope, chord, epsilon, near);
+    for (std::size_t k = 1; k < regions.size() && !inside.empty(); ++k) {
+      inside = common(inside, insideIntervals(regions[k].region, regions[k].envelope, chord, epsilon, near));
+    }
+    for (const Interval& piece : inside) {
+      crossing.pieces.push_back({SegmentKind::Line, chord.at(piece.first), chord.at(piece.second), {}, 0});
+      crossing.length += (piece.second - piece.first) * chord.length;
+    }
   }
   return crossing;
 }
@@ -286,102 +276,136 @@ BgRegion shadowOf(const Segment& move, Point away, double reach, double chordTol
 
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance) {
-  return crossingWithin(region, envelopeOf(region), move, epsilon, chordTolerance);
+  return crossingWithin({{region, envelopeOf(region)}}, move, epsilon, chordTolerance);
 }
 
 MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance)
-    : remaining_(std::move(stock)), frame_(away), reach_(reach), chordTolerance_(chordTolerance) {
+    : stock_(std::move(stock)), frame_(away), reach_(reach), chordTolerance_(chordTolerance) {
   if (!(reach > 0) || !(chordTolerance > 0)) {
     throw std::invalid_argument("the material model needs a positive reach and chord tolerance");
   }
-  updateEnvelope();
+  stockEnvelope_ = envelopeOf(stock_);
 }
-
-void MaterialModel::updateEnvelope() { envelope_ = envelopeOf(remaining_); }
-
-double MaterialModel::farDepth() const {
-  if (remaining_.empty()) return -std::numeric_limits<double>::infinity();
-  const BgPoint lo = envelope_.min_corner(), hi = envelope_.max_corner();
-  return std::max({frame_.depth({lo.x(), lo.y()}), frame_.depth({lo.x(), hi.y()}),
-                   frame_.depth({hi.x(), lo.y()}), frame_.depth({hi.x(), hi.y()})});
-}
-
-namespace {
-
-// Cheap tests before a boolean: a shadow whose box misses the material's, or a line's shadow that
-// meets no material, removes nothing.
-bool meetsMaterial(const ShadowPiece& shadow, const bg::model::box<BgPoint>& envelope, const DepthFrame& frame,
-                   const BgRegion& remaining) {
-  if (bg::disjoint(bg::return_envelope<bg::model::box<BgPoint>>(shadow.polygon), envelope)) return false;
-  return shadow.path.size() != 2 || lineShadowMeets(shadow.path[0], shadow.path[1], frame, shadow.reach, remaining);
-}
-
-}  // namespace
-
-namespace {
-
-// Whether every point of `polygon` lies in the shadow of the line a→b (a parallelogram: convex, so
-// its vertices decide), within `tolerance`.
-bool insideLineShadow(const BgPolygon& polygon, Point a, Point b, const DepthFrame& frame, double reach,
-                      double tolerance) {
-  double ca = frame.cut(a), da = frame.depth(a), cb = frame.cut(b), db = frame.depth(b);
-  if (ca > cb) {
-    std::swap(ca, cb);
-    std::swap(da, db);
-  }
-  const double slope = (db - da) / (cb - ca);
-  for (const BgPoint& v : polygon.outer()) {
-    const double c = frame.cut(fromBg(v)), h = frame.depth(fromBg(v)) - da - slope * (c - ca);
-    if (c < ca - tolerance || c > cb + tolerance || h < -tolerance || h > reach + tolerance) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
-  if (kind != MoveKind::Feed || remaining_.empty()) return;
-  bool changed = false;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
-    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;  // cheap tests first: a shadow in air removes nothing
-    BgRegion rest;
-    bg::difference(remaining_, shadow.polygon, rest);
-    Box operands = envelope_;
-    bg::expand(operands, bg::return_envelope<Box>(shadow.polygon));
-    const double size = std::max(operands.max_corner().x() - operands.min_corner().x(),
-                                 operands.max_corner().y() - operands.min_corner().y());
-    tidy(rest, size);
-    const double resolution = std::max(kDustWidth, kBooleanResolution * size);
-    splitPinches(rest, resolution);
-    // Boost keeps a piece whose edges lie, within its resolution, on the shadow's edge even when the
-    // whole piece is inside the shadow (a step left by a pass, then the semi-finish along the
-    // profile it rests on): such a piece is cut material.
-    if (shadow.path.size() == 2) {
-      rest.erase(std::remove_if(rest.begin(), rest.end(),
-                                [&](const BgPolygon& piece) {
-                                  return insideLineShadow(piece, shadow.path[0], shadow.path[1], frame_, shadow.reach,
-                                                          resolution);
-                                }),
-                 rest.end());
-    }
-    remaining_ = std::move(rest);
-    changed = true;
+  if (kind != MoveKind::Feed || stock_.empty()) return;
+  bool lowered = false;
+  for (const Segment& part : splitWhereTangentIsAlong(move, frame_)) {
+    lowered = cut_.lower(flatten(part, chordTolerance_), frame_) || lowered;
   }
-  if (changed) updateEnvelope();
+  if (lowered) {
+    below_.reset();
+    remaining_.reset();
+  }
 }
 
-double MaterialModel::area() const { return bg::area(remaining_); }
+// The frame box the stock stands in, 1 mm wider on every side (and below every feed): the region
+// below the envelope is drawn within it, and its sides stay far from the material.
+MaterialModel::FrameBox MaterialModel::frameBox() const {
+  FrameBox box{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  const BgPoint lo = stockEnvelope_.min_corner(), hi = stockEnvelope_.max_corner();
+  for (const Point corner : {Point{lo.x(), lo.y()}, Point{lo.x(), hi.y()}, Point{hi.x(), lo.y()}, Point{hi.x(), hi.y()}}) {
+    box.cMin = std::min(box.cMin, frame_.cut(corner));
+    box.cMax = std::max(box.cMax, frame_.cut(corner));
+    box.dBottom = std::min(box.dBottom, frame_.depth(corner));
+    box.dTop = std::max(box.dTop, frame_.depth(corner));
+  }
+  for (const CutEnvelope::Piece& p : cut_.pieces()) box.dBottom = std::min({box.dBottom, p.d0, p.d1});
+  box.cMin -= kShadowMargin;
+  box.cMax += kShadowMargin;
+  box.dBottom -= kShadowMargin;
+  box.dTop += kShadowMargin;
+  return box;
+}
+
+const BgRegion& MaterialModel::belowCuts() const {
+  if (!below_) {
+    const FrameBox box = frameBox();
+    below_ = cut_.below(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
+  }
+  return *below_;
+}
+
+const BgRegion& MaterialModel::remaining() const {
+  if (remaining_) return *remaining_;
+  if (cut_.empty() || stock_.empty()) {
+    remaining_ = stock_;
+    return *remaining_;
+  }
+  BgRegion rest = checkedIntersection(stock_, belowCuts());
+  Box operands = stockEnvelope_;
+  bg::expand(operands, envelopeOf(belowCuts()));
+  const double size = std::max(operands.max_corner().x() - operands.min_corner().x(),
+                               operands.max_corner().y() - operands.min_corner().y());
+  tidy(rest, size);
+  splitPinches(rest, std::max(kDustWidth, kBooleanResolution * size));
+  remaining_ = std::move(rest);
+  return *remaining_;
+}
+
+double MaterialModel::area() const { return bg::area(remaining()); }
 
 Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
-  return crossingWithin(remaining_, envelope_, move, epsilon, chordTolerance_);
+  if (stock_.empty()) return {};
+  if (cut_.empty()) return crossingWithin({{stock_, stockEnvelope_}}, move, epsilon, chordTolerance_);
+  return crossingWithin({{stock_, stockEnvelope_}, {belowCuts(), envelopeOf(belowCuts())}}, move, epsilon,
+                        chordTolerance_);
+}
+
+std::optional<double> MaterialModel::layerBound(const Segment& move) const {
+  const CutSpan span = cutSpanOf(move, frame_, chordTolerance_);
+  const auto stockDeepest = deepestWithin(stock_, frame_, span.c0, span.c1);
+  if (!stockDeepest) return std::nullopt;
+  // The material stands at most up to the envelope where feeds have been and up to the stock's
+  // deepest point elsewhere; the layer's thickness is at most its height above the move there.
+  // Both are linear over each overlap of a chord of the move with a piece of the envelope (or a
+  // gap), so their ends bound it. Measured against the move's chords, which lie within
+  // chordTolerance of an arc.
+  const std::vector<Point> path = flatten(move, chordTolerance_);
+  const auto& pieces = cut_.pieces();
+  double bound = -INFINITY;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    double a = frame_.cut(path[i - 1]), da = frame_.depth(path[i - 1]), b = frame_.cut(path[i]), db = frame_.depth(path[i]);
+    if (a > b) {
+      std::swap(a, b);
+      std::swap(da, db);
+    }
+    if (b - a <= kTidyDistance) continue;  // along the depth axis: beneath nothing (thickness.h)
+    const CutEnvelope::Piece chord{a, da, b, db};
+    const auto gap = [&](double g0, double g1) {
+      if (const auto deepest = deepestWithin(stock_, frame_, g0, g1)) {
+        bound = std::max(bound, *deepest - std::min(chord.depthAt(g0), chord.depthAt(g1)));
+      }
+    };
+    double covered = a;
+    const auto first = std::lower_bound(pieces.begin(), pieces.end(), a,
+                                        [](const CutEnvelope::Piece& p, double c) { return p.c1 < c; });
+    for (auto it = first; it != pieces.end() && it->c0 <= b; ++it) {
+      const double x0 = std::max(a, it->c0), x1 = std::min(b, it->c1);
+      if (x0 > covered) gap(covered, x0);
+      for (double x : {x0, x1}) bound = std::max(bound, it->depthAt(x) - chord.depthAt(x));
+      covered = std::max(covered, x1);
+    }
+    if (covered < b) gap(covered, b);
+  }
+  if (bound == -INFINITY) return std::nullopt;  // the move runs along the depth axis only
+  if (move.isArc()) bound += chordTolerance_;
+  return std::min(bound, *stockDeepest - span.shallowest);
 }
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {
-  if (remaining_.empty()) return {};
+  const BgRegion& material = remaining();
+  if (material.empty()) return {};
+  const Box envelope = envelopeOf(material);
+  double far = -std::numeric_limits<double>::infinity();
+  const BgPoint lo = envelope.min_corner(), hi = envelope.max_corner();
+  for (const Point corner : {Point{lo.x(), lo.y()}, Point{lo.x(), hi.y()}, Point{hi.x(), lo.y()}, Point{hi.x(), hi.y()}}) {
+    far = std::max(far, frame_.depth(corner));
+  }
   std::vector<BgPolygon> parts;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, farDepth(), kShadowSink)) {
-    if (!meetsMaterial(shadow, envelope_, frame_, remaining_)) continue;
-    for (BgPolygon& p : checkedIntersection(remaining_, {shadow.polygon})) parts.push_back(std::move(p));
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, far)) {
+    if (bg::disjoint(bg::return_envelope<Box>(shadow.polygon), envelope)) continue;
+    for (BgPolygon& p : checkedIntersection(material, {shadow.polygon})) parts.push_back(std::move(p));
   }
   BgRegion removed = unionOf(parts);
   tidy(removed);

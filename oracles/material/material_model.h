@@ -3,10 +3,12 @@
 // A feed removes its shadow — the region the ray from the tool point along `away` (towards the
 // cycle start side, away from the part) sweeps over `reach` mm as the tool point moves; a rapid
 // removes nothing (a rapid through material is a crash, which `crossing` measures, not a cut).
+#include <optional>
 #include <vector>
 
 #include <boost/geometry/geometries/box.hpp>
 
+#include "oracles/material/cut_envelope.h"
 #include "oracles/material/depth_frame.h"
 #include "oracles/material/region.h"
 #include "reference/model/toolpath.h"
@@ -37,31 +39,34 @@ struct Crossing {
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance);
 
-// What a feed removes sinks kShadowSink below the move: material left by earlier passes often
-// ends on the very line a later feed follows (a pass ending on the profile, then the semi-finish
-// along it), and Boost's difference mishandles such nearly collinear edges — it can leave the whole
-// piece standing. A sunk edge crosses them cleanly. Areas and thicknesses the model reports may
-// differ from the exact ones by this much per mm of move.
-inline constexpr double kShadowSink = 1e-7;  // mm: far below every tolerance, far above rounding
-
+// The model keeps the stock as it is and, for what the feeds removed, the envelope of their paths
+// (cut_envelope.h): every shadow removes all beyond its move, so the feeds together remove all
+// beyond one piecewise-linear function of the cut coordinate. Applying a feed merges it into that
+// function; the material left (stock below the envelope) is made — one boolean — only when asked.
 class MaterialModel {
  public:
-  // `stock` is taken as it is (a region from stock.h); `away` as in DepthFrame; `reach` should
-  // exceed the stock's size along the depth axis so that a shadow leaves the stock (the model cuts
-  // its shadows 1 mm past the material's far side anyway). Throws std::invalid_argument for a zero
-  // `away`, or a reach or chord tolerance that is not positive.
+  // `stock` is taken as it is (a region from stock.h); `away` as in DepthFrame; `reach` is used by
+  // removedBy's shadows (the envelope needs none). Throws std::invalid_argument for a zero `away`,
+  // or a reach or chord tolerance that is not positive.
   MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance);
 
-  // Feeds remove their shadow; rapids remove nothing. A line whose shadow misses the material's
-  // interior (retracts, moves over ground already cut) costs no Boost boolean.
+  // Feeds remove their shadow; rapids remove nothing.
   void apply(const Segment& move, MoveKind kind);
 
-  // The material still there.
-  const BgRegion& remaining() const { return remaining_; }
+  // The material still there: the stock below the envelope of the feeds so far.
+  const BgRegion& remaining() const;
   double area() const;
 
-  // crossingOf(remaining(), move, epsilon, chordTolerance).
+  // crossingOf(remaining(), move, epsilon, chordTolerance), without making remaining(): a point is
+  // ε inside the material exactly when it is ε inside the stock and ε below the envelope.
   Crossing crossing(const Segment& move, double epsilon) const;
+
+  // An upper bound of thickestAbove(remaining(), {move}, away, ·) (thickness.h), without making
+  // remaining(): how high above the move the material can stand — up to the envelope where feeds
+  // have been, up to the stock's deepest point over the gaps — and never more than the stock's
+  // deepest point over the move's span less the move's shallowest point. Nothing when no stock
+  // stands over the span or the move runs along the depth axis only (it is beneath nothing).
+  std::optional<double> layerBound(const Segment& move) const;
 
   // The material a feed along `move` would remove now (remaining ∩ shadow), without removing it.
   BgRegion removedBy(const Segment& move) const;
@@ -72,15 +77,21 @@ class MaterialModel {
 
  private:
   using Box = boost::geometry::model::box<BgPoint>;
+  struct FrameBox {
+    double cMin, cMax, dBottom, dTop;
+  };
 
-  void updateEnvelope();
-  double farDepth() const;  // depth of the far side of the material's envelope
+  FrameBox frameBox() const;
+  const BgRegion& belowCuts() const;  // the region below the envelope, within frameBox()
 
-  BgRegion remaining_;
+  BgRegion stock_;
+  Box stockEnvelope_;
   DepthFrame frame_;
   double reach_;
   double chordTolerance_;
-  Box envelope_;  // of remaining_: moves whose shadow misses it are skipped
+  CutEnvelope cut_;
+  mutable std::optional<BgRegion> below_;      // made when first needed after a feed
+  mutable std::optional<BgRegion> remaining_;  // likewise
 };
 
 }  // namespace cyclecert

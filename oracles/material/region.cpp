@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -146,24 +147,42 @@ void appendFlattened(std::vector<Point>& points, const Segment& s, double chordT
   points.insert(points.end(), more.begin() + (joins ? 1 : 0), more.end());
 }
 
-BgRegion regionFrom(const std::vector<Point>& outline) {
-  std::vector<BgPoint> points;
+namespace {
+
+// The outline as a closed, clockwise, tidy polygon; nothing when nothing is left of it.
+std::optional<BgPolygon> polygonFrom(const std::vector<Point>& outline, std::vector<BgPoint>& points) {
   points.reserve(outline.size());
   for (Point p : outline) {
     if (!isFinite(p)) throw std::invalid_argument("an outline point is not finite");
     points.push_back(toBg(p));
   }
   points = tidyPoints(points);
-  if (points.empty()) return {};
+  if (points.empty()) return std::nullopt;
   BgPolygon polygon;
   polygon.outer().assign(points.begin(), points.end());
   bg::correct(polygon);  // closes the ring and makes it clockwise
+  return polygon;
+}
+
+}  // namespace
+
+BgRegion regionFrom(const std::vector<Point>& outline) {
+  std::vector<BgPoint> points;
+  const auto polygon = polygonFrom(outline, points);
+  if (!polygon) return {};
   std::string reason;
-  if (!bg::is_valid(polygon, reason)) {
+  if (!bg::is_valid(*polygon, reason)) {
     throw std::invalid_argument("the outline is not a simple polygon: " + reason);
   }
   if (isDust(points, kDustWidth)) return {};
-  return {polygon};
+  return {*polygon};
+}
+
+BgRegion regionFromSimpleOutline(const std::vector<Point>& outline) {
+  std::vector<BgPoint> points;
+  const auto polygon = polygonFrom(outline, points);
+  if (!polygon || isDust(points, kDustWidth)) return {};
+  return {*polygon};
 }
 
 std::vector<std::vector<Point>> outlinesOf(const BgRegion& region) {

@@ -65,6 +65,10 @@ void appendFlattened(std::vector<Point>& points, const Segment& s, double chordT
 // Boost's reason when the outline crosses itself, and for non-finite coordinates.
 BgRegion regionFrom(const std::vector<Point>& outline);
 
+// The same for an outline known not to cross itself (built so), without Boost's validity check,
+// which costs more than the rest.
+BgRegion regionFromSimpleOutline(const std::vector<Point>& outline);
+
 // Every ring of `region` as a list of points without the closing repetition: for each polygon its
 // outer ring (clockwise) then its holes (counter-clockwise). Draw with fill-rule evenodd.
 std::vector<std::vector<Point>> outlinesOf(const BgRegion& region);
@@ -91,7 +95,7 @@ void tidy(BgRegion& region, double operandSize = 0);
 // route, a ∖ (a ∖ b).
 BgRegion checkedIntersection(const BgRegion& a, const BgRegion& b);
 
-// Boost's difference returns "pinched" rings where what remains falls into pieces that meet at a
+// Boost's booleans return "pinched" rings where what remains falls into pieces that meet at a
 // point (a ring through the same point twice, or a vertex on another of its edges) — and then
 // rejects them as invalid input to the next boolean. This cuts each pinched outer ring into its
 // pieces (points within `tolerance` count as the same).

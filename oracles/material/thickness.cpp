@@ -175,16 +175,18 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
   return search.best();
 }
 
-std::optional<double> thicknessAboveBound(const BgRegion& region, const Segment& move, Point away,
-                                          double chordTolerance) {
-  const DepthFrame frame(away);
-  double c0 = INFINITY, c1 = -INFINITY, shallowest = INFINITY;
+CutSpan cutSpanOf(const Segment& move, const DepthFrame& frame, double chordTolerance) {
+  CutSpan span{INFINITY, -INFINITY, INFINITY};
   for (Point p : flatten(move, chordTolerance)) {
-    c0 = std::min(c0, frame.cut(p));
-    c1 = std::max(c1, frame.cut(p));
-    shallowest = std::min(shallowest, frame.depth(p));
+    span.c0 = std::min(span.c0, frame.cut(p));
+    span.c1 = std::max(span.c1, frame.cut(p));
+    span.shallowest = std::min(span.shallowest, frame.depth(p));
   }
-  if (move.isArc()) shallowest -= chordTolerance;
+  if (move.isArc()) span.shallowest -= chordTolerance;
+  return span;
+}
+
+std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& frame, double c0, double c1) {
   std::optional<double> deepest;
   // The deepest point of an edge within [c0, c1] is one of its ends clipped to that range.
   const auto clipEdge = [&](Point p, Point q) {
@@ -205,8 +207,7 @@ std::optional<double> thicknessAboveBound(const BgRegion& region, const Segment&
     visitRing(polygon.outer());
     for (const auto& hole : polygon.inners()) visitRing(hole);
   }
-  if (!deepest) return std::nullopt;
-  return *deepest - shallowest;
+  return deepest;
 }
 
 }  // namespace cyclecert

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "oracles/material/depth_frame.h"
 #include "oracles/material/region.h"
 
 namespace cyclecert {
@@ -41,13 +42,16 @@ struct Thickest {
 std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<Segment>& profile,
                                       Point away, double chordTolerance);
 
-// An upper bound of thickestAbove(region, {move}, away, ·) for any chord tolerance of at most
-// `chordTolerance`, in one pass over the region's edges: the deepest the region comes within the
-// move's span along the cut axis, less the shallowest the move comes (its flattened vertices lie on
-// it, so its chords come at most chordTolerance nearer the part). A feed whose bound is within Δd
-// provably removes no thicker layer, and is not measured. Nothing when the region has no point
-// within the move's span.
-std::optional<double> thicknessAboveBound(const BgRegion& region, const Segment& move, Point away,
-                                          double chordTolerance);
+// A move's extent along the cut axis and its shallowest depth, for bounds on the layer it removes:
+// its flattened vertices lie on it, so its chords come at most chordTolerance nearer the part.
+struct CutSpan {
+  double c0, c1;      // c0 ≤ c1
+  double shallowest;  // no point of the move, flattened within chordTolerance or finer, is shallower
+};
+CutSpan cutSpanOf(const Segment& move, const DepthFrame& frame, double chordTolerance);
+
+// The deepest the region comes over the cut coordinates [c0, c1]; nothing when it has no point
+// there. One pass over its edges.
+std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& frame, double c0, double c1);
 
 }  // namespace cyclecert

@@ -1,0 +1,153 @@
+#include "oracles/material/cut_envelope.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cyclecert {
+
+namespace {
+
+using Piece = CutEnvelope::Piece;
+
+// Depths closer than this are the same envelope (a feed retracing an earlier one lowers nothing).
+constexpr double kSameDepth = 1e-12;
+
+Piece part(const Piece& p, double a, double b) { return {a, p.depthAt(a), b, p.depthAt(b)}; }
+
+void push(std::vector<Piece>& out, const Piece& p) {
+  if (p.c1 - p.c0 > kTidyDistance) out.push_back(p);
+}
+
+// On [a, b] the lower of two pieces, split where they cross. `lowered` says whether the new piece
+// came lower than the old one anywhere.
+void pushLower(std::vector<Piece>& out, const Piece& old, const Piece& fresh, double a, double b, bool& lowered) {
+  const double oa = old.depthAt(a), ob = old.depthAt(b), fa = fresh.depthAt(a), fb = fresh.depthAt(b);
+  if (fa >= oa - kSameDepth && fb >= ob - kSameDepth) return push(out, part(old, a, b));
+  lowered = true;
+  if (fa <= oa && fb <= ob) return push(out, part(fresh, a, b));
+  // They cross between a and b: the gaps fa − oa and fb − ob have opposite signs.
+  const double t = (fa - oa) / ((fa - oa) - (fb - ob));
+  const double c = a + t * (b - a);
+  push(out, part(fa < oa ? fresh : old, a, c));
+  push(out, part(fa < oa ? old : fresh, c, b));
+}
+
+bool collinear(const Piece& left, const Piece& right) {
+  if (std::abs(right.c0 - left.c1) > kTidyDistance || std::abs(right.d0 - left.d1) > kSameDepth) return false;
+  const double slopeLeft = (left.d1 - left.d0) / (left.c1 - left.c0);
+  const double slopeRight = (right.d1 - right.d0) / (right.c1 - right.c0);
+  return std::abs(slopeLeft - slopeRight) <= 1e-12 * std::max(1.0, std::abs(slopeLeft));
+}
+
+}  // namespace
+
+double CutEnvelope::Piece::depthAt(double c) const {
+  if (c <= c0) return d0;
+  if (c >= c1) return d1;
+  return d0 + (c - c0) / (c1 - c0) * (d1 - d0);
+}
+
+bool CutEnvelope::lower(const std::vector<Point>& path, const DepthFrame& frame) {
+  bool lowered = false;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    double c0 = frame.cut(path[i - 1]), d0 = frame.depth(path[i - 1]);
+    double c1 = frame.cut(path[i]), d1 = frame.depth(path[i]);
+    if (std::abs(c1 - c0) <= kTidyDistance) continue;
+    if (c0 > c1) {
+      std::swap(c0, c1);
+      std::swap(d0, d1);
+    }
+    lowered = lowerPiece({c0, d0, c1, d1}) || lowered;
+  }
+  return lowered;
+}
+
+// Merges a new piece into the sorted, disjoint pieces: kept as it is where no piece lies beneath
+// it, the lower of the two where one does.
+bool CutEnvelope::lowerPiece(const Piece& fresh) {
+  bool lowered = false;
+  std::vector<Piece> out;
+  out.reserve(pieces_.size() + 3);
+  std::size_t i = 0;
+  for (; i < pieces_.size() && pieces_[i].c1 <= fresh.c0; ++i) out.push_back(pieces_[i]);
+  double covered = fresh.c0;  // fresh is merged up to here
+  for (; i < pieces_.size() && pieces_[i].c0 < fresh.c1; ++i) {
+    const Piece& old = pieces_[i];
+    if (old.c0 < fresh.c0) push(out, part(old, old.c0, fresh.c0));
+    const double a = std::max(old.c0, fresh.c0), b = std::min(old.c1, fresh.c1);
+    if (a - covered > kTidyDistance) {
+      push(out, part(fresh, covered, a));  // no feed there yet
+      lowered = true;
+    }
+    pushLower(out, old, fresh, a, b, lowered);
+    covered = b;
+    if (old.c1 > fresh.c1) push(out, part(old, fresh.c1, old.c1));
+  }
+  if (fresh.c1 - covered > kTidyDistance) {
+    push(out, part(fresh, covered, fresh.c1));
+    lowered = true;
+  }
+  for (; i < pieces_.size(); ++i) out.push_back(pieces_[i]);
+  // Collinear neighbours become one piece, so that the envelope grows with the feeds' shape, not
+  // with their number.
+  pieces_.clear();
+  for (const Piece& p : out) {
+    if (!pieces_.empty() && collinear(pieces_.back(), p)) {
+      pieces_.back().c1 = p.c1;
+      pieces_.back().d1 = p.d1;
+    } else {
+      pieces_.push_back(p);
+    }
+  }
+  return lowered;
+}
+
+std::optional<double> CutEnvelope::deepestOver(double c0, double c1) const {
+  std::optional<double> deepest;
+  double covered = c0;
+  const auto first = std::lower_bound(pieces_.begin(), pieces_.end(), c0,
+                                      [](const Piece& p, double c) { return p.c1 < c; });
+  for (auto it = first; it != pieces_.end() && it->c0 <= c1; ++it) {
+    if (it->c0 - covered > kTidyDistance) return std::nullopt;  // a gap: no feed over it
+    const double a = std::max(it->c0, c0), b = std::min(it->c1, c1);
+    const double d = std::max(it->depthAt(a), it->depthAt(b));
+    if (!deepest || d > *deepest) deepest = d;
+    covered = std::max(covered, it->c1);
+  }
+  if (c1 - covered > kTidyDistance) return std::nullopt;
+  return deepest;
+}
+
+BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const {
+  std::vector<std::pair<double, double>> top;  // (cut, depth) from cMin to cMax
+  const auto at = [&](double c, double d) { top.push_back({c, std::clamp(d, dBottom, dTop)}); };
+  double covered = cMin;
+  for (const Piece& whole : pieces_) {
+    if (whole.c1 <= cMin || whole.c0 >= cMax) continue;
+    const Piece p = part(whole, std::max(whole.c0, cMin), std::min(whole.c1, cMax));
+    if (top.empty() && p.c0 - cMin > kTidyDistance) at(cMin, dTop);
+    if (p.c0 - covered > kTidyDistance) {  // a gap: up to the top and along it
+      at(covered, dTop);
+      at(p.c0, dTop);
+    }
+    at(p.c0, p.d0);
+    // Where the piece rises through the top, the top takes over.
+    if ((p.d0 - dTop) * (p.d1 - dTop) < 0) at(p.c0 + (dTop - p.d0) / (p.d1 - p.d0) * (p.c1 - p.c0), dTop);
+    at(p.c1, p.d1);
+    covered = p.c1;
+  }
+  if (top.empty()) at(cMin, dTop);
+  if (cMax - covered > kTidyDistance) {
+    at(covered, dTop);
+    at(cMax, dTop);
+  }
+  std::vector<Point> outline;
+  outline.reserve(top.size() + 2);
+  const auto world = [&](double c, double d) { return c * frame.along() + d * frame.away(); };
+  for (const auto& [c, d] : top) outline.push_back(world(c, d));
+  outline.push_back(world(cMax, dBottom));
+  outline.push_back(world(cMin, dBottom));
+  return regionFromSimpleOutline(outline);  // a graph over the cut axis above a flat bottom
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,45 @@
+#pragma once
+// What the feeds have removed, as a height field: a feed's shadow takes everything beyond the move
+// along `away` (material_model.h), so what all the feeds so far have removed is everything beyond
+// one piecewise-linear function of the cut coordinate — at each cut coordinate, the depth of the
+// deepest feed over it (the lower envelope of the feeds' paths), and nothing where no feed has
+// been. Applying a feed is a merge of two piecewise-linear functions: no polygon boolean.
+#include <optional>
+#include <vector>
+
+#include "oracles/material/depth_frame.h"
+#include "oracles/material/region.h"
+
+namespace cyclecert {
+
+class CutEnvelope {
+ public:
+  // A linear piece over [c0, c1] (c0 < c1), from depth d0 to d1, in frame coordinates.
+  struct Piece {
+    double c0, d0, c1, d1;
+    double depthAt(double c) const;
+  };
+
+  // Lowers the envelope to a path (points of the plane) that is a graph over the frame's cut axis,
+  // walked in either direction; chords no longer than kTidyDistance along the cut axis (moves
+  // along the depth axis) remove nothing. True when the envelope came lower somewhere.
+  bool lower(const std::vector<Point>& path, const DepthFrame& frame);
+
+  bool empty() const { return pieces_.empty(); }
+  const std::vector<Piece>& pieces() const { return pieces_; }  // sorted, disjoint
+
+  // The deepest the envelope comes over [c0, c1]; nothing when some part of it is not under the
+  // envelope (no feed there: the material may stand at its full height).
+  std::optional<double> deepestOver(double c0, double c1) const;
+
+  // The region below the envelope (where material may stand) within the box [cMin, cMax] ×
+  // [dBottom, dTop] of the frame, as a region of the plane: the box itself where no feed has been.
+  // The box must hold the stock; depths beyond it are clipped to it.
+  BgRegion below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
+
+ private:
+  bool lowerPiece(const Piece& fresh);
+  std::vector<Piece> pieces_;
+};
+
+}  // namespace cyclecert
