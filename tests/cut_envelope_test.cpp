@@ -1,0 +1,117 @@
+// The feeds' envelope (oracles/material/cut_envelope.h) and the material model built on it: the
+// envelope is the lower envelope of the feeds' paths, worked out by hand below; and the model's
+// material equals the stock minus the union of the feeds' shadows taken with Boost's booleans, the
+// definition it replaces, on random feeds (RapidCheck).
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include "oracles/material/boost_geometry.h"
+#include "oracles/material/material.h"
+#include "reference/model/offset.h"
+
+namespace cyclecert {
+namespace {
+
+namespace bg = boost::geometry;
+
+constexpr Point kOuter{0, 1};  // G71 outer turning: depth = x, cut = z
+
+Segment line(Point a, Point b) { return {SegmentKind::Line, a, b, {}, 0}; }
+
+double distanceToBoundary(const BgRegion& region, Point p) {
+  double nearest = INFINITY;
+  for (const auto& ring : outlinesOf(region)) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      nearest = std::min(nearest, distanceToSegment(p, line(ring[i], ring[(i + 1) % ring.size()])));
+    }
+  }
+  return nearest;
+}
+
+TEST(CutEnvelope, TheLowerOfTwoFeedsWinsAndTheyCrossWhereTheirLinesMeet) {
+  const DepthFrame frame(kOuter);
+  CutEnvelope e;
+  // A flat feed at x 10 over z ∈ [−20, 0], then a taper from x 12 at z 0 down to x 8 at z −20:
+  // x = 12 + 0.2·z is lower than 10 for z < −10. Pieces run along z: the taper on [−20, −10]
+  // (8 to 10), then the flat feed on [−10, 0].
+  EXPECT_TRUE(e.lower({{0, 10}, {-20, 10}}, frame));
+  EXPECT_TRUE(e.lower({{0, 12}, {-20, 8}}, frame));
+  ASSERT_EQ(e.pieces().size(), 2u);
+  EXPECT_NEAR(e.pieces()[0].c0, -20, 1e-12);
+  EXPECT_NEAR(e.pieces()[0].d0, 8, 1e-12);
+  EXPECT_NEAR(e.pieces()[0].c1, -10, 1e-12);
+  EXPECT_NEAR(e.pieces()[0].d1, 10, 1e-12);
+  EXPECT_NEAR(e.pieces()[1].c1, 0, 1e-12);
+  EXPECT_NEAR(e.pieces()[1].d1, 10, 1e-12);
+  // Retracing the flat feed lowers nothing; a feed along the depth axis removes nothing.
+  EXPECT_FALSE(e.lower({{0, 10}, {-10, 10}}, frame));
+  EXPECT_FALSE(e.lower({{-5, 30}, {-5, 0}}, frame));
+}
+
+TEST(CutEnvelope, DeepestOverASpanIsNothingWhereNoFeedHasBeen) {
+  const DepthFrame frame(kOuter);
+  CutEnvelope e;
+  e.lower({{0, 10}, {-10, 10}}, frame);   // z [−10, 0] at 10
+  e.lower({{-10, 9}, {-20, 11}}, frame);  // z [−20, −10] from 11 (at −20) to 9 (at −10)
+  EXPECT_NEAR(*e.deepestOver(-20, 0), 11, 1e-12);
+  EXPECT_NEAR(*e.deepestOver(-15, 0), 10, 1e-12);     // 10 at z −15 and on the flat feed
+  EXPECT_FALSE(e.deepestOver(-25, -15).has_value());  // beyond z −20 no feed has been
+}
+
+TEST(CutEnvelope, BelowIsTheBoxUnderTheEnvelope) {
+  const DepthFrame frame(kOuter);
+  CutEnvelope e;
+  e.lower({{-5, 10}, {-15, 10}}, frame);  // z [−15, −5] at depth 10
+  // Box z [−20, 0] × depth [0, 20]: 400, less the 10 × 10 above the feed.
+  const BgRegion below = e.below(frame, -20, 0, 0, 20);
+  EXPECT_NEAR(bg::area(below), 300, 1e-9);
+  EXPECT_TRUE(bg::within(toBg({-10, 9}), below));
+  EXPECT_FALSE(bg::within(toBg({-10, 11}), below));
+  EXPECT_TRUE(bg::within(toBg({-2, 19}), below));  // beside the feed the box stands full
+}
+
+TEST(CutEnvelope, TheModelsLayerBoundHoldsTheLayerItMeasures) {
+  // A first pass 2 mm into a bar of radius 20: the layer it removes is 2 mm thick, and the bound
+  // (stock and envelope, before any feed) says so; a second pass 2 mm lower is bounded by the
+  // first pass's envelope.
+  MaterialModel model(barStock(40, 50, 0), kOuter, 100, 0.001);
+  const Segment first = line({2, 18}, {-30, 18});
+  EXPECT_NEAR(*model.layerBound(first), 2, 1e-12);
+  model.apply(first, MoveKind::Feed);
+  EXPECT_NEAR(*model.layerBound(line({2, 16}, {-30, 16})), 2, 1e-12);
+  // Where no feed has been beyond z −30, the stock bounds it: 20 − 16.
+  EXPECT_NEAR(*model.layerBound(line({2, 16}, {-40, 16})), 4, 1e-12);
+  // A move along the depth axis is beneath nothing.
+  EXPECT_FALSE(model.layerBound(line({-35, 19}, {-35, 10})).has_value());
+}
+
+// The material the model leaves equals stock ∖ ∪ shadows (Boost), for random line feeds over a bar.
+RC_GTEST_PROP(CutEnvelope, TheMaterialIsTheStockMinusEveryShadow, ()) {
+  const BgRegion stock = barStock(40, 50, 0);
+  MaterialModel model(stock, kOuter, 100, 0.001);
+  BgRegion expected = stock;
+  const int feeds = *rc::gen::inRange(1, 8);
+  for (int i = 0; i < feeds; ++i) {
+    const Point a{-*rc::gen::inRange(0, 500) / 10.0, *rc::gen::inRange(0, 220) / 10.0};
+    const Point b{-*rc::gen::inRange(0, 500) / 10.0, *rc::gen::inRange(0, 220) / 10.0};
+    const Segment feed = line(a, b);
+    model.apply(feed, MoveKind::Feed);
+    expected = without(expected, shadowOf(feed, kOuter, 100, 0.001));
+  }
+  // Within the booleans' resolution: Boost rounds to about 1e-5 mm on a picture 150 mm across
+  // (region.h), which over a 20 mm edge is 2e-4 mm².
+  RC_ASSERT(std::abs(bg::area(model.remaining()) - bg::area(expected)) < 1e-3);
+  // And the same places: a point in one and not in the other lies on their boundaries (booleans
+  // between two so nearly equal regions are what Boost gets wrong, so points decide).
+  for (int z = 0; z <= 100; ++z) {
+    for (int x = 0; x <= 44; ++x) {
+      const Point p{-z * 0.5 - 0.013, x * 0.5 - 0.007};
+      if (bg::within(toBg(p), model.remaining()) == bg::within(toBg(p), expected)) continue;
+      RC_ASSERT(distanceToBoundary(expected, p) < 1e-3);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cyclecert
