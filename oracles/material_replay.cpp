@@ -133,7 +133,8 @@ BgRegion touching(const BgRegion& region, const Segment& move, double tolerance)
 // measured whole — thickestAbove counts only what stands above the move within its span — which
 // spares a boolean per feed.
 std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const Segment& move, const CycleSpec& c,
-                                              Point away, const JudgeSettings& settings) {
+                                              const JudgeSettings& settings) {
+  const Point away = model.away();
   const double tolerance = settings.tolerance();
   const double allowed = c.depthOfCut + tolerance;
   // Most passes provably remove no more than Δd: a bound spares measuring them (and making the
@@ -192,7 +193,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
     } else if (!onFinishShape(in, *c, move)) {
-      r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, r.away, in.settings);
+      r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, in.settings);
     }
     model.apply(move, in.path.moves[i].kind);
   }

@@ -49,14 +49,34 @@ TEST(CutEnvelope, TheLowerOfTwoFeedsWinsAndTheyCrossWhereTheirLinesMeet) {
   EXPECT_FALSE(e.lower({{-5, 30}, {-5, 0}}, frame));
 }
 
-TEST(CutEnvelope, DeepestOverASpanIsNothingWhereNoFeedHasBeen) {
+TEST(CutEnvelope, AWalkMeetsEachPieceOverTheSpanAndEachStretchNoFeedCovers) {
   const DepthFrame frame(kOuter);
   CutEnvelope e;
   e.lower({{0, 10}, {-10, 10}}, frame);   // z [−10, 0] at 10
   e.lower({{-10, 9}, {-20, 11}}, frame);  // z [−20, −10] from 11 (at −20) to 9 (at −10)
-  EXPECT_NEAR(*e.deepestOver(-20, 0), 11, 1e-12);
-  EXPECT_NEAR(*e.deepestOver(-15, 0), 10, 1e-12);     // 10 at z −15 and on the flat feed
-  EXPECT_FALSE(e.deepestOver(-25, -15).has_value());  // beyond z −20 no feed has been
+  std::vector<CutEnvelope::Piece> pieces;
+  std::vector<std::pair<double, double>> gaps;
+  const auto walk = [&](double c0, double c1) {
+    pieces.clear();
+    gaps.clear();
+    e.walk(c0, c1, [&](const CutEnvelope::Piece& p) { pieces.push_back(p); },
+           [&](double g0, double g1) { gaps.push_back({g0, g1}); });
+  };
+  walk(-20, 0);
+  EXPECT_TRUE(gaps.empty());
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_NEAR(pieces[0].d0, 11, 1e-12);  // the deepest over the span
+  EXPECT_NEAR(pieces[1].d1, 10, 1e-12);
+  walk(-15, 0);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_NEAR(pieces[0].c0, -15, 1e-12);  // cut to the span: 10 at z −15
+  EXPECT_NEAR(pieces[0].d0, 10, 1e-12);
+  walk(-25, -15);  // beyond z −20 no feed has been
+  ASSERT_EQ(gaps.size(), 1u);
+  EXPECT_NEAR(gaps[0].first, -25, 1e-12);
+  EXPECT_NEAR(gaps[0].second, -20, 1e-12);
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_NEAR(pieces[0].d1, 10, 1e-12);
 }
 
 TEST(CutEnvelope, BelowIsTheBoxUnderTheEnvelope) {

@@ -102,45 +102,23 @@ bool CutEnvelope::lowerPiece(const Piece& fresh) {
   return lowered;
 }
 
-std::optional<double> CutEnvelope::deepestOver(double c0, double c1) const {
-  std::optional<double> deepest;
-  double covered = c0;
-  const auto first = std::lower_bound(pieces_.begin(), pieces_.end(), c0,
-                                      [](const Piece& p, double c) { return p.c1 < c; });
-  for (auto it = first; it != pieces_.end() && it->c0 <= c1; ++it) {
-    if (it->c0 - covered > kTidyDistance) return std::nullopt;  // a gap: no feed over it
-    const double a = std::max(it->c0, c0), b = std::min(it->c1, c1);
-    const double d = std::max(it->depthAt(a), it->depthAt(b));
-    if (!deepest || d > *deepest) deepest = d;
-    covered = std::max(covered, it->c1);
-  }
-  if (c1 - covered > kTidyDistance) return std::nullopt;
-  return deepest;
-}
-
 BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const {
   std::vector<std::pair<double, double>> top;  // (cut, depth) from cMin to cMax
   const auto at = [&](double c, double d) { top.push_back({c, std::clamp(d, dBottom, dTop)}); };
-  double covered = cMin;
-  for (const Piece& whole : pieces_) {
-    if (whole.c1 <= cMin || whole.c0 >= cMax) continue;
-    const Piece p = part(whole, std::max(whole.c0, cMin), std::min(whole.c1, cMax));
-    if (top.empty() && p.c0 - cMin > kTidyDistance) at(cMin, dTop);
-    if (p.c0 - covered > kTidyDistance) {  // a gap: up to the top and along it
-      at(covered, dTop);
-      at(p.c0, dTop);
-    }
-    at(p.c0, p.d0);
-    // Where the piece rises through the top, the top takes over.
-    if ((p.d0 - dTop) * (p.d1 - dTop) < 0) at(p.c0 + (dTop - p.d0) / (p.d1 - p.d0) * (p.c1 - p.c0), dTop);
-    at(p.c1, p.d1);
-    covered = p.c1;
-  }
-  if (top.empty()) at(cMin, dTop);
-  if (cMax - covered > kTidyDistance) {
-    at(covered, dTop);
-    at(cMax, dTop);
-  }
+  walk(
+      cMin, cMax,
+      [&](const Piece& p) {
+        if (p.c1 <= p.c0) return;  // touches the box only
+        at(p.c0, p.d0);
+        // Where the piece rises through the top, the top takes over.
+        if ((p.d0 - dTop) * (p.d1 - dTop) < 0) at(p.c0 + (dTop - p.d0) / (p.d1 - p.d0) * (p.c1 - p.c0), dTop);
+        at(p.c1, p.d1);
+      },
+      [&](double g0, double g1) {
+        if (g1 - g0 <= kTidyDistance) return;
+        at(g0, dTop);  // a gap: up to the top and along it
+        at(g1, dTop);
+      });
   std::vector<Point> outline;
   outline.reserve(top.size() + 2);
   const auto world = [&](double c, double d) { return c * frame.along() + d * frame.away(); };

@@ -4,7 +4,7 @@
 // one piecewise-linear function of the cut coordinate — at each cut coordinate, the depth of the
 // deepest feed over it (the lower envelope of the feeds' paths), and nothing where no feed has
 // been. Applying a feed is a merge of two piecewise-linear functions: no polygon boolean.
-#include <optional>
+#include <algorithm>
 #include <vector>
 
 #include "oracles/material/depth_frame.h"
@@ -28,9 +28,11 @@ class CutEnvelope {
   bool empty() const { return pieces_.empty(); }
   const std::vector<Piece>& pieces() const { return pieces_; }  // sorted, disjoint
 
-  // The deepest the envelope comes over [c0, c1]; nothing when some part of it is not under the
-  // envelope (no feed there: the material may stand at its full height).
-  std::optional<double> deepestOver(double c0, double c1) const;
+  // Walks [c0, c1] from left to right: each piece's part over it (onPiece(Piece), a single point
+  // where a piece only touches it) and each stretch between that no piece covers (onGap(g0, g1):
+  // no feed there, the material may stand at its full height).
+  template <typename OnPiece, typename OnGap>
+  void walk(double c0, double c1, OnPiece onPiece, OnGap onGap) const;
 
   // The region below the envelope (where material may stand) within the box [cMin, cMax] ×
   // [dBottom, dTop] of the frame, as a region of the plane: the box itself where no feed has been.
@@ -41,5 +43,18 @@ class CutEnvelope {
   bool lowerPiece(const Piece& fresh);
   std::vector<Piece> pieces_;
 };
+
+template <typename OnPiece, typename OnGap>
+void CutEnvelope::walk(double c0, double c1, OnPiece onPiece, OnGap onGap) const {
+  double covered = c0;
+  auto it = std::lower_bound(pieces_.begin(), pieces_.end(), c0, [](const Piece& p, double c) { return p.c1 < c; });
+  for (; it != pieces_.end() && it->c0 <= c1; ++it) {
+    const double x0 = std::max(c0, it->c0), x1 = std::min(c1, it->c1);
+    if (x0 > covered) onGap(covered, x0);
+    onPiece(Piece{x0, it->depthAt(x0), x1, it->depthAt(x1)});
+    covered = std::max(covered, x1);
+  }
+  if (covered < c1) onGap(covered, c1);
+}
 
 }  // namespace cyclecert

@@ -299,17 +299,22 @@ void MaterialModel::apply(const Segment& move, MoveKind kind) {
   }
 }
 
+MaterialModel::FrameBox MaterialModel::inFrame(const Box& box) const {
+  FrameBox out{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  const BgPoint lo = box.min_corner(), hi = box.max_corner();
+  for (const Point corner : {Point{lo.x(), lo.y()}, Point{lo.x(), hi.y()}, Point{hi.x(), lo.y()}, Point{hi.x(), hi.y()}}) {
+    out.cMin = std::min(out.cMin, frame_.cut(corner));
+    out.cMax = std::max(out.cMax, frame_.cut(corner));
+    out.dBottom = std::min(out.dBottom, frame_.depth(corner));
+    out.dTop = std::max(out.dTop, frame_.depth(corner));
+  }
+  return out;
+}
+
 // The frame box the stock stands in, 1 mm wider on every side (and below every feed): the region
 // below the envelope is drawn within it, and its sides stay far from the material.
 MaterialModel::FrameBox MaterialModel::frameBox() const {
-  FrameBox box{INFINITY, -INFINITY, INFINITY, -INFINITY};
-  const BgPoint lo = stockEnvelope_.min_corner(), hi = stockEnvelope_.max_corner();
-  for (const Point corner : {Point{lo.x(), lo.y()}, Point{lo.x(), hi.y()}, Point{hi.x(), lo.y()}, Point{hi.x(), hi.y()}}) {
-    box.cMin = std::min(box.cMin, frame_.cut(corner));
-    box.cMax = std::max(box.cMax, frame_.cut(corner));
-    box.dBottom = std::min(box.dBottom, frame_.depth(corner));
-    box.dTop = std::max(box.dTop, frame_.depth(corner));
-  }
+  FrameBox box = inFrame(stockEnvelope_);
   for (const CutEnvelope::Piece& p : cut_.pieces()) box.dBottom = std::min({box.dBottom, p.d0, p.d1});
   box.cMin -= kShadowMargin;
   box.cMax += kShadowMargin;
@@ -318,10 +323,12 @@ MaterialModel::FrameBox MaterialModel::frameBox() const {
   return box;
 }
 
-const BgRegion& MaterialModel::belowCuts() const {
+const MaterialModel::Below& MaterialModel::belowCuts() const {
   if (!below_) {
     const FrameBox box = frameBox();
-    below_ = cut_.below(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
+    BgRegion region = cut_.below(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
+    const Box envelope = envelopeOf(region);
+    below_ = Below{std::move(region), envelope};
   }
   return *below_;
 }
@@ -332,9 +339,9 @@ const BgRegion& MaterialModel::remaining() const {
     remaining_ = stock_;
     return *remaining_;
   }
-  BgRegion rest = checkedIntersection(stock_, belowCuts());
+  BgRegion rest = checkedIntersection(stock_, belowCuts().region);
   Box operands = stockEnvelope_;
-  bg::expand(operands, envelopeOf(belowCuts()));
+  bg::expand(operands, belowCuts().envelope);
   const double size = std::max(operands.max_corner().x() - operands.min_corner().x(),
                                operands.max_corner().y() - operands.min_corner().y());
   tidy(rest, size);
@@ -348,21 +355,25 @@ double MaterialModel::area() const { return bg::area(remaining()); }
 Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
   if (stock_.empty()) return {};
   if (cut_.empty()) return crossingWithin({{stock_, stockEnvelope_}}, move, epsilon, chordTolerance_);
-  return crossingWithin({{stock_, stockEnvelope_}, {belowCuts(), envelopeOf(belowCuts())}}, move, epsilon,
+  return crossingWithin({{stock_, stockEnvelope_}, {belowCuts().region, belowCuts().envelope}}, move, epsilon,
                         chordTolerance_);
 }
 
 std::optional<double> MaterialModel::layerBound(const Segment& move) const {
-  const CutSpan span = cutSpanOf(move, frame_, chordTolerance_);
-  const auto stockDeepest = deepestWithin(stock_, frame_, span.c0, span.c1);
-  if (!stockDeepest) return std::nullopt;
   // The material stands at most up to the envelope where feeds have been and up to the stock's
   // deepest point elsewhere; the layer's thickness is at most its height above the move there.
   // Both are linear over each overlap of a chord of the move with a piece of the envelope (or a
-  // gap), so their ends bound it. Measured against the move's chords, which lie within
-  // chordTolerance of an arc.
+  // gap), so their ends bound it. Measured against the move's chords: their vertices lie on the
+  // move, so they come at most chordTolerance nearer the part than an arc.
   const std::vector<Point> path = flatten(move, chordTolerance_);
-  const auto& pieces = cut_.pieces();
+  double spanStart = INFINITY, spanEnd = -INFINITY, shallowest = INFINITY;
+  for (Point p : path) {
+    spanStart = std::min(spanStart, frame_.cut(p));
+    spanEnd = std::max(spanEnd, frame_.cut(p));
+    shallowest = std::min(shallowest, frame_.depth(p));
+  }
+  const auto stockDeepest = deepestWithin(stock_, frame_, spanStart, spanEnd);
+  if (!stockDeepest) return std::nullopt;
   double bound = -INFINITY;
   for (std::size_t i = 1; i < path.size(); ++i) {
     double a = frame_.cut(path[i - 1]), da = frame_.depth(path[i - 1]), b = frame_.cut(path[i]), db = frame_.depth(path[i]);
@@ -372,38 +383,31 @@ std::optional<double> MaterialModel::layerBound(const Segment& move) const {
     }
     if (b - a <= kTidyDistance) continue;  // along the depth axis: beneath nothing (thickness.h)
     const CutEnvelope::Piece chord{a, da, b, db};
-    const auto gap = [&](double g0, double g1) {
-      if (const auto deepest = deepestWithin(stock_, frame_, g0, g1)) {
-        bound = std::max(bound, *deepest - std::min(chord.depthAt(g0), chord.depthAt(g1)));
-      }
-    };
-    double covered = a;
-    const auto first = std::lower_bound(pieces.begin(), pieces.end(), a,
-                                        [](const CutEnvelope::Piece& p, double c) { return p.c1 < c; });
-    for (auto it = first; it != pieces.end() && it->c0 <= b; ++it) {
-      const double x0 = std::max(a, it->c0), x1 = std::min(b, it->c1);
-      if (x0 > covered) gap(covered, x0);
-      for (double x : {x0, x1}) bound = std::max(bound, it->depthAt(x) - chord.depthAt(x));
-      covered = std::max(covered, x1);
-    }
-    if (covered < b) gap(covered, b);
+    cut_.walk(
+        a, b,
+        [&](const CutEnvelope::Piece& p) {
+          for (double x : {p.c0, p.c1}) bound = std::max(bound, p.depthAt(x) - chord.depthAt(x));
+        },
+        [&](double g0, double g1) {
+          if (const auto deepest = deepestWithin(stock_, frame_, g0, g1)) {
+            bound = std::max(bound, *deepest - std::min(chord.depthAt(g0), chord.depthAt(g1)));
+          }
+        });
   }
   if (bound == -INFINITY) return std::nullopt;  // the move runs along the depth axis only
-  if (move.isArc()) bound += chordTolerance_;
-  return std::min(bound, *stockDeepest - span.shallowest);
+  if (move.isArc()) {
+    bound += chordTolerance_;
+    shallowest -= chordTolerance_;
+  }
+  return std::min(bound, *stockDeepest - shallowest);
 }
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   const BgRegion& material = remaining();
   if (material.empty()) return {};
   const Box envelope = envelopeOf(material);
-  double far = -std::numeric_limits<double>::infinity();
-  const BgPoint lo = envelope.min_corner(), hi = envelope.max_corner();
-  for (const Point corner : {Point{lo.x(), lo.y()}, Point{lo.x(), hi.y()}, Point{hi.x(), lo.y()}, Point{hi.x(), hi.y()}}) {
-    far = std::max(far, frame_.depth(corner));
-  }
   std::vector<BgPolygon> parts;
-  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, far)) {
+  for (const ShadowPiece& shadow : shadowPieces(move, frame_, reach_, chordTolerance_, inFrame(envelope).dTop)) {
     if (bg::disjoint(bg::return_envelope<Box>(shadow.polygon), envelope)) continue;
     for (BgPolygon& p : checkedIntersection(material, {shadow.polygon})) parts.push_back(std::move(p));
   }

@@ -81,8 +81,14 @@ class MaterialModel {
     double cMin, cMax, dBottom, dTop;
   };
 
+  struct Below {
+    BgRegion region;
+    Box envelope;
+  };
+
+  FrameBox inFrame(const Box& box) const;  // the box's ranges along the cut and depth axes
   FrameBox frameBox() const;
-  const BgRegion& belowCuts() const;  // the region below the envelope, within frameBox()
+  const Below& belowCuts() const;  // the region below the envelope, within frameBox()
 
   BgRegion stock_;
   Box stockEnvelope_;
@@ -90,7 +96,7 @@ class MaterialModel {
   double reach_;
   double chordTolerance_;
   CutEnvelope cut_;
-  mutable std::optional<BgRegion> below_;      // made when first needed after a feed
+  mutable std::optional<Below> below_;         // made when first needed after a feed
   mutable std::optional<BgRegion> remaining_;  // likewise
 };
 

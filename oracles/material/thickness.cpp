@@ -175,17 +175,6 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
   return search.best();
 }
 
-CutSpan cutSpanOf(const Segment& move, const DepthFrame& frame, double chordTolerance) {
-  CutSpan span{INFINITY, -INFINITY, INFINITY};
-  for (Point p : flatten(move, chordTolerance)) {
-    span.c0 = std::min(span.c0, frame.cut(p));
-    span.c1 = std::max(span.c1, frame.cut(p));
-    span.shallowest = std::min(span.shallowest, frame.depth(p));
-  }
-  if (move.isArc()) span.shallowest -= chordTolerance;
-  return span;
-}
-
 std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& frame, double c0, double c1) {
   std::optional<double> deepest;
   // The deepest point of an edge within [c0, c1] is one of its ends clipped to that range.

@@ -42,14 +42,6 @@ struct Thickest {
 std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<Segment>& profile,
                                       Point away, double chordTolerance);
 
-// A move's extent along the cut axis and its shallowest depth, for bounds on the layer it removes:
-// its flattened vertices lie on it, so its chords come at most chordTolerance nearer the part.
-struct CutSpan {
-  double c0, c1;      // c0 ≤ c1
-  double shallowest;  // no point of the move, flattened within chordTolerance or finer, is shallower
-};
-CutSpan cutSpanOf(const Segment& move, const DepthFrame& frame, double chordTolerance);
-
 // The deepest the region comes over the cut coordinates [c0, c1]; nothing when it has no point
 // there. One pass over its edges.
 std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& frame, double c0, double c1);
