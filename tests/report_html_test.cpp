@@ -443,15 +443,20 @@ TEST(ReportHtml, AMalformedPlotIsReportedInPlace) {
   EXPECT_NE(failureArticles(page).at(bad["id"]).find("class=\"plot-error\""), std::string::npos);
 }
 
+// `count` more failures of the engine, copies of one with a plot under new ids.
+void addCopiesOfAPlottedFailure(json& engine, int count, const std::string& idPrefix) {
+  const json plotted = caseWithPlot(engine);
+  for (int i = 0; i < count; ++i) {
+    json copy = plotted;
+    copy["id"] = idPrefix + std::to_string(i);
+    engine["cases"].push_back(copy);
+  }
+}
+
 TEST(ReportHtml, PlotsAreCappedPerEngine) {
   json report = loadFixture();
   json& engine = engineNamed(report, "linuxcnc");
-  const json plotted = caseWithPlot(engine);
-  for (int i = 0; i < 4; ++i) {
-    json copy = plotted;
-    copy["id"] = "copy-" + std::to_string(i);
-    engine["cases"].push_back(copy);
-  }
+  addCopiesOfAPlottedFailure(engine, 4, "copy-");
   HtmlReportOptions options;
   options.maxPlotsPerEngine = 2;
   const std::string page = renderReportHtml(report, options);
@@ -465,12 +470,7 @@ TEST(ReportHtml, PlotsAreCappedPerEngine) {
 TEST(ReportHtml, AThousandFailuresMakeAPageOfReasonableSize) {
   json report = loadFixture();
   json& engine = engineNamed(report, "linuxcnc");
-  const json plotted = caseWithPlot(engine);
-  for (int i = 0; i < 1000; ++i) {
-    json copy = plotted;
-    copy["id"] = "bulk-" + std::to_string(i);
-    engine["cases"].push_back(copy);
-  }
+  addCopiesOfAPlottedFailure(engine, 1000, "bulk-");
   const auto start = std::chrono::steady_clock::now();
   const std::string page = renderReportHtml(report);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
