@@ -17,10 +17,9 @@ namespace {
 
 double tolerance(const JudgeInput& in) { return in.settings.tolerance(); }
 
-// The material left beyond the target surface, over the target's span along the cut axis: what
-// remains minus the part grown by the allowances, and without what lies outside the span (the
-// cycle does not cut beyond its shape's ends).
-BgRegion leftover(const MaterialReplay& r, double tolerance) {
+// The target's span along the cut axis, less the tolerance at each end (the cycle does not cut
+// beyond its shape's ends); nothing when no more is left.
+std::optional<std::pair<double, double>> targetSpan(const MaterialReplay& r, double tolerance) {
   const DepthFrame frame(r.away);
   double lo = INFINITY, hi = -INFINITY;
   for (const Segment& s : r.target) {
@@ -29,13 +28,52 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
       hi = std::max(hi, frame.cut(p));
     }
   }
-  if (!(hi - lo > 2 * tolerance)) return {};
+  if (!(hi - lo > 2 * tolerance)) return std::nullopt;
+  return std::pair{lo + tolerance, hi - tolerance};
+}
+
+// The material left beyond the target surface, over the target's span: what remains minus the
+// part grown by the allowances, within the span.
+BgRegion leftover(const MaterialReplay& r, double tolerance) {
+  const auto span = targetSpan(r, tolerance);
+  if (!span) return {};
   // The span as a band across the depth axis, as wide as the shadows reach.
   const Point along{r.away.x, -r.away.z};
   const auto corner = [&](double cut, double depth) { return cut * along + depth * r.away; };
-  const BgRegion span = regionFrom({corner(lo + tolerance, -r.reach), corner(hi - tolerance, -r.reach),
-                                    corner(hi - tolerance, r.reach), corner(lo + tolerance, r.reach)});
-  return checkedIntersection(without(r.remaining, r.part), span);
+  const BgRegion band = regionFrom({corner(span->first, -r.reach), corner(span->second, -r.reach),
+                                    corner(span->second, r.reach), corner(span->first, r.reach)});
+  return checkedIntersection(without(r.remaining(), r.part), band);
+}
+
+// Whether the target is a graph over the cut axis: it never turns back along it (walls along the
+// depth axis allowed).
+bool isGraphOverCutAxis(const std::vector<Segment>& target, Point away) {
+  const DepthFrame frame(away);
+  int direction = 0;
+  for (const Segment& s : target) {
+    for (const Segment& piece : splitWhereTangentIsAlong(s, frame)) {
+      const double advance = frame.cut(piece.to) - frame.cut(piece.from);
+      if (std::abs(advance) <= kTidyDistance) continue;
+      const int sign = advance > 0 ? 1 : -1;
+      if (direction != 0 && sign != direction) return false;
+      direction = sign;
+    }
+  }
+  return true;
+}
+
+// Whether the material left may stand thicker than `allowed` above the target. Where the target is
+// a graph over the cut axis, the material's top over the span (the feeds' envelope, capped by the
+// stock) measured against the exact target (thickness.h, thickestBeneath) answers without a
+// boolean: the material left stands nowhere higher. That measure is also free of the region's
+// noise — chords of the part's arcs, points the booleans round — which reads up to a few µm
+// thicker; so it decides a pass, and the region left confirms a finding (without its skins).
+bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance) {
+  if (!isGraphOverCutAxis(r.target, r.away)) return true;
+  const auto span = targetSpan(r, tolerance);
+  if (!span) return false;
+  const auto top = thickestBeneath(r.model->topWithin(span->first, span->second), r.target, r.away, kMeasuringChord);
+  return top && top->thickness > allowed;
 }
 
 // no-gouge: no move enters the finish shape grown by the allowances by more than the tolerance.
@@ -94,6 +132,7 @@ class CompleteOracle : public Oracle {
     if (!r) return;
     const bool finished = r->cycle->semiFinish || in.program.hasFinishingCycle;
     const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
+    if (!leftoverMayExceed(*r, allowed, tolerance(in))) return;
     const BgRegion left = leftover(*r, tolerance(in));
     // Measured against a finely flattened profile (kMeasuringChord, material_replay.h).
     auto thickest = thickestAbove(left, r->target, r->away, kMeasuringChord);

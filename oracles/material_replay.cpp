@@ -197,7 +197,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     }
     model.apply(move, in.path.moves[i].kind);
   }
-  r.remaining = model.remaining();
+  r.model = std::move(model);
   return r;
 }
 

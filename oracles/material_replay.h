@@ -6,6 +6,7 @@
 
 #include "oracles/judgement.h"
 #include "oracles/material/material.h"
+#include "oracles/material/material_model.h"
 
 namespace cyclecert {
 
@@ -27,7 +28,9 @@ struct MaterialReplay {
   // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
   // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).
   std::vector<std::optional<Thickest>> removedThickness;
-  BgRegion remaining;                // after the last move
+  std::optional<MaterialModel> model;  // after the last move (always set by replayMaterial)
+
+  const BgRegion& remaining() const { return model->remaining(); }  // made when first asked for
 };
 
 // The part (grown by the allowances, when `profile` is the rough profile): the region the profile

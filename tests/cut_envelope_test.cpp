@@ -8,6 +8,7 @@
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/material/material.h"
+#include "oracles/material_replay.h"
 #include "reference/model/offset.h"
 
 namespace cyclecert {
@@ -106,6 +107,29 @@ TEST(CutEnvelope, TheModelsLayerBoundHoldsTheLayerItMeasures) {
   EXPECT_FALSE(model.layerBound(line({-35, 19}, {-35, 10})).has_value());
 }
 
+TEST(CutEnvelope, TheModelsTopIsTheEnvelopeCappedByTheStock) {
+  // A bar of radius 20 over z [−50, 0]; a feed at x 18 over z [−30, −10], and one rising from x 15
+  // at z −45 to x 25 at z −35 (above the bar from z −40 on). The top over z [−50, 0]: the bar's
+  // 20 where no feed has been, the feeds' depths, and the rising feed capped at 20.
+  MaterialModel model(barStock(40, 50, 0), kOuter, 100, 0.001);
+  model.apply(line({-10, 18}, {-30, 18}), MoveKind::Feed);
+  model.apply(line({-45, 15}, {-35, 25}), MoveKind::Feed);
+  const auto top = model.topWithin(-50, 0);
+  ASSERT_EQ(top.size(), 6u);
+  const auto expectPiece = [](const CutEnvelope::Piece& p, double c0, double d0, double c1, double d1) {
+    EXPECT_NEAR(p.c0, c0, 1e-9);
+    EXPECT_NEAR(p.d0, d0, 1e-9);
+    EXPECT_NEAR(p.c1, c1, 1e-9);
+    EXPECT_NEAR(p.d1, d1, 1e-9);
+  };
+  expectPiece(top[0], -50, 20, -45, 20);  // no feed: the bar's top
+  expectPiece(top[1], -45, 15, -40, 20);  // the rising feed, to where it meets the bar's top
+  expectPiece(top[2], -40, 20, -35, 20);  // … and capped beyond
+  expectPiece(top[3], -35, 20, -30, 20);
+  expectPiece(top[4], -30, 18, -10, 18);
+  expectPiece(top[5], -10, 20, 0, 20);
+}
+
 // The material the model leaves equals stock ∖ ∪ shadows (Boost), for random line feeds over a bar.
 RC_GTEST_PROP(CutEnvelope, TheMaterialIsTheStockMinusEveryShadow, ()) {
   const BgRegion stock = barStock(40, 50, 0);
@@ -131,6 +155,31 @@ RC_GTEST_PROP(CutEnvelope, TheMaterialIsTheStockMinusEveryShadow, ()) {
       RC_ASSERT(distanceToBoundary(expected, p) < 1e-3);
     }
   }
+}
+
+// The material's top bounds the material left above a profile that is a graph over the cut axis
+// (thickestBeneath, which spares the completeness oracle its booleans): on random feeds over a bar
+// and a profile with a wall, a hollow (an arc) and a taper, the region left beyond the part
+// measures no thicker than the top, but for the region's noise (chords of the part's arc,
+// points the booleans round: µm).
+RC_GTEST_PROP(CutEnvelope, TheTopBoundsTheMaterialLeftAboveAGraphProfile, ()) {
+  const std::vector<Segment> profile = {line({0, 12}, {-10, 12}), line({-10, 12}, {-10, 14}),
+                                        {SegmentKind::ArcCW, {-10, 14}, {-20, 14}, {-15, 14}, 0},
+                                        line({-20, 14}, {-40, 16})};
+  MaterialModel model(barStock(40, 50, 0), kOuter, 100, 0.001);
+  const int feeds = *rc::gen::inRange(0, 8);
+  for (int i = 0; i < feeds; ++i) {
+    const Point a{-*rc::gen::inRange(0, 450) / 10.0, *rc::gen::inRange(90, 220) / 10.0};
+    const Point b{-*rc::gen::inRange(0, 450) / 10.0, *rc::gen::inRange(90, 220) / 10.0};
+    model.apply(line(a, b), MoveKind::Feed);
+  }
+  const BgRegion band = regionFrom({{-40, -100}, {-40, 100}, {0, 100}, {0, -100}});
+  const BgRegion left = checkedIntersection(without(model.remaining(), partRegionOf(profile, kOuter, 100, 0.001)), band);
+  const auto region = thickestAbove(left, profile, kOuter, 1e-6);
+  const auto top = thickestBeneath(model.topWithin(-40, 0), profile, kOuter, 1e-6);
+  if (!region) return;
+  RC_ASSERT(top.has_value());
+  RC_ASSERT(region->thickness <= top->thickness + 0.005);
 }
 
 }  // namespace

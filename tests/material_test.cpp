@@ -307,6 +307,32 @@ TEST(Material, ThickestAboveASingleLeftoverStep) {
   EXPECT_NEAR(thickestAbove(step, kRough, kOuter, 1e-6)->thickness, 2.5, 1e-5);
 }
 
+TEST(Material, ThickestAboveMeasuresAnArcExactly) {
+  // A hollow in the profile: the lower half of the circle about (z 0, x 10) of radius 5, from
+  // z −5 to z 5 through (0, 5). Material up to x 8 over it stands thickest where the hollow is
+  // deepest, 8 − 5 = 3 at z 0 — inside the arc, not at either end of it (where the arc meets x 10
+  // and the material stands beneath it): found where the arc's tangent is parallel to the top.
+  const Segment hollow = arc(SegmentKind::ArcCCW, {-5, 10}, {5, 10}, {0, 10});
+  ASSERT_NEAR(pointAt(hollow, 0.5).x, 5, 1e-12);
+  const BgRegion block = regionFrom({{-5, 4}, {-5, 8}, {5, 8}, {5, 4}});
+  const auto t = thickestAbove(block, {hollow}, kOuter, 1e-6);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(t->thickness, 3, 1e-9);
+  EXPECT_NEAR(t->where.z, 0, 1e-9);
+  EXPECT_NEAR(t->beneath.x, 5, 1e-9);
+  // The same measured on the top alone (thickestBeneath), and on a top sloping 1 in 10: 8 − z/10
+  // over the circle 10 − √(25 − z²) stands highest where the circle's slope is −1/10,
+  // z = −5 / √101, at 8 + 0.5/√101 − 10 + 5·10/√101 = √101/2 − 2 = 3.0249… (less the window's
+  // due: the circle there rises 0.1 per mm, and beneath is its highest within ± w ≈ 6e-6).
+  const auto flat = thickestBeneath({{-5, 8, 5, 8}}, {hollow}, kOuter, 1e-6);
+  ASSERT_TRUE(flat);
+  EXPECT_NEAR(flat->thickness, 3, 1e-9);
+  const auto sloped = thickestBeneath({{-5, 8.5, 5, 7.5}}, {hollow}, kOuter, 1e-6);
+  ASSERT_TRUE(sloped);
+  EXPECT_NEAR(sloped->thickness, std::sqrt(101.0) / 2 - 2, 1e-6);
+  EXPECT_NEAR(sloped->where.z, -5 / std::sqrt(101.0), 1e-9);
+}
+
 TEST(Material, ThickestAboveReplayedPassesIsTheDepthOfCut) {
   // The three passes of the type I test below (x = 18 to z = −30, 15.5 to −20, 13 to −15)
   // replayed on the implied stock of kG71Shape, without the semi-finish pass. Above the rough
@@ -404,9 +430,9 @@ TEST(Material, TypeIAlongAFilletLeavesOnlyTheAllowance) {
   // (−10, 15.5), where its tangent is parallel to x. Levels 18, 15.5, 13: 18 is never reached (cut
   // to −30); 15.5 first at the fillet's end (−10, 15.5); 13 on the fillet where
   // 15.5 − √(25 − (z + 5)²) = 13: z = −5 − √18.75 = −9.330127. The fillet is flattened alike in
-  // the stock, the semi-finish pass and the rough profile (the same arc, translated), so what
-  // remains is the band 0.5 thick along x: 32 × 0.5 = 16 again, and nothing stands above the rough
-  // profile.
+  // the stock and the semi-finish pass (the same arc, translated), so what remains is the band 0.5
+  // thick along x: 32 × 0.5 = 16 again. Above the exact rough profile stand only the slivers between
+  // the fillet and the pass's chords: no thicker than their sagitta, the chord tolerance 0.001.
   const std::vector<Segment> shape = {line({2, 20}, {2, 10}), line({2, 10}, {-5, 10}),
                                       arc(SegmentKind::ArcCW, {-5, 10}, {-10, 15}, {-5, 15}),
                                       line({-10, 15}, {-30, 15})};
@@ -442,7 +468,7 @@ TEST(Material, TypeIAlongAFilletLeavesOnlyTheAllowance) {
   }
   EXPECT_NEAR(model.area(), 16, 1e-5);
   const auto t = thickestAbove(model.remaining(), rough, kOuter, 0.001);
-  EXPECT_LE(t ? t->thickness : 0.0, 1e-6);
+  EXPECT_LE(t ? t->thickness : 0.0, 0.001);
 }
 
 // ---------------------------------------------------------------------------------------------

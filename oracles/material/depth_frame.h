@@ -4,6 +4,7 @@
 // away = (0, +1); boring: (0, −1); G72 facing: (±1, 0).
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "reference/model/geometry.h"
 
@@ -37,5 +38,10 @@ class DepthFrame {
   Point away_;
   Point along_;
 };
+
+// The segment cut into pieces that are each a graph over the frame's cut axis: an arc is cut at
+// the points where its tangent is parallel to `away` (where it turns back along the cut axis);
+// lines come back unchanged.
+std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame);
 
 }  // namespace cyclecert

@@ -20,13 +20,7 @@ namespace {
 using Box = bg::model::box<BgPoint>;
 using Interval = std::pair<double, double>;
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kShadowMargin = 1.0;  // mm: how far a model's shadows reach past the material
-
-double normalizedAngle(double a) {
-  a = std::fmod(a, kTwoPi);
-  return a < 0 ? a + kTwoPi : a;
-}
 
 // Narrows [t0, t1] to where alpha + beta·t lies in [lo, hi]; false when nothing is left.
 bool clipLinear(double alpha, double beta, double lo, double hi, double& t0, double& t1) {
@@ -36,34 +30,6 @@ bool clipLinear(double alpha, double beta, double lo, double hi, double& t0, dou
   t0 = std::max(t0, ta);
   t1 = std::min(t1, tb);
   return t0 <= t1;
-}
-
-// The arc cut into sub-arcs at the points where its tangent is parallel to `away` (where it turns
-// back along the cut axis), so that each sub-arc is a graph over the cut axis. Lines unchanged.
-std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame) {
-  if (!s.isArc() || s.radius() <= kGeomEps) return {s};
-  const double r = s.radius(), span = sweep(s);
-  const double start = std::atan2(s.from.x - s.center.x, s.from.z - s.center.z);
-  const double direction = span < 0 ? -1.0 : 1.0;
-  // The tangent is parallel to `away` where the radius is perpendicular to it.
-  const Point radial{frame.away().x, -frame.away().z};
-  std::vector<double> offsets;  // angles from `start`, along the arc
-  for (double sign : {-1.0, 1.0}) {
-    const double angle = std::atan2(sign * radial.x, sign * radial.z);
-    const double offset = normalizedAngle(direction * (angle - start));
-    if (offset > 1e-12 && offset < std::abs(span) - 1e-12) offsets.push_back(offset);
-  }
-  std::sort(offsets.begin(), offsets.end());
-  std::vector<Segment> pieces;
-  Point from = s.from;
-  for (double offset : offsets) {
-    const double a = start + direction * offset;
-    const Point at{s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)};
-    pieces.push_back({s.kind, from, at, s.center, s.sourceLine});
-    from = at;
-  }
-  pieces.push_back({s.kind, from, s.to, s.center, s.sourceLine});
-  return pieces;
 }
 
 // One piece of a move's shadow: a path that is a graph over the cut axis (a line, or a flattened
@@ -400,6 +366,25 @@ std::optional<double> MaterialModel::layerBound(const Segment& move) const {
     shallowest -= chordTolerance_;
   }
   return std::min(bound, *stockDeepest - shallowest);
+}
+
+std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {
+  std::vector<CutEnvelope::Piece> top;
+  const auto stockTop = deepestWithin(stock_, frame_, c0, c1);
+  if (!stockTop) return top;
+  const double cap = *stockTop;
+  cut_.walk(
+      c0, c1,
+      [&](const CutEnvelope::Piece& p) {
+        if (p.c1 <= p.c0) return;
+        if (p.d0 <= cap && p.d1 <= cap) return top.push_back(p);
+        if (p.d0 >= cap && p.d1 >= cap) return top.push_back({p.c0, cap, p.c1, cap});
+        const double c = p.c0 + (cap - p.d0) / (p.d1 - p.d0) * (p.c1 - p.c0);  // where it crosses the cap
+        top.push_back({p.c0, std::min(p.d0, cap), c, cap});
+        top.push_back({c, cap, p.c1, std::min(p.d1, cap)});
+      },
+      [&](double g0, double g1) { top.push_back({g0, cap, g1, cap}); });
+  return top;
 }
 
 BgRegion MaterialModel::removedBy(const Segment& move) const {

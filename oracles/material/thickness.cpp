@@ -11,12 +11,31 @@ namespace cyclecert {
 
 namespace {
 
-// A chord of the profile that advances along the cut axis, in frame coordinates (c0 < c1).
+// A piece of the profile that advances along the cut axis, in frame coordinates (c0 < c1): a line,
+// or an arc that is a graph over the cut axis (its upper or lower half, `side` +1 or −1, around
+// the centre (cc, dc)) — measured exactly, not flattened.
 struct ProfileStep {
   double c0, d0, c1, d1;
+  bool arc = false;
+  double cc = 0, dc = 0, radius = 0, side = 0;
+
   double depthAt(double c) const {
-    const double t = std::clamp((c - c0) / (c1 - c0), 0.0, 1.0);
-    return d0 + t * (d1 - d0);
+    c = std::clamp(c, c0, c1);
+    if (arc) return dc + side * std::sqrt(std::max(0.0, radius * radius - (c - cc) * (c - cc)));
+    return c1 > c0 ? d0 + (c - c0) / (c1 - c0) * (d1 - d0) : d0;
+  }
+  // Its lowest depth: at an end, or at the bottom of a lower half-circle.
+  double lowest() const {
+    const double ends = std::min(d0, d1);
+    return arc && side < 0 && cc > c0 && cc < c1 ? std::min(ends, dc - radius) : ends;
+  }
+  // Where an edge of slope `slope` stands highest above an arc (its tangent there has the same
+  // slope); nothing for a line, whose distance to an edge is largest at the overlap's ends.
+  std::optional<double> tangentTo(double slope) const {
+    if (!arc) return std::nullopt;
+    const double c = cc - side * slope * radius / std::sqrt(1 + slope * slope);
+    if (c <= c0 || c >= c1) return std::nullopt;
+    return c;
   }
 };
 
@@ -26,21 +45,13 @@ struct RegionEdge {
   double depthAt(double c) const { return d0 + (c - c0) / (c1 - c0) * (d1 - d0); }
 };
 
-// The flattened profile's chords that advance along the cut axis, sorted by c0, with the widest
-// one's length, to find those overlapping an interval quickly.
-class FlatProfile {
+// The profile's pieces that advance along the cut axis, sorted by c0, with the widest one's length,
+// to find those overlapping an interval quickly. Walls along the depth axis are left out.
+class ProfileSteps {
  public:
-  FlatProfile(const std::vector<Point>& points, const DepthFrame& frame) {
-    for (std::size_t i = 1; i < points.size(); ++i) {
-      double c0 = frame.cut(points[i - 1]), d0 = frame.depth(points[i - 1]);
-      double c1 = frame.cut(points[i]), d1 = frame.depth(points[i]);
-      if (std::abs(c1 - c0) <= kTidyDistance) continue;  // a wall along the depth axis
-      if (c0 > c1) {
-        std::swap(c0, c1);
-        std::swap(d0, d1);
-      }
-      steps_.push_back({c0, d0, c1, d1});
-      widest_ = std::max(widest_, c1 - c0);
+  ProfileSteps(const std::vector<Segment>& profile, const DepthFrame& frame) {
+    for (const Segment& segment : profile) {
+      for (const Segment& piece : splitWhereTangentIsAlong(segment, frame)) add(piece, frame);
     }
     std::sort(steps_.begin(), steps_.end(),
               [](const ProfileStep& a, const ProfileStep& b) { return a.c0 < b.c0; });
@@ -58,12 +69,31 @@ class FlatProfile {
   }
 
  private:
+  void add(const Segment& piece, const DepthFrame& frame) {
+    ProfileStep step{frame.cut(piece.from), frame.depth(piece.from), frame.cut(piece.to), frame.depth(piece.to)};
+    if (std::abs(step.c1 - step.c0) <= kTidyDistance) return;  // a wall along the depth axis
+    if (step.c0 > step.c1) {
+      std::swap(step.c0, step.c1);
+      std::swap(step.d0, step.d1);
+    }
+    if (piece.isArc() && piece.radius() > kGeomEps) {
+      step.arc = true;
+      step.cc = frame.cut(piece.center);
+      step.dc = frame.depth(piece.center);
+      step.radius = piece.radius();
+      step.side = frame.depth(pointAt(piece, 0.5)) >= step.dc ? 1.0 : -1.0;
+    }
+    steps_.push_back(step);
+    widest_ = std::max(widest_, step.c1 - step.c0);
+  }
+
   std::vector<ProfileStep> steps_;
   double widest_ = 0;
 };
 
-// The thickness of a region edge above the profile is piecewise linear between the ends of its
-// overlaps with the profile's steps, so it is largest at one of those ends. Only overlaps longer
+// The thickness of a region edge above a line of the profile is linear over their overlap, so it
+// is largest at one of the overlap's ends; above an arc, at an end or where the arc's tangent is
+// parallel to the edge. Only overlaps longer
 // than `resolution` count: a region touching the profile's span at a single cut coordinate
 // (material beside a shoulder, or beyond the profile's end) stands above nothing there.
 // Where the profile is steep, a point off by δ along the cut axis seems slope·δ thicker, and both
@@ -74,12 +104,14 @@ class FlatProfile {
 // not beneath.
 class ThicknessSearch {
  public:
-  ThicknessSearch(const FlatProfile& profile, const DepthFrame& frame, double resolution,
+  ThicknessSearch(const ProfileSteps& profile, const DepthFrame& frame, double resolution,
                   double window)
       : profile_(profile), frame_(frame), resolution_(resolution), window_(window) {}
 
-  void measureEdge(Point p, Point q) {
-    double c0 = frame_.cut(p), d0 = frame_.depth(p), c1 = frame_.cut(q), d1 = frame_.depth(q);
+  void measureEdge(Point p, Point q) { measureEdge(frame_.cut(p), frame_.depth(p), frame_.cut(q), frame_.depth(q)); }
+
+  // The same in frame coordinates.
+  void measureEdge(double c0, double d0, double c1, double d1) {
     if (std::abs(c1 - c0) <= kTidyDistance) return;  // along the depth axis: its ends are measured
     if (c0 > c1) {                                   // with the neighbouring edges
       std::swap(c0, c1);
@@ -91,7 +123,7 @@ class ThicknessSearch {
     double lowestStep = INFINITY;
     for (const ProfileStep* s : under_) {
       underWidest_ = std::max(underWidest_, s->c1 - s->c0);
-      lowestStep = std::min({lowestStep, s->d0, s->d1});
+      lowestStep = std::min(lowestStep, s->lowest());
     }
     // Bounds that decide without measuring (exactly: a point's thickness is its depth less the
     // depth of a step beneath it): an edge wholly beneath every step stands above none, and one
@@ -106,6 +138,9 @@ class ThicknessSearch {
       if (hi - lo > 2 * window_) {
         measureAt(edge, lo + window_);
         measureAt(edge, hi - window_);
+      }
+      if (const auto tangent = s->tangentTo((d1 - d0) / (c1 - c0)); tangent && *tangent > lo && *tangent < hi) {
+        measureAt(edge, *tangent);
       }
     }
   }
@@ -137,7 +172,7 @@ class ThicknessSearch {
     }
   }
 
-  const FlatProfile& profile_;
+  const ProfileSteps& profile_;
   const DepthFrame& frame_;
   double resolution_;
   double window_;
@@ -158,11 +193,9 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
                                       Point away, double chordTolerance) {
   if (region.empty() || profile.empty()) return std::nullopt;
   const DepthFrame frame(away);
-  std::vector<Point> points;
-  for (const Segment& s : profile) appendFlattened(points, s, chordTolerance);
-  const FlatProfile flat(points, frame);
+  const ProfileSteps steps(profile, frame);
   const double resolution = std::max(kTidyDistance, 4 * kBooleanResolution * sizeOf(region));
-  ThicknessSearch search(flat, frame, resolution, 2 * chordTolerance + resolution);
+  ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution);
   auto visitRing = [&search](const BgPolygon::ring_type& ring) {
     for (std::size_t i = 1; i < ring.size(); ++i) {
       search.measureEdge(fromBg(ring[i - 1]), fromBg(ring[i]));
@@ -172,6 +205,24 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
     visitRing(polygon.outer());
     for (const auto& hole : polygon.inners()) visitRing(hole);
   }
+  return search.best();
+}
+
+std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile,
+                                        Point away, double chordTolerance) {
+  if (top.empty() || profile.empty()) return std::nullopt;
+  const DepthFrame frame(away);
+  const ProfileSteps steps(profile, frame);
+  double cMin = INFINITY, cMax = -INFINITY, dMin = INFINITY, dMax = -INFINITY;
+  for (const CutEnvelope::Piece& p : top) {
+    cMin = std::min(cMin, p.c0);
+    cMax = std::max(cMax, p.c1);
+    dMin = std::min({dMin, p.d0, p.d1});
+    dMax = std::max({dMax, p.d0, p.d1});
+  }
+  const double resolution = std::max(kTidyDistance, 4 * kBooleanResolution * std::max(cMax - cMin, dMax - dMin));
+  ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution);
+  for (const CutEnvelope::Piece& p : top) search.measureEdge(p.c0, p.d0, p.c1, p.d1);
   return search.best();
 }
 
