@@ -45,34 +45,19 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
   return checkedIntersection(without(r.remaining(), r.part), band);
 }
 
-// Whether the target is a graph over the cut axis: it never turns back along it (walls along the
-// depth axis allowed).
-bool isGraphOverCutAxis(const std::vector<Segment>& target, Point away) {
-  const DepthFrame frame(away);
-  int direction = 0;
-  for (const Segment& s : target) {
-    for (const Segment& piece : splitWhereTangentIsAlong(s, frame)) {
-      const double advance = frame.cut(piece.to) - frame.cut(piece.from);
-      if (std::abs(advance) <= kTidyDistance) continue;
-      const int sign = advance > 0 ? 1 : -1;
-      if (direction != 0 && sign != direction) return false;
-      direction = sign;
-    }
-  }
-  return true;
-}
-
 // Whether the material left may stand thicker than `allowed` above the target. Where the target is
 // a graph over the cut axis, the material's top over the span (the feeds' envelope, capped by the
 // stock) measured against the exact target (thickness.h, thickestBeneath) answers without a
-// boolean: the material left stands nowhere higher. That measure is also free of the region's
-// noise — chords of the part's arcs, points the booleans round — which reads up to a few µm
-// thicker; so it decides a pass, and the region left confirms a finding (without its skins).
+// boolean: the material left stands nowhere higher. The profile beneath a point is taken within
+// ± the tolerance along the cut axis, as the region's measure leaves out skins narrower than that
+// (withoutSkins): the chords of a pass along an arc stray that far sideways, which next to a steep
+// tangent reads as thickness along the depth axis. So the top decides a pass, and the region left
+// confirms a finding.
 bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance) {
-  if (!isGraphOverCutAxis(r.target, r.away)) return true;
+  if (!isGraphOverCutAxis(r.target, DepthFrame(r.away))) return true;
   const auto span = targetSpan(r, tolerance);
   if (!span) return false;
-  const auto top = thickestBeneath(r.model->topWithin(span->first, span->second), r.target, r.away, kMeasuringChord);
+  const auto top = thickestBeneath(r.model->topWithin(span->first, span->second), r.target, r.away, tolerance / 2);
   return top && top->thickness > allowed;
 }
 

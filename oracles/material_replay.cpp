@@ -137,10 +137,15 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   const Point away = model.away();
   const double tolerance = settings.tolerance();
   const double allowed = c.depthOfCut + tolerance;
-  // Most passes provably remove no more than Δd: a bound spares measuring them (and making the
-  // material left).
-  const auto bound = model.layerBound(move);
-  if (!bound || *bound <= allowed) return std::nullopt;
+  // Most passes provably remove no more than Δd: the material's top over the move, measured
+  // against it, bounds the layer (thickness.h, thickestBeneath) and spares making the material left
+  // (within ± the tolerance along the cut axis, as skins narrower than that are no layer below).
+  const DepthFrame frame(away);
+  if (isGraphOverCutAxis({move}, frame)) {
+    const double a = frame.cut(move.from), b = frame.cut(move.to);
+    const auto top = thickestBeneath(model.topWithin(std::min(a, b), std::max(a, b)), {move}, away, tolerance / 2);
+    if (!top || top->thickness <= allowed) return std::nullopt;
+  }
   const BgRegion layer = touching(model.remaining(), move, tolerance);
   if (layer.empty()) return std::nullopt;
   auto thickest = thickestAbove(layer, {move}, away, kMeasuringChord);

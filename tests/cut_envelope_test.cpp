@@ -92,19 +92,24 @@ TEST(CutEnvelope, BelowIsTheBoxUnderTheEnvelope) {
   EXPECT_TRUE(bg::within(toBg({-2, 19}), below));  // beside the feed the box stands full
 }
 
-TEST(CutEnvelope, TheModelsLayerBoundHoldsTheLayerItMeasures) {
-  // A first pass 2 mm into a bar of radius 20: the layer it removes is 2 mm thick, and the bound
-  // (stock and envelope, before any feed) says so; a second pass 2 mm lower is bounded by the
-  // first pass's envelope.
+TEST(CutEnvelope, TheModelsTopBoundsTheLayerAFeedRemoves) {
+  // A first pass 2 mm into a bar of radius 20: the layer it removes is 2 mm thick, and the top
+  // (the stock's, before any feed) measured against the pass says so; a second pass 2 mm lower
+  // stands 2 below the first pass's envelope. How the depth-per-pass oracle spares measuring the
+  // material left (material_replay.cpp).
   MaterialModel model(barStock(40, 50, 0), kOuter, 100, 0.001);
+  const auto layer = [&](const Segment& move) {
+    const double c0 = std::min(move.from.z, move.to.z), c1 = std::max(move.from.z, move.to.z);
+    return thickestBeneath(model.topWithin(c0, c1), {move}, kOuter, 1e-6);
+  };
   const Segment first = line({2, 18}, {-30, 18});
-  EXPECT_NEAR(*model.layerBound(first), 2, 1e-12);
+  EXPECT_NEAR(layer(first)->thickness, 2, 1e-12);
   model.apply(first, MoveKind::Feed);
-  EXPECT_NEAR(*model.layerBound(line({2, 16}, {-30, 16})), 2, 1e-12);
-  // Where no feed has been beyond z −30, the stock bounds it: 20 − 16.
-  EXPECT_NEAR(*model.layerBound(line({2, 16}, {-40, 16})), 4, 1e-12);
+  EXPECT_NEAR(layer(line({2, 16}, {-30, 16}))->thickness, 2, 1e-12);
+  // Where no feed has been beyond z −30, the stock's top: 20 − 16.
+  EXPECT_NEAR(layer(line({2, 16}, {-40, 16}))->thickness, 4, 1e-12);
   // A move along the depth axis is beneath nothing.
-  EXPECT_FALSE(model.layerBound(line({-35, 19}, {-35, 10})).has_value());
+  EXPECT_FALSE(layer(line({-35, 19}, {-35, 10})).has_value());
 }
 
 TEST(CutEnvelope, TheModelsTopIsTheEnvelopeCappedByTheStock) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "oracles/material/region.h"
+
 namespace cyclecert {
 
 namespace {
@@ -39,6 +41,20 @@ std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame
   }
   pieces.push_back({s.kind, from, s.to, s.center, s.sourceLine});
   return pieces;
+}
+
+bool isGraphOverCutAxis(const std::vector<Segment>& path, const DepthFrame& frame) {
+  int direction = 0;
+  for (const Segment& s : path) {
+    for (const Segment& piece : splitWhereTangentIsAlong(s, frame)) {
+      const double advance = frame.cut(piece.to) - frame.cut(piece.from);
+      if (std::abs(advance) <= kTidyDistance) continue;  // a wall
+      const int sign = advance > 0 ? 1 : -1;
+      if (direction != 0 && sign != direction) return false;
+      direction = sign;
+    }
+  }
+  return true;
 }
 
 }  // namespace cyclecert

@@ -44,4 +44,8 @@ class DepthFrame {
 // lines come back unchanged.
 std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame);
 
+// Whether the path is a graph over the cut axis: it never turns back along it (walls along the
+// depth axis allowed).
+bool isGraphOverCutAxis(const std::vector<Segment>& path, const DepthFrame& frame);
+
 }  // namespace cyclecert

@@ -325,49 +325,6 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
                         chordTolerance_);
 }
 
-std::optional<double> MaterialModel::layerBound(const Segment& move) const {
-  // The material stands at most up to the envelope where feeds have been and up to the stock's
-  // deepest point elsewhere; the layer's thickness is at most its height above the move there.
-  // Both are linear over each overlap of a chord of the move with a piece of the envelope (or a
-  // gap), so their ends bound it. Measured against the move's chords: their vertices lie on the
-  // move, so they come at most chordTolerance nearer the part than an arc.
-  const std::vector<Point> path = flatten(move, chordTolerance_);
-  double spanStart = INFINITY, spanEnd = -INFINITY, shallowest = INFINITY;
-  for (Point p : path) {
-    spanStart = std::min(spanStart, frame_.cut(p));
-    spanEnd = std::max(spanEnd, frame_.cut(p));
-    shallowest = std::min(shallowest, frame_.depth(p));
-  }
-  const auto stockDeepest = deepestWithin(stock_, frame_, spanStart, spanEnd);
-  if (!stockDeepest) return std::nullopt;
-  double bound = -INFINITY;
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    double a = frame_.cut(path[i - 1]), da = frame_.depth(path[i - 1]), b = frame_.cut(path[i]), db = frame_.depth(path[i]);
-    if (a > b) {
-      std::swap(a, b);
-      std::swap(da, db);
-    }
-    if (b - a <= kTidyDistance) continue;  // along the depth axis: beneath nothing (thickness.h)
-    const CutEnvelope::Piece chord{a, da, b, db};
-    cut_.walk(
-        a, b,
-        [&](const CutEnvelope::Piece& p) {
-          for (double x : {p.c0, p.c1}) bound = std::max(bound, p.depthAt(x) - chord.depthAt(x));
-        },
-        [&](double g0, double g1) {
-          if (const auto deepest = deepestWithin(stock_, frame_, g0, g1)) {
-            bound = std::max(bound, *deepest - std::min(chord.depthAt(g0), chord.depthAt(g1)));
-          }
-        });
-  }
-  if (bound == -INFINITY) return std::nullopt;  // the move runs along the depth axis only
-  if (move.isArc()) {
-    bound += chordTolerance_;
-    shallowest -= chordTolerance_;
-  }
-  return std::min(bound, *stockDeepest - shallowest);
-}
-
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {
   std::vector<CutEnvelope::Piece> top;
   const auto stockTop = deepestWithin(stock_, frame_, c0, c1);

@@ -61,13 +61,6 @@ class MaterialModel {
   // ε inside the material exactly when it is ε inside the stock and ε below the envelope.
   Crossing crossing(const Segment& move, double epsilon) const;
 
-  // An upper bound of thickestAbove(remaining(), {move}, away, ·) (thickness.h), without making
-  // remaining(): how high above the move the material can stand — up to the envelope where feeds
-  // have been, up to the stock's deepest point over the gaps — and never more than the stock's
-  // deepest point over the move's span less the move's shallowest point. Nothing when no stock
-  // stands over the span or the move runs along the depth axis only (it is beneath nothing).
-  std::optional<double> layerBound(const Segment& move) const;
-
   // A top of the material over the cut coordinates [c0, c1], in frame coordinates: the envelope
   // where feeds have been, capped by the stock's deepest point over [c0, c1], and that point over
   // the gaps. Every point of remaining() there stands at or below it (exactly the material's top

@@ -235,9 +235,12 @@ std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& fr
       std::swap(a, b);
       std::swap(da, db);
     }
-    if (b < c0 || a > c1) return;
+    const double lo = std::max(a, c0), hi = std::min(b, c1);
+    if (hi < lo) return;
+    // A wall standing at an end of the range stands over none of it.
+    if (hi - lo <= kTidyDistance && c1 - c0 > kTidyDistance) return;
     const auto depthAt = [&](double c) { return b - a > 0 ? da + (c - a) / (b - a) * (db - da) : std::max(da, db); };
-    const double top = std::max(depthAt(std::max(a, c0)), depthAt(std::min(b, c1)));
+    const double top = std::max(depthAt(lo), depthAt(hi));
     if (!deepest || top > *deepest) deepest = top;
   };
   const auto visitRing = [&](const BgPolygon::ring_type& ring) {
