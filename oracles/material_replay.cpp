@@ -188,6 +188,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
   const std::vector<Segment> profile(r.target.begin() + (c->typeII ? 0 : 1), r.target.end());
   r.part = partRegionOf(profile, r.away, r.reach, in.settings.chordTolerance);
+  r.partForCrossing = CrossingRegion(r.part);
 
   MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
   const double tolerance = in.settings.tolerance();

@@ -24,6 +24,7 @@ struct MaterialReplay {
   std::vector<Segment> target;       // the surface roughing must leave: the rough profile, or the
                                      // finish shape when a G70 follows
   BgRegion part;                     // everything beyond `target`: no move may enter it
+  CrossingRegion partForCrossing;    // the same, prepared for no-gouge's crossing tests
   std::vector<Crossing> rapidCrossings;                   // per move: material a rapid crosses (empty for feeds)
   // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
   // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).

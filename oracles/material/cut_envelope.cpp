@@ -103,6 +103,11 @@ bool CutEnvelope::lowerPiece(const Piece& fresh) {
 }
 
 BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const {
+  return regionFromSimpleOutline(belowOutline(frame, cMin, cMax, dBottom, dTop));
+}
+
+std::vector<Point> CutEnvelope::belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom,
+                                             double dTop) const {
   std::vector<std::pair<double, double>> top;  // (cut, depth) from cMin to cMax
   const auto at = [&](double c, double d) { top.push_back({c, std::clamp(d, dBottom, dTop)}); };
   walk(
@@ -125,7 +130,7 @@ BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, d
   for (const auto& [c, d] : top) outline.push_back(world(c, d));
   outline.push_back(world(cMax, dBottom));
   outline.push_back(world(cMin, dBottom));
-  return regionFromSimpleOutline(outline);  // a graph over the cut axis above a flat bottom
+  return outline;
 }
 
 }  // namespace cyclecert

@@ -38,6 +38,8 @@ class CutEnvelope {
   // [dBottom, dTop] of the frame, as a region of the plane: the box itself where no feed has been.
   // The box must hold the stock; depths beyond it are clipped to it.
   BgRegion below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
+  // That region's outline (a graph over the cut axis above a flat bottom, not crossing itself).
+  std::vector<Point> belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
 
  private:
   bool lowerPiece(const Piece& fresh);

@@ -152,29 +152,17 @@ std::vector<Interval> gapsBetween(std::vector<Interval>& intervals) {
   return gaps;
 }
 
-template <typename Visit>
-void forEachEdge(const BgRegion& region, Visit visit) {
-  auto ringEdges = [&visit](const BgPolygon::ring_type& ring) {
-    for (std::size_t i = 1; i < ring.size(); ++i) visit(fromBg(ring[i - 1]), fromBg(ring[i]));
-  };
-  for (const BgPolygon& polygon : region) {
-    ringEdges(polygon.outer());
-    for (const auto& hole : polygon.inners()) ringEdges(hole);
-  }
-}
-
 // The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region. Away from
 // every edge's ε-capsule the chord cannot cross the boundary, so each gap between the near
 // intervals lies wholly inside or wholly outside: its midpoint decides.
-std::vector<Interval> insideIntervals(const BgRegion& region, const Box& envelope, const Chord& chord, double epsilon,
+std::vector<Interval> insideIntervals(const CrossingRegion& region, const Chord& chord, double epsilon,
                                       std::vector<Interval>& near) {
   std::vector<Interval> inside;
-  const Box chordBox{{chord.zMin, chord.xMin}, {chord.zMax, chord.xMax}};
-  if (region.empty() || bg::disjoint(chordBox, envelope)) return inside;
+  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax)) return inside;
   near.clear();
-  forEachEdge(region, [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
+  region.forEachEdge([&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
   for (const Interval& gap : gapsBetween(near)) {
-    if (bg::within(toBg(chord.at(0.5 * (gap.first + gap.second))), region)) inside.push_back(gap);
+    if (region.contains(chord.at(0.5 * (gap.first + gap.second)))) inside.push_back(gap);
   }
   return inside;
 }
@@ -190,15 +178,9 @@ std::vector<Interval> common(const std::vector<Interval>& a, const std::vector<I
   return out;
 }
 
-// A region with its envelope, for the crossing tests.
-struct BoxedRegion {
-  const BgRegion& region;
-  Box envelope;
-};
-
 // The pieces of `move` deeper than ε inside every one of the regions (inside their intersection:
 // a point is ε inside an intersection exactly when it is ε inside each).
-Crossing crossingWithin(const std::vector<BoxedRegion>& regions, const Segment& move, double epsilon,
+Crossing crossingWithin(const std::vector<const CrossingRegion*>& regions, const Segment& move, double epsilon,
                         double chordTolerance) {
   Crossing crossing;
   if (regions.empty()) return crossing;
@@ -208,9 +190,9 @@ Crossing crossingWithin(const std::vector<BoxedRegion>& regions, const Segment& 
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Chord chord(points[i - 1], points[i]);
     if (chord.length <= kGeomEps) continue;
-    std::vector<Interval> inside = insideIntervals(regions.front().region, regions.front().envelope, chord, epsilon, near);
+    std::vector<Interval> inside = insideIntervals(*regions.front(), chord, epsilon, near);
     for (std::size_t k = 1; k < regions.size() && !inside.empty(); ++k) {
-      inside = common(inside, insideIntervals(regions[k].region, regions[k].envelope, chord, epsilon, near));
+      inside = common(inside, insideIntervals(*regions[k], chord, epsilon, near));
     }
     for (const Interval& piece : inside) {
       crossing.pieces.push_back({SegmentKind::Line, chord.at(piece.first), chord.at(piece.second), {}, 0});
@@ -240,13 +222,40 @@ BgRegion shadowOf(const Segment& move, Point away, double reach, double chordTol
   return unionOf(polygons);
 }
 
+CrossingRegion::CrossingRegion(const BgRegion& region) : CrossingRegion(outlinesOf(region)) {}
+
+CrossingRegion::CrossingRegion(std::vector<std::vector<Point>> rings) : rings_(std::move(rings)) {
+  for (const auto& ring : rings_) {
+    for (Point p : ring) {
+      zMin_ = std::min(zMin_, p.z);
+      zMax_ = std::max(zMax_, p.z);
+      xMin_ = std::min(xMin_, p.x);
+      xMax_ = std::max(xMax_, p.x);
+    }
+  }
+}
+
+bool CrossingRegion::contains(Point p) const {
+  if (!mayMeet(p.z, p.z, p.x, p.x)) return false;
+  bool inside = false;
+  forEachEdge([&](Point a, Point b) {
+    // Even-odd: count the edges a ray from p towards +z crosses.
+    if ((a.x > p.x) != (b.x > p.x) && p.z < a.z + (p.x - a.x) / (b.x - a.x) * (b.z - a.z)) inside = !inside;
+  });
+  return inside;
+}
+
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance) {
-  return crossingWithin({{region, envelopeOf(region)}}, move, epsilon, chordTolerance);
+  return crossingOf(CrossingRegion(region), move, epsilon, chordTolerance);
+}
+
+Crossing crossingOf(const CrossingRegion& region, const Segment& move, double epsilon, double chordTolerance) {
+  return crossingWithin({&region}, move, epsilon, chordTolerance);
 }
 
 MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance)
-    : stock_(std::move(stock)), frame_(away), reach_(reach), chordTolerance_(chordTolerance) {
+    : stock_(std::move(stock)), stockForCrossing_(stock_), frame_(away), reach_(reach), chordTolerance_(chordTolerance) {
   if (!(reach > 0) || !(chordTolerance > 0)) {
     throw std::invalid_argument("the material model needs a positive reach and chord tolerance");
   }
@@ -260,7 +269,8 @@ void MaterialModel::apply(const Segment& move, MoveKind kind) {
     lowered = cut_.lower(flatten(part, chordTolerance_), frame_) || lowered;
   }
   if (lowered) {
-    below_.reset();
+    belowOutline_.reset();
+    belowForCrossing_.reset();
     remaining_.reset();
   }
 }
@@ -289,14 +299,12 @@ MaterialModel::FrameBox MaterialModel::frameBox() const {
   return box;
 }
 
-const MaterialModel::Below& MaterialModel::belowCuts() const {
-  if (!below_) {
+const std::vector<Point>& MaterialModel::belowOutline() const {
+  if (!belowOutline_) {
     const FrameBox box = frameBox();
-    BgRegion region = cut_.below(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
-    const Box envelope = envelopeOf(region);
-    below_ = Below{std::move(region), envelope};
+    belowOutline_ = cut_.belowOutline(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
   }
-  return *below_;
+  return *belowOutline_;
 }
 
 const BgRegion& MaterialModel::remaining() const {
@@ -305,9 +313,10 @@ const BgRegion& MaterialModel::remaining() const {
     remaining_ = stock_;
     return *remaining_;
   }
-  BgRegion rest = checkedIntersection(stock_, belowCuts().region);
+  const BgRegion below = regionFromSimpleOutline(belowOutline());
+  BgRegion rest = checkedIntersection(stock_, below);
   Box operands = stockEnvelope_;
-  bg::expand(operands, belowCuts().envelope);
+  bg::expand(operands, envelopeOf(below));
   const double size = std::max(operands.max_corner().x() - operands.min_corner().x(),
                                operands.max_corner().y() - operands.min_corner().y());
   tidy(rest, size);
@@ -320,9 +329,9 @@ double MaterialModel::area() const { return bg::area(remaining()); }
 
 Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
   if (stock_.empty()) return {};
-  if (cut_.empty()) return crossingWithin({{stock_, stockEnvelope_}}, move, epsilon, chordTolerance_);
-  return crossingWithin({{stock_, stockEnvelope_}, {belowCuts().region, belowCuts().envelope}}, move, epsilon,
-                        chordTolerance_);
+  if (cut_.empty()) return crossingWithin({&stockForCrossing_}, move, epsilon, chordTolerance_);
+  if (!belowForCrossing_) belowForCrossing_ = CrossingRegion({belowOutline()});
+  return crossingWithin({&stockForCrossing_, &*belowForCrossing_}, move, epsilon, chordTolerance_);
 }
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {

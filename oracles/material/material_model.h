@@ -3,6 +3,7 @@
 // A feed removes its shadow — the region the ray from the tool point along `away` (towards the
 // cycle start side, away from the part) sweeps over `reach` mm as the tool point moves; a rapid
 // removes nothing (a rapid through material is a crash, which `crossing` measures, not a cut).
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,32 @@ struct Crossing {
   std::vector<Segment> pieces;  // lines, in move order (pieces of chords for an arc)
 };
 
+// A region prepared for many crossing tests: its closed rings as plain points, and its box. A point
+// is inside by the even-odd rule over every ring (outer rings and holes alike).
+class CrossingRegion {
+ public:
+  CrossingRegion() = default;  // empty
+  explicit CrossingRegion(const BgRegion& region);
+  explicit CrossingRegion(std::vector<std::vector<Point>> rings);  // closed implicitly
+
+  bool empty() const { return rings_.empty(); }
+  // Whether the box [zMin, zMax] × [xMin, xMax] meets the region's box.
+  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
+    return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
+  }
+  bool contains(Point p) const;
+  template <typename Visit>
+  void forEachEdge(Visit visit) const {
+    for (const auto& ring : rings_) {
+      for (std::size_t i = 0; i < ring.size(); ++i) visit(ring[i], ring[(i + 1) % ring.size()]);
+    }
+  }
+
+ private:
+  std::vector<std::vector<Point>> rings_;
+  double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
+};
+
 // The pieces of `move` (arcs flattened within chordTolerance) that lie in `region` at a distance of
 // more than `epsilon` from its boundary — i.e. in the region eroded by a disk of radius epsilon,
 // computed exactly rather than through a buffer — so that touching or grazing the region within
@@ -38,6 +65,8 @@ struct Crossing {
 // edges) plain arithmetic, no Boost boolean.
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance);
+// The same for a region prepared once for many moves.
+Crossing crossingOf(const CrossingRegion& region, const Segment& move, double epsilon, double chordTolerance);
 
 // The model keeps the stock as it is and, for what the feeds removed, the envelope of their paths
 // (cut_envelope.h): every shadow removes all beyond its move, so the feeds together remove all
@@ -80,22 +109,20 @@ class MaterialModel {
     double cMin, cMax, dBottom, dTop;
   };
 
-  struct Below {
-    BgRegion region;
-    Box envelope;
-  };
-
   FrameBox inFrame(const Box& box) const;  // the box's ranges along the cut and depth axes
   FrameBox frameBox() const;
-  const Below& belowCuts() const;  // the region below the envelope, within frameBox()
+  // The outline of the region below the envelope, within frameBox() (CutEnvelope::belowOutline).
+  const std::vector<Point>& belowOutline() const;
 
   BgRegion stock_;
+  CrossingRegion stockForCrossing_;
   Box stockEnvelope_;
   DepthFrame frame_;
   double reach_;
   double chordTolerance_;
   CutEnvelope cut_;
-  mutable std::optional<Below> below_;         // made when first needed after a feed
+  mutable std::optional<std::vector<Point>> belowOutline_;  // made when first needed after a feed
+  mutable std::optional<CrossingRegion> belowForCrossing_;  // likewise
   mutable std::optional<BgRegion> remaining_;  // likewise
 };
 
