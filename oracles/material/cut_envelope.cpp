@@ -48,7 +48,8 @@ double CutEnvelope::Piece::depthAt(double c) const {
 }
 
 bool CutEnvelope::lower(const std::vector<Point>& path, const DepthFrame& frame) {
-  bool lowered = false;
+  std::vector<Piece> fresh;  // the path's chords, left to right (a graph's chords do not overlap)
+  fresh.reserve(path.size());
   for (std::size_t i = 1; i < path.size(); ++i) {
     double c0 = frame.cut(path[i - 1]), d0 = frame.depth(path[i - 1]);
     double c1 = frame.cut(path[i]), d1 = frame.depth(path[i]);
@@ -57,37 +58,43 @@ bool CutEnvelope::lower(const std::vector<Point>& path, const DepthFrame& frame)
       std::swap(c0, c1);
       std::swap(d0, d1);
     }
-    lowered = lowerPiece({c0, d0, c1, d1}) || lowered;
+    fresh.push_back({c0, d0, c1, d1});
   }
-  return lowered;
+  if (fresh.empty()) return false;
+  if (fresh.size() > 1 && fresh.front().c0 > fresh.back().c0) std::reverse(fresh.begin(), fresh.end());
+  return lowerTo(fresh);
 }
 
-// Merges a new piece into the sorted, disjoint pieces: kept as it is where no piece lies beneath
-// it, the lower of the two where one does.
-bool CutEnvelope::lowerPiece(const Piece& fresh) {
+// Merges the path's pieces into the envelope's in one sweep over the stretches where either list
+// has a piece: the old piece where no new one lies, the new one where no old one does (no feed was
+// there yet), the lower of the two where both do.
+bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
   bool lowered = false;
   std::vector<Piece> out;
-  out.reserve(pieces_.size() + 3);
-  std::size_t i = 0;
-  for (; i < pieces_.size() && pieces_[i].c1 <= fresh.c0; ++i) out.push_back(pieces_[i]);
-  double covered = fresh.c0;  // fresh is merged up to here
-  for (; i < pieces_.size() && pieces_[i].c0 < fresh.c1; ++i) {
-    const Piece& old = pieces_[i];
-    if (old.c0 < fresh.c0) push(out, part(old, old.c0, fresh.c0));
-    const double a = std::max(old.c0, fresh.c0), b = std::min(old.c1, fresh.c1);
-    if (a - covered > kTidyDistance) {
-      push(out, part(fresh, covered, a));  // no feed there yet
-      lowered = true;
+  out.reserve(pieces_.size() + 2 * fresh.size() + 2);
+  std::size_t i = 0, j = 0;
+  double merged = -INFINITY;  // everything left of here is in `out`
+  while (i < pieces_.size() || j < fresh.size()) {
+    const Piece* old = i < pieces_.size() ? &pieces_[i] : nullptr;
+    const Piece* now = j < fresh.size() ? &fresh[j] : nullptr;
+    const double oldStart = old ? std::max(old->c0, merged) : INFINITY;
+    const double nowStart = now ? std::max(now->c0, merged) : INFINITY;
+    const double start = std::min(oldStart, nowStart);
+    const bool inOld = old && oldStart <= start, inNow = now && nowStart <= start;
+    // The stretch ends where a piece over it ends or the next piece begins.
+    const double end = std::min(old ? (inOld ? old->c1 : old->c0) : INFINITY, now ? (inNow ? now->c1 : now->c0) : INFINITY);
+    if (inOld && inNow) {
+      pushLower(out, *old, *now, start, end, lowered);
+    } else if (inOld) {
+      push(out, part(*old, start, end));
+    } else {
+      push(out, part(*now, start, end));
+      lowered = lowered || end - start > kTidyDistance;
     }
-    pushLower(out, old, fresh, a, b, lowered);
-    covered = b;
-    if (old.c1 > fresh.c1) push(out, part(old, fresh.c1, old.c1));
+    merged = end;
+    if (old && old->c1 <= merged) ++i;
+    if (now && now->c1 <= merged) ++j;
   }
-  if (fresh.c1 - covered > kTidyDistance) {
-    push(out, part(fresh, covered, fresh.c1));
-    lowered = true;
-  }
-  for (; i < pieces_.size(); ++i) out.push_back(pieces_[i]);
   // Collinear neighbours become one piece, so that the envelope grows with the feeds' shape, not
   // with their number.
   pieces_.clear();

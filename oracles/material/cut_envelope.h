@@ -42,7 +42,7 @@ class CutEnvelope {
   std::vector<Point> belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
 
  private:
-  bool lowerPiece(const Piece& fresh);
+  bool lowerTo(const std::vector<Piece>& fresh);  // sorted, disjoint
   std::vector<Piece> pieces_;
 };
 

@@ -30,10 +30,8 @@ std::optional<double> offsetAlongArc(const Segment& s, double a) {
 }
 }  // namespace
 
-Point operator+(Point a, Point b) { return {a.z + b.z, a.x + b.x}; }
-Point operator-(Point a, Point b) { return {a.z - b.z, a.x - b.x}; }
-Point operator*(double k, Point a) { return {k * a.z, k * a.x}; }
-double distance(Point a, Point b) { return std::hypot(a.z - b.z, a.x - b.x); }
+// Coordinates are millimetres: no overflow for std::hypot to guard against, and it is slow.
+double distance(Point a, Point b) { return std::sqrt((a.z - b.z) * (a.z - b.z) + (a.x - b.x) * (a.x - b.x)); }
 bool nearlyEqual(Point a, Point b, double tol) {
   return std::abs(a.z - b.z) <= tol && std::abs(a.x - b.x) <= tol;
 }

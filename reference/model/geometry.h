@@ -16,9 +16,9 @@ struct Point {
   double x = 0;
   friend bool operator==(const Point&, const Point&) = default;
 };
-Point operator+(Point a, Point b);
-Point operator-(Point a, Point b);
-Point operator*(double k, Point a);
+inline Point operator+(Point a, Point b) { return {a.z + b.z, a.x + b.x}; }
+inline Point operator-(Point a, Point b) { return {a.z - b.z, a.x - b.x}; }
+inline Point operator*(double k, Point a) { return {k * a.z, k * a.x}; }
 double distance(Point a, Point b);
 bool nearlyEqual(Point a, Point b, double tol = kGeomEps);
 
