@@ -1,6 +1,7 @@
 #include "oracles/material_replay.h"
 
 #include <algorithm>
+#include <numbers>
 
 #include "oracles/material/boost_geometry.h"
 #include "reference/model/offset.h"
@@ -42,12 +43,38 @@ BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double re
   const double bottom = deepest - reach;
   outline.push_back(frame.atDepth(profile.back().to, bottom));
   outline.push_back(frame.atDepth(profile.front().from, bottom));
+  // A graph over the cut axis closes into a simple outline: Boost's validity check, which costs
+  // more than the rest, is not needed.
+  if (isGraphOverCutAxis(profile, frame)) return regionFromSimpleOutline(outline);
   try {
     return regionFrom(outline);
   } catch (const std::invalid_argument&) {
     return partRegion(profile, away, reach, chordTolerance);  // a profile crossing itself: the union of its chords' regions
   }
 }
+
+namespace {
+
+// The shallowest depth the path reaches between its two ends: a vertex, or the top of an arc that
+// passes its highest point (where its radius points along `away`).
+double highestBetweenEnds(const std::vector<Segment>& path, const DepthFrame& frame) {
+  double highest = -INFINITY;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const Segment& s = path[i];
+    if (i > 0) highest = std::max(highest, frame.depth(s.from));
+    if (i + 1 < path.size()) highest = std::max(highest, frame.depth(s.to));
+    if (!s.isArc()) continue;
+    const double start = std::atan2(s.from.x - s.center.x, s.from.z - s.center.z);
+    const double top = std::atan2(frame.away().x, frame.away().z);
+    const double span = sweep(s);
+    double offset = std::fmod((span < 0 ? -1 : 1) * (top - start), 2 * std::numbers::pi);
+    if (offset < 0) offset += 2 * std::numbers::pi;
+    if (offset < std::abs(span)) highest = std::max(highest, frame.depth(s.center) + s.radius());
+  }
+  return highest;
+}
+
+}  // namespace
 
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
   const DepthFrame frame(away);
@@ -60,6 +87,16 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
     }
   }
   if (!(hi > lo)) return {};
+  // A shape that is a graph over the cut axis and stands below the start level between its ends
+  // (A stands on it; C may) bounds the stock itself: the shape, up to the level at its end and back
+  // along it — the band minus the part, without a boolean.
+  if (isGraphOverCutAxis(c.shape, frame) && highestBetweenEnds(c.shape, frame) < level - kTidyDistance) {
+    std::vector<Point> outline;
+    for (const Segment& s : c.shape) appendFlattened(outline, s, chordTolerance);
+    outline.push_back(frame.atDepth(c.shape.back().to, level));
+    outline.push_back(frame.atDepth(c.shape.front().from, level));
+    return regionFromSimpleOutline(outline);
+  }
   const Point along{away.x, -away.z};
   const Point unitAway = frame.away();
   const auto corner = [&](double cut, double depth) { return cut * along + depth * unitAway; };

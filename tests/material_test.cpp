@@ -9,6 +9,7 @@
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/material/material.h"
+#include "oracles/material_replay.h"
 
 namespace cyclecert {
 namespace {
@@ -265,6 +266,31 @@ TEST(Material, ImpliedStockOfAG72Shape) {
 // The rough profile of kG71Shape with Δu/2 = 0.5, from B' = (2, 10.5) to C' = (−30, 15.5).
 const std::vector<Segment> kRough = {line({2, 10.5}, {-10, 10.5}), line({-10, 10.5}, {-20, 15.5}),
                                      line({-20, 15.5}, {-30, 15.5})};
+
+// The stock a cycle implies: between its start level and the shape, over the shape's span.
+TEST(Material, ImpliedStockIsBetweenTheStartLevelAndTheShape) {
+  // A at x 20; the shape (outer, cutting towards −z) down the wall at z 2 to x 10, along to z −10,
+  // then a bump: the upper half of the circle of radius 5 about (−15, 10), to z −20, then along
+  // x 10 to z −30. Under x 20 over z [−30, 2]: 32 × 10 = 320, less the bump's half disc, 25π/2.
+  CycleSpec c;
+  c.code = "G71";
+  c.start = {2, 20};
+  c.shape = {line({2, 20}, {2, 10}), line({2, 10}, {-10, 10}), arc(SegmentKind::ArcCCW, {-10, 10}, {-20, 10}, {-15, 10}),
+             line({-20, 10}, {-30, 10})};
+  ASSERT_NEAR(pointAt(c.shape[2], 0.5).x, 15, 1e-12);  // the upper half
+  const BgRegion stock = impliedStockOf(c, kOuter, 100, 1e-4);
+  EXPECT_NEAR(bg::area(stock), 320 - 12.5 * std::numbers::pi, 1e-2);
+  EXPECT_TRUE(bg::within(toBg({-15, 16}), stock));
+  EXPECT_FALSE(bg::within(toBg({-15, 14}), stock));
+  // A start level of 14 leaves the bump's top (x 15) standing through it: the stock falls in two,
+  // one each side of the bump — the arc's top counts, not only its ends (both at x 10). Each side:
+  c.start = {2, 14};
+  c.shape.front() = line({2, 14}, {2, 10});
+  const BgRegion split = impliedStockOf(c, kOuter, 100, 1e-4);
+  EXPECT_EQ(split.size(), 2u);
+  EXPECT_FALSE(bg::within(toBg({-15, 14.5}), split));
+  EXPECT_TRUE(bg::within(toBg({-25, 12}), split));
+}
 
 TEST(Material, PartRegionAndItsErosion) {
   // Reach 5 below the deepest profile point (10.5): bottom x = 5.5. Area over z ∈ [−30, 2]:
