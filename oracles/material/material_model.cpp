@@ -160,7 +160,8 @@ std::vector<Interval> insideIntervals(const CrossingRegion& region, const Chord&
   std::vector<Interval> inside;
   if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax)) return inside;
   near.clear();
-  region.forEachEdge([&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
+  region.forEachEdgeNear(chord.zMin - epsilon, chord.zMax + epsilon, chord.xMin - epsilon, chord.xMax + epsilon,
+                         [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
   for (const Interval& gap : gapsBetween(near)) {
     if (region.contains(chord.at(0.5 * (gap.first + gap.second)))) inside.push_back(gap);
   }
@@ -220,29 +221,6 @@ BgRegion shadowOf(const Segment& move, Point away, double reach, double chordTol
     polygons.push_back(std::move(piece.polygon));
   }
   return unionOf(polygons);
-}
-
-CrossingRegion::CrossingRegion(const BgRegion& region) : CrossingRegion(outlinesOf(region)) {}
-
-CrossingRegion::CrossingRegion(std::vector<std::vector<Point>> rings) : rings_(std::move(rings)) {
-  for (const auto& ring : rings_) {
-    for (Point p : ring) {
-      zMin_ = std::min(zMin_, p.z);
-      zMax_ = std::max(zMax_, p.z);
-      xMin_ = std::min(xMin_, p.x);
-      xMax_ = std::max(xMax_, p.x);
-    }
-  }
-}
-
-bool CrossingRegion::contains(Point p) const {
-  if (!mayMeet(p.z, p.z, p.x, p.x)) return false;
-  bool inside = false;
-  forEachEdge([&](Point a, Point b) {
-    // Even-odd: count the edges a ray from p towards +z crosses.
-    if ((a.x > p.x) != (b.x > p.x) && p.z < a.z + (p.x - a.x) / (b.x - a.x) * (b.z - a.z)) inside = !inside;
-  });
-  return inside;
 }
 
 Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,

@@ -9,6 +9,7 @@
 
 #include <boost/geometry/geometries/box.hpp>
 
+#include "oracles/material/crossing_region.h"
 #include "oracles/material/cut_envelope.h"
 #include "oracles/material/depth_frame.h"
 #include "oracles/material/region.h"
@@ -26,32 +27,6 @@ BgRegion shadowOf(const Segment& move, Point away, double reach, double chordTol
 struct Crossing {
   double length = 0;            // mm, the sum of the pieces' lengths
   std::vector<Segment> pieces;  // lines, in move order (pieces of chords for an arc)
-};
-
-// A region prepared for many crossing tests: its closed rings as plain points, and its box. A point
-// is inside by the even-odd rule over every ring (outer rings and holes alike).
-class CrossingRegion {
- public:
-  CrossingRegion() = default;  // empty
-  explicit CrossingRegion(const BgRegion& region);
-  explicit CrossingRegion(std::vector<std::vector<Point>> rings);  // closed implicitly
-
-  bool empty() const { return rings_.empty(); }
-  // Whether the box [zMin, zMax] × [xMin, xMax] meets the region's box.
-  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
-    return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
-  }
-  bool contains(Point p) const;
-  template <typename Visit>
-  void forEachEdge(Visit visit) const {
-    for (const auto& ring : rings_) {
-      for (std::size_t i = 0; i < ring.size(); ++i) visit(ring[i], ring[(i + 1) % ring.size()]);
-    }
-  }
-
- private:
-  std::vector<std::vector<Point>> rings_;
-  double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
 };
 
 // The pieces of `move` (arcs flattened within chordTolerance) that lie in `region` at a distance of

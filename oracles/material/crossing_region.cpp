@@ -1,0 +1,93 @@
+#include "oracles/material/crossing_region.h"
+
+namespace cyclecert {
+
+namespace {
+
+constexpr int kMostCells = 64;  // per axis
+
+}  // namespace
+
+CrossingRegion::CrossingRegion(const BgRegion& region) : CrossingRegion(outlinesOf(region)) {}
+
+CrossingRegion::CrossingRegion(const std::vector<std::vector<Point>>& rings) {
+  std::vector<Edge> edges;
+  for (const auto& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+      if (a == b) continue;
+      edges.push_back({a, b, 0, 0});
+      zMin_ = std::min({zMin_, a.z, b.z});
+      zMax_ = std::max({zMax_, a.z, b.z});
+      xMin_ = std::min({xMin_, a.x, b.x});
+      xMax_ = std::max({xMax_, a.x, b.x});
+    }
+  }
+  // Long: more than a quarter of the region's width or height.
+  const double longZ = 0.25 * (zMax_ - zMin_), longX = 0.25 * (xMax_ - xMin_);
+  double gz0 = INFINITY, gz1 = -INFINITY, gx0 = INFINITY, gx1 = -INFINITY;
+  for (const Edge& e : edges) {
+    if (std::abs(e.b.z - e.a.z) > longZ || std::abs(e.b.x - e.a.x) > longX) {
+      long_.push_back(e);
+      continue;
+    }
+    grid_.push_back(e);
+    gz0 = std::min({gz0, e.a.z, e.b.z});
+    gz1 = std::max({gz1, e.a.z, e.b.z});
+    gx0 = std::min({gx0, e.a.x, e.b.x});
+    gx1 = std::max({gx1, e.a.x, e.b.x});
+  }
+  if (grid_.empty()) return;
+  const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(grid_.size()))), 1, kMostCells);
+  columns_ = rows_ = side;
+  gridZ_ = gz0;
+  gridX_ = gx0;
+  gridZEnd_ = gz1;
+  gridXEnd_ = gx1;
+  cellWidth_ = std::max((gz1 - gz0) / side, 1e-9);
+  cellHeight_ = std::max((gx1 - gx0) / side, 1e-9);
+  // Two passes: count each cell's edges, then list them.
+  std::vector<CellRange> ranges;
+  ranges.reserve(grid_.size());
+  cellStart_.assign(static_cast<std::size_t>(columns_ * rows_) + 1, 0);
+  for (Edge& e : grid_) {
+    const CellRange r = cellsOf(std::min(e.a.z, e.b.z), std::max(e.a.z, e.b.z), std::min(e.a.x, e.b.x), std::max(e.a.x, e.b.x));
+    e.col0 = r.col0;
+    e.row0 = r.row0;
+    ranges.push_back(r);
+    for (int row = r.row0; row <= r.row1; ++row) {
+      for (int col = r.col0; col <= r.col1; ++col) ++cellStart_[static_cast<std::size_t>(row * columns_ + col) + 1];
+    }
+  }
+  for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+  cellEdges_.resize(cellStart_.back());
+  std::vector<std::uint32_t> filled(cellStart_.begin(), cellStart_.end() - 1);
+  for (std::size_t k = 0; k < grid_.size(); ++k) {
+    const CellRange& r = ranges[k];
+    for (int row = r.row0; row <= r.row1; ++row) {
+      for (int col = r.col0; col <= r.col1; ++col) cellEdges_[filled[static_cast<std::size_t>(row * columns_ + col)]++] = static_cast<std::uint32_t>(k);
+    }
+  }
+}
+
+CrossingRegion::CellRange CrossingRegion::cellsOf(double zMin, double zMax, double xMin, double xMax) const {
+  // Beyond the grid's box on one side: no cell; across it: the cells it covers there.
+  if (zMax < gridZ_ || zMin > gridZEnd_ || xMax < gridX_ || xMin > gridXEnd_) return {0, -1, 0, -1};
+  const auto cell = [](double v, double origin, double size, int count) {
+    return static_cast<int>(std::clamp(std::floor((v - origin) / size), 0.0, static_cast<double>(count - 1)));
+  };
+  return {cell(zMin, gridZ_, cellWidth_, columns_), cell(zMax, gridZ_, cellWidth_, columns_),
+          cell(xMin, gridX_, cellHeight_, rows_), cell(xMax, gridX_, cellHeight_, rows_)};
+}
+
+bool CrossingRegion::contains(Point p) const {
+  if (!mayMeet(p.z, p.z, p.x, p.x)) return false;
+  bool inside = false;
+  // Even-odd: count the edges a ray from p towards +z crosses.
+  forEachEdgeNear(p.z, zMax_, p.x, p.x, [&](Point a, Point b) {
+    if ((a.x > p.x) != (b.x > p.x) && p.z < a.z + (p.x - a.x) / (b.x - a.x) * (b.z - a.z)) inside = !inside;
+  });
+  return inside;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,72 @@
+#pragma once
+// A region prepared for many crossing tests (material_model.h, crossingOf): its edges as plain
+// points, indexed by a grid over them so that a chord of a move meets only the edges near it, and
+// containment by the even-odd rule over the same index. No Boost.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "oracles/material/region.h"
+
+namespace cyclecert {
+
+class CrossingRegion {
+ public:
+  CrossingRegion() = default;  // empty
+  explicit CrossingRegion(const BgRegion& region);
+  explicit CrossingRegion(const std::vector<std::vector<Point>>& rings);  // each closed implicitly
+
+  bool empty() const { return grid_.empty() && long_.empty(); }
+  // Whether the box [zMin, zMax] × [xMin, xMax] meets the region's box.
+  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
+    return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
+  }
+  // Whether p is inside: the even-odd rule over every ring (outer rings and holes alike). For
+  // points away from the boundary, as the crossing test asks.
+  bool contains(Point p) const;
+  // Calls visit(a, b) once for every edge whose box meets [zMin, zMax] × [xMin, xMax] (and for a few
+  // more nearby).
+  template <typename Visit>
+  void forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const;
+
+ private:
+  struct Edge {
+    Point a, b;
+    int col0, row0;  // the first grid cell its box meets
+  };
+  struct CellRange {
+    int col0, col1, row0, row1;
+  };
+  CellRange cellsOf(double zMin, double zMax, double xMin, double xMax) const;
+
+  double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
+  // Edges spanning a good part of the region (a bottom line, the sides) are few and visited
+  // always; the others sit in a grid over their own box, each listed in every cell its box meets.
+  std::vector<Edge> long_;
+  std::vector<Edge> grid_;
+  double gridZ_ = 0, gridX_ = 0, gridZEnd_ = 0, gridXEnd_ = 0, cellWidth_ = 1, cellHeight_ = 1;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::uint32_t> cellStart_;  // per cell (row-major), where its edges start in cellEdges_
+  std::vector<std::uint32_t> cellEdges_;  // indices into grid_
+};
+
+template <typename Visit>
+void CrossingRegion::forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const {
+  for (const Edge& e : long_) visit(e.a, e.b);
+  if (grid_.empty()) return;
+  const CellRange q = cellsOf(zMin, zMax, xMin, xMax);
+  if (q.col0 > q.col1 || q.row0 > q.row1) return;
+  for (int row = q.row0; row <= q.row1; ++row) {
+    for (int col = q.col0; col <= q.col1; ++col) {
+      const std::size_t cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(col);
+      for (std::uint32_t k = cellStart_[cell]; k < cellStart_[cell + 1]; ++k) {
+        const Edge& e = grid_[cellEdges_[k]];
+        // Listed in every cell its box meets: visited from the first of those the query meets.
+        if (std::max(e.col0, q.col0) == col && std::max(e.row0, q.row0) == row) visit(e.a, e.b);
+      }
+    }
+  }
+}
+
+}  // namespace cyclecert
