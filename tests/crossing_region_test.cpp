@@ -6,9 +6,11 @@
 #include <rapidcheck/gtest.h>
 
 #include <map>
+#include <set>
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/material/crossing_region.h"
+#include "oracles/material/cut_envelope.h"
 #include "reference/model/offset.h"
 
 namespace cyclecert {
@@ -73,6 +75,43 @@ RC_GTEST_PROP(CrossingRegion, AQueryVisitsEveryEdgeItsBoxMeetsOnce, ()) {
         const bool meets = std::max(a.z, b.z) >= z0 && std::min(a.z, b.z) <= z1 && std::max(a.x, b.x) >= x0 &&
                            std::min(a.x, b.x) <= x1;
         if (meets) RC_ASSERT(visits.count({{a.z, a.x}, {b.z, b.x}}) == 1u);
+      }
+    }
+  }
+}
+
+// The region below the feeds' envelope, as the rapids' crossing test sees it, against the same
+// region as Boost has it (CutEnvelope::below), in both a G71 and a G72 frame.
+RC_GTEST_PROP(CrossingRegion, TheRegionBelowTheEnvelopeAgreesWithBoost, ()) {
+  const Point away = *rc::gen::element(Point{0, 1}, Point{0, -1}, Point{1, 0}, Point{-1, 0});
+  const DepthFrame frame(away);
+  CutEnvelope envelope;
+  const int feeds = *rc::gen::inRange(0, 10);
+  for (int i = 0; i < feeds; ++i) {
+    const double c0 = *rc::gen::inRange(-400, 400) / 10.0, c1 = *rc::gen::inRange(-400, 400) / 10.0;
+    const double d0 = *rc::gen::inRange(-200, 200) / 10.0, d1 = *rc::gen::inRange(-200, 200) / 10.0;
+    envelope.lower({c0 * frame.along() + d0 * frame.away(), c1 * frame.along() + d1 * frame.away()}, frame);
+  }
+  const BgRegion below = envelope.below(frame, -30, 30, -25, 25);
+  const RegionBelowGraph index(frame, envelope.belowTop(-30, 30, -25, 25), -25);
+  for (int k = 0; k < 200; ++k) {
+    const Point p{*rc::gen::inRange(-400, 400) / 10.0 + 0.013, *rc::gen::inRange(-400, 400) / 10.0 + 0.007};
+    if (distanceToBoundary(below, p) < 1e-6) continue;
+    RC_ASSERT(index.contains(p) == bg::within(toBg(p), below));
+  }
+  // Every point of the boundary within a query's box lies on an edge the query visits (the index
+  // may visit more; Boost merges collinear edges the index keeps apart, so points decide).
+  const double z0 = *rc::gen::inRange(-400, 400) / 10.0, x0 = *rc::gen::inRange(-400, 400) / 10.0;
+  const double z1 = z0 + *rc::gen::element(0, 1, 30, 300) / 10.0, x1 = x0 + *rc::gen::element(0, 1, 30, 300) / 10.0;
+  std::vector<Segment> visited;
+  index.forEachEdgeNear(z0, z1, x0, x1, [&](Point a, Point b) { visited.push_back({SegmentKind::Line, a, b, {}, 0}); });
+  for (const auto& ring : outlinesOf(below)) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+      for (int k = 0; k <= 20; ++k) {
+        const Point p = a + (k / 20.0) * (b - a);
+        if (p.z < z0 || p.z > z1 || p.x < x0 || p.x > x1) continue;
+        RC_ASSERT(std::any_of(visited.begin(), visited.end(), [&](const Segment& e) { return distanceToSegment(p, e) < 1e-9; }));
       }
     }
   }

@@ -90,4 +90,27 @@ bool CrossingRegion::contains(Point p) const {
   return inside;
 }
 
+RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pair<double, double>> top, double dBottom)
+    : frame_(frame), top_(std::move(top)), dBottom_(dBottom) {
+  for (const auto& [c, d] : top_) {
+    for (const Point p : {world(c, d), world(c, dBottom_)}) {
+      zMin_ = std::min(zMin_, p.z);
+      zMax_ = std::max(zMax_, p.z);
+      xMin_ = std::min(xMin_, p.x);
+      xMax_ = std::max(xMax_, p.x);
+    }
+  }
+}
+
+bool RegionBelowGraph::contains(Point p) const {
+  const double c = frame_.cut(p), d = frame_.depth(p);
+  if (!(c > top_.front().first && c < top_.back().first && d > dBottom_)) return false;
+  // The first edge of the top reaching past c (a wall standing at c is as good as its neighbour:
+  // the points asked about are away from the boundary).
+  auto it = std::upper_bound(top_.begin(), top_.end(), c, [](double v, const auto& q) { return v < q.first; });
+  const auto& [c1, d1] = *it;
+  const auto& [c0, d0] = *(it - 1);
+  return d < d0 + (c - c0) / (c1 - c0) * (d1 - d0);
+}
+
 }  // namespace cyclecert

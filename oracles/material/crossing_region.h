@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "oracles/material/depth_frame.h"
 #include "oracles/material/region.h"
 
 namespace cyclecert {
@@ -66,6 +67,50 @@ void CrossingRegion::forEachEdgeNear(double zMin, double zMax, double xMin, doub
         if (std::max(e.col0, q.col0) == col && std::max(e.row0, q.row0) == row) visit(e.a, e.b);
       }
     }
+  }
+}
+
+// The same tests for a region below a graph over the frame's cut axis, down to a flat bottom (the
+// region below the feeds' envelope, CutEnvelope::belowTop): its top's edges are found by their cut
+// coordinates, a binary search — nothing to build.
+class RegionBelowGraph {
+ public:
+  // `top`: (cut, depth) in frame coordinates, cut not decreasing, from the region's one side to the
+  // other; at least two points.
+  RegionBelowGraph(const DepthFrame& frame, std::vector<std::pair<double, double>> top, double dBottom);
+
+  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
+    return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
+  }
+  bool contains(Point p) const;
+  template <typename Visit>
+  void forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const;
+
+ private:
+  Point world(double c, double d) const { return c * frame_.along() + d * frame_.away(); }
+
+  DepthFrame frame_;
+  std::vector<std::pair<double, double>> top_;
+  double dBottom_;
+  double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
+};
+
+template <typename Visit>
+void RegionBelowGraph::forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const {
+  const double cMin = top_.front().first, cMax = top_.back().first;
+  // The sides and the bottom, always; then the top's edges over the query's cut coordinates.
+  visit(world(cMin, dBottom_), world(cMin, top_.front().second));
+  visit(world(cMax, top_.back().second), world(cMax, dBottom_));
+  visit(world(cMax, dBottom_), world(cMin, dBottom_));
+  double c0 = INFINITY, c1 = -INFINITY;
+  for (const Point corner : {Point{zMin, xMin}, Point{zMin, xMax}, Point{zMax, xMin}, Point{zMax, xMax}}) {
+    c0 = std::min(c0, frame_.cut(corner));
+    c1 = std::max(c1, frame_.cut(corner));
+  }
+  auto it = std::lower_bound(top_.begin(), top_.end(), c0, [](const auto& p, double c) { return p.first < c; });
+  std::size_t i = it == top_.begin() ? 0 : static_cast<std::size_t>(it - top_.begin()) - 1;
+  for (; i + 1 < top_.size() && top_[i].first <= c1; ++i) {
+    visit(world(top_[i].first, top_[i].second), world(top_[i + 1].first, top_[i + 1].second));
   }
 }
 

@@ -113,8 +113,8 @@ BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, d
   return regionFromSimpleOutline(belowOutline(frame, cMin, cMax, dBottom, dTop));
 }
 
-std::vector<Point> CutEnvelope::belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom,
-                                             double dTop) const {
+std::vector<std::pair<double, double>> CutEnvelope::belowTop(double cMin, double cMax, double dBottom,
+                                                             double dTop) const {
   std::vector<std::pair<double, double>> top;  // (cut, depth) from cMin to cMax
   const auto at = [&](double c, double d) { top.push_back({c, std::clamp(d, dBottom, dTop)}); };
   walk(
@@ -131,6 +131,12 @@ std::vector<Point> CutEnvelope::belowOutline(const DepthFrame& frame, double cMi
         at(g0, dTop);  // a gap: up to the top and along it
         at(g1, dTop);
       });
+  return top;
+}
+
+std::vector<Point> CutEnvelope::belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom,
+                                             double dTop) const {
+  const auto top = belowTop(cMin, cMax, dBottom, dTop);
   std::vector<Point> outline;
   outline.reserve(top.size() + 2);
   const auto world = [&](double c, double d) { return c * frame.along() + d * frame.away(); };

@@ -40,6 +40,8 @@ class CutEnvelope {
   BgRegion below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
   // That region's outline (a graph over the cut axis above a flat bottom, not crossing itself).
   std::vector<Point> belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
+  // The outline's top alone, as (cut, depth) in frame coordinates from cMin to cMax.
+  std::vector<std::pair<double, double>> belowTop(double cMin, double cMax, double dBottom, double dTop) const;
 
  private:
   bool lowerTo(const std::vector<Piece>& fresh);  // sorted, disjoint

@@ -155,7 +155,8 @@ std::vector<Interval> gapsBetween(std::vector<Interval>& intervals) {
 // The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region. Away from
 // every edge's ε-capsule the chord cannot cross the boundary, so each gap between the near
 // intervals lies wholly inside or wholly outside: its midpoint decides.
-std::vector<Interval> insideIntervals(const CrossingRegion& region, const Chord& chord, double epsilon,
+template <typename Region>
+std::vector<Interval> insideIntervals(const Region& region, const Chord& chord, double epsilon,
                                       std::vector<Interval>& near) {
   std::vector<Interval> inside;
   if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax)) return inside;
@@ -179,22 +180,20 @@ std::vector<Interval> common(const std::vector<Interval>& a, const std::vector<I
   return out;
 }
 
-// The pieces of `move` deeper than ε inside every one of the regions (inside their intersection:
-// a point is ε inside an intersection exactly when it is ε inside each).
-Crossing crossingWithin(const std::vector<const CrossingRegion*>& regions, const Segment& move, double epsilon,
-                        double chordTolerance) {
+// The pieces of `move` deeper than ε inside the region, and inside `also` when given (inside
+// their intersection: a point is ε inside an intersection exactly when it is ε inside each).
+template <typename Region, typename Also = CrossingRegion>
+Crossing crossingWithin(const Segment& move, double epsilon, double chordTolerance, const Region& region,
+                        const Also* also = nullptr) {
   Crossing crossing;
-  if (regions.empty()) return crossing;
   epsilon = std::max(epsilon, kTidyDistance);
   const std::vector<Point> points = flatten(move, chordTolerance);
   std::vector<Interval> near;
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Chord chord(points[i - 1], points[i]);
     if (chord.length <= kGeomEps) continue;
-    std::vector<Interval> inside = insideIntervals(*regions.front(), chord, epsilon, near);
-    for (std::size_t k = 1; k < regions.size() && !inside.empty(); ++k) {
-      inside = common(inside, insideIntervals(*regions[k], chord, epsilon, near));
-    }
+    std::vector<Interval> inside = insideIntervals(region, chord, epsilon, near);
+    if (also && !inside.empty()) inside = common(inside, insideIntervals(*also, chord, epsilon, near));
     for (const Interval& piece : inside) {
       crossing.pieces.push_back({SegmentKind::Line, chord.at(piece.first), chord.at(piece.second), {}, 0});
       crossing.length += (piece.second - piece.first) * chord.length;
@@ -229,7 +228,7 @@ Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
 }
 
 Crossing crossingOf(const CrossingRegion& region, const Segment& move, double epsilon, double chordTolerance) {
-  return crossingWithin({&region}, move, epsilon, chordTolerance);
+  return crossingWithin(move, epsilon, chordTolerance, region);
 }
 
 MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance)
@@ -307,9 +306,12 @@ double MaterialModel::area() const { return bg::area(remaining()); }
 
 Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
   if (stock_.empty()) return {};
-  if (cut_.empty()) return crossingWithin({&stockForCrossing_}, move, epsilon, chordTolerance_);
-  if (!belowForCrossing_) belowForCrossing_ = CrossingRegion({belowOutline()});
-  return crossingWithin({&stockForCrossing_, &*belowForCrossing_}, move, epsilon, chordTolerance_);
+  if (cut_.empty()) return crossingWithin(move, epsilon, chordTolerance_, stockForCrossing_);
+  if (!belowForCrossing_) {
+    const FrameBox box = frameBox();
+    belowForCrossing_.emplace(frame_, cut_.belowTop(box.cMin, box.cMax, box.dBottom, box.dTop), box.dBottom);
+  }
+  return crossingWithin(move, epsilon, chordTolerance_, stockForCrossing_, &*belowForCrossing_);
 }
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {

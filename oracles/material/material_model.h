@@ -97,7 +97,7 @@ class MaterialModel {
   double chordTolerance_;
   CutEnvelope cut_;
   mutable std::optional<std::vector<Point>> belowOutline_;  // made when first needed after a feed
-  mutable std::optional<CrossingRegion> belowForCrossing_;  // likewise
+  mutable std::optional<RegionBelowGraph> belowForCrossing_;  // likewise
   mutable std::optional<BgRegion> remaining_;  // likewise
 };
 
