@@ -110,6 +110,10 @@ SpecCase parseSpecCase(const std::string& text, const std::string& file) {
   } catch (const ToolpathFormatError& e) {
     throw std::runtime_error(e.what());
   }
+  return specCaseFrom(j, file);
+}
+
+SpecCase specCaseFrom(const json& j, const std::string& file) {
   if (!j.is_object()) throw SpecError(file, "(document)", "a JSON object");
   SpecCase c;
   c.file = file;
