@@ -185,7 +185,7 @@ class PassLevelsOracle : public Oracle {
                        c.cutDirection() * (to.z - from.z) > tol;
       const Point mid = 0.5 * (in.path.from(i) + m.to);
       // The semi-finish runs on the rough profile, G70 on the finish shape: neither is a roughing pass.
-      if (!cut || distanceToPath(mid, rough) <= tol || (in.program.hasFinishingCycle && distanceToPath(mid, c.shape) <= tol)) continue;
+      if (!cut || nearPath(mid, rough, tol) || (in.program.hasFinishingCycle && nearPath(mid, c.shape, tol))) continue;
       const double depth = c.depthDirection() * (to.x - aPrime.x);
       const double k = std::round(depth / c.depthOfCut);
       if (k >= 1 && std::abs(depth - k * c.depthOfCut) <= tol) continue;

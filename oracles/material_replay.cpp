@@ -197,8 +197,8 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
 bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move) {
   if (!in.program.hasFinishingCycle) return false;
   const double tol = in.settings.tolerance();
-  return distanceToPath(pointAt(move, 0.5), c.shape) <= tol && distanceToPath(move.to, c.shape) <= tol &&
-         distanceToPath(move.from, c.shape) <= tol;
+  return nearPath(pointAt(move, 0.5), c.shape, tol) && nearPath(move.to, c.shape, tol) &&
+         nearPath(move.from, c.shape, tol);
 }
 
 }  // namespace

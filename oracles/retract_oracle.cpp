@@ -48,7 +48,7 @@ class RetractOracle : public Oracle {
     // On the rough profile (semi-finish, bottom cuts) or, with a G70, on the finish shape.
     bool onProfile(std::size_t i) const {
       const Point mid = 0.5 * (in.path.from(i) + in.path.moves[i].to);
-      return distanceToPath(mid, rough) <= tol || (in.program.hasFinishingCycle && distanceToPath(mid, c.shape) <= tol);
+      return nearPath(mid, rough, tol) || (in.program.hasFinishingCycle && nearPath(mid, c.shape, tol));
     }
     double back(std::size_t i) const { return -c.cutDirection() * (to(i).z - from(i).z); }
     double out(std::size_t i) const { return -c.depthDirection() * (to(i).x - from(i).x); }

@@ -302,6 +302,19 @@ TEST(Offset, DistanceToSegments) {
   EXPECT_NEAR(distanceToPath({-15, 10}, {l, a}), std::hypot(5, 5), kTol);
 }
 
+TEST(Offset, NearAPathIsDistanceToPathWithinATolerance) {
+  const Segment l = line({0, 0}, {-10, 0});
+  const Segment a = arc(SegmentKind::ArcCW, {-20, 5}, {-25, 10}, {-20, 10});
+  EXPECT_TRUE(nearPath({-5, 0.3}, {l, a}, 0.4));
+  EXPECT_FALSE(nearPath({-5, 0.5}, {l, a}, 0.4));
+  // Within the arc's circle's box but 5 − √8 from the arc; and from its start, √50.
+  EXPECT_FALSE(nearPath({-22, 8}, {l, a}, 2));
+  EXPECT_TRUE(nearPath({-22, 8}, {l, a}, 2.2));
+  EXPECT_FALSE(nearPath({-15, 10}, {l, a}, 7));
+  EXPECT_TRUE(nearPath({-15, 10}, {l, a}, 7.1));
+  EXPECT_FALSE(nearPath({0, 0}, {}, 1));
+}
+
 // ---- imaginary tip, start-up ------------------------------------------------------------------
 
 TEST(Offset, ImaginaryTipChart) {

@@ -80,5 +80,7 @@ Point unitTangentAtEnd(const Segment& s);    // direction of travel at `to`
 Point sideNormal(Point unitTangent, CompensationSide side);
 double distanceToSegment(Point p, const Segment& s);
 double distanceToPath(Point p, const std::vector<Segment>& path);  // +∞ for an empty path
+// distanceToPath(p, path) <= tolerance, answered without measuring the segments far from p.
+bool nearPath(Point p, const std::vector<Segment>& path, double tolerance);
 
 }  // namespace cyclecert
