@@ -14,8 +14,23 @@ constexpr double kSameDepth = 1e-12;
 
 Piece part(const Piece& p, double a, double b) { return {a, p.depthAt(a), b, p.depthAt(b)}; }
 
+bool collinear(const Piece& left, const Piece& right) {
+  if (std::abs(right.c0 - left.c1) > kTidyDistance || std::abs(right.d0 - left.d1) > kSameDepth) return false;
+  const double slopeLeft = (left.d1 - left.d0) / (left.c1 - left.c0);
+  const double slopeRight = (right.d1 - right.d0) / (right.c1 - right.c0);
+  return std::abs(slopeLeft - slopeRight) <= 1e-12 * std::max(1.0, std::abs(slopeLeft));
+}
+
+// Appends a piece of some length; collinear neighbours become one piece, so that the envelope grows
+// with the feeds' shape, not with their number.
 void push(std::vector<Piece>& out, const Piece& p) {
-  if (p.c1 - p.c0 > kTidyDistance) out.push_back(p);
+  if (p.c1 - p.c0 <= kTidyDistance) return;
+  if (!out.empty() && collinear(out.back(), p)) {
+    out.back().c1 = p.c1;
+    out.back().d1 = p.d1;
+  } else {
+    out.push_back(p);
+  }
 }
 
 // On [a, b] the lower of two pieces, split where they cross. `lowered` says whether the new piece
@@ -32,13 +47,6 @@ void pushLower(std::vector<Piece>& out, const Piece& old, const Piece& fresh, do
   push(out, part(fa < oa ? old : fresh, c, b));
 }
 
-bool collinear(const Piece& left, const Piece& right) {
-  if (std::abs(right.c0 - left.c1) > kTidyDistance || std::abs(right.d0 - left.d1) > kSameDepth) return false;
-  const double slopeLeft = (left.d1 - left.d0) / (left.c1 - left.c0);
-  const double slopeRight = (right.d1 - right.d0) / (right.c1 - right.c0);
-  return std::abs(slopeLeft - slopeRight) <= 1e-12 * std::max(1.0, std::abs(slopeLeft));
-}
-
 }  // namespace
 
 double CutEnvelope::Piece::depthAt(double c) const {
@@ -48,8 +56,8 @@ double CutEnvelope::Piece::depthAt(double c) const {
 }
 
 bool CutEnvelope::lower(const std::vector<Point>& path, const DepthFrame& frame) {
-  std::vector<Piece> fresh;  // the path's chords, left to right (a graph's chords do not overlap)
-  fresh.reserve(path.size());
+  std::vector<Piece>& fresh = fresh_;  // the path's chords, left to right (a graph's chords do not overlap)
+  fresh.clear();
   for (std::size_t i = 1; i < path.size(); ++i) {
     double c0 = frame.cut(path[i - 1]), d0 = frame.depth(path[i - 1]);
     double c1 = frame.cut(path[i]), d1 = frame.depth(path[i]);
@@ -70,8 +78,8 @@ bool CutEnvelope::lower(const std::vector<Point>& path, const DepthFrame& frame)
 // there yet), the lower of the two where both do.
 bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
   bool lowered = false;
-  std::vector<Piece> out;
-  out.reserve(pieces_.size() + 2 * fresh.size() + 2);
+  std::vector<Piece>& out = spare_;  // becomes the envelope; the old one is kept for next time
+  out.clear();
   std::size_t i = 0, j = 0;
   double merged = -INFINITY;  // everything left of here is in `out`
   while (i < pieces_.size() || j < fresh.size()) {
@@ -95,17 +103,7 @@ bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
     if (old && old->c1 <= merged) ++i;
     if (now && now->c1 <= merged) ++j;
   }
-  // Collinear neighbours become one piece, so that the envelope grows with the feeds' shape, not
-  // with their number.
-  pieces_.clear();
-  for (const Piece& p : out) {
-    if (!pieces_.empty() && collinear(pieces_.back(), p)) {
-      pieces_.back().c1 = p.c1;
-      pieces_.back().d1 = p.d1;
-    } else {
-      pieces_.push_back(p);
-    }
-  }
+  pieces_.swap(out);
   return lowered;
 }
 

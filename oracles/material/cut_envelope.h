@@ -46,6 +46,7 @@ class CutEnvelope {
  private:
   bool lowerTo(const std::vector<Piece>& fresh);  // sorted, disjoint
   std::vector<Piece> pieces_;
+  std::vector<Piece> fresh_, spare_;  // lower()'s working space, kept to spare allocations
 };
 
 template <typename OnPiece, typename OnGap>

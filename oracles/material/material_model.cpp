@@ -139,45 +139,48 @@ void addNearIntervals(const Chord& chord, Point p, Point q, double epsilon,
   }
 }
 
-// The parts of [0, 1] no interval covers.
-std::vector<Interval> gapsBetween(std::vector<Interval>& intervals) {
+// The parts of [0, 1] no interval covers, into `gaps`.
+void gapsBetween(std::vector<Interval>& intervals, std::vector<Interval>& gaps) {
   std::sort(intervals.begin(), intervals.end());
-  std::vector<Interval> gaps;
+  gaps.clear();
   double reached = 0;
   for (const Interval& i : intervals) {
     if (i.first > reached) gaps.push_back({reached, i.first});
     reached = std::max(reached, i.second);
   }
   if (reached < 1) gaps.push_back({reached, 1});
-  return gaps;
 }
 
-// The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region. Away from
-// every edge's ε-capsule the chord cannot cross the boundary, so each gap between the near
-// intervals lies wholly inside or wholly outside: its midpoint decides.
+// Working space of a crossing test, kept from chord to chord to spare allocations.
+struct Scratch {
+  std::vector<Interval> near, gaps, inside, insideAlso, both;
+};
+
+// The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region, into
+// `inside`. Away from every edge's ε-capsule the chord cannot cross the boundary, so each gap
+// between the near intervals lies wholly inside or wholly outside: its midpoint decides.
 template <typename Region>
-std::vector<Interval> insideIntervals(const Region& region, const Chord& chord, double epsilon,
-                                      std::vector<Interval>& near) {
-  std::vector<Interval> inside;
-  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax)) return inside;
-  near.clear();
+void insideIntervals(const Region& region, const Chord& chord, double epsilon, Scratch& scratch,
+                     std::vector<Interval>& inside) {
+  inside.clear();
+  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax)) return;
+  scratch.near.clear();
   region.forEachEdgeNear(chord.zMin - epsilon, chord.zMax + epsilon, chord.xMin - epsilon, chord.xMax + epsilon,
-                         [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, near); });
-  for (const Interval& gap : gapsBetween(near)) {
+                         [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, scratch.near); });
+  gapsBetween(scratch.near, scratch.gaps);
+  for (const Interval& gap : scratch.gaps) {
     if (region.contains(chord.at(0.5 * (gap.first + gap.second)))) inside.push_back(gap);
   }
-  return inside;
 }
 
-// The common parts of two sorted lists of disjoint intervals.
-std::vector<Interval> common(const std::vector<Interval>& a, const std::vector<Interval>& b) {
-  std::vector<Interval> out;
+// The common parts of two sorted lists of disjoint intervals, into `out`.
+void common(const std::vector<Interval>& a, const std::vector<Interval>& b, std::vector<Interval>& out) {
+  out.clear();
   for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
     const double lo = std::max(a[i].first, b[j].first), hi = std::min(a[i].second, b[j].second);
     if (lo < hi) out.push_back({lo, hi});
     (a[i].second < b[j].second ? i : j)++;
   }
-  return out;
 }
 
 // The pieces of `move` deeper than ε inside the region, and inside `also` when given (inside
@@ -188,13 +191,18 @@ Crossing crossingWithin(const Segment& move, double epsilon, double chordToleran
   Crossing crossing;
   epsilon = std::max(epsilon, kTidyDistance);
   const std::vector<Point> points = flatten(move, chordTolerance);
-  std::vector<Interval> near;
+  Scratch scratch;
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Chord chord(points[i - 1], points[i]);
     if (chord.length <= kGeomEps) continue;
-    std::vector<Interval> inside = insideIntervals(region, chord, epsilon, near);
-    if (also && !inside.empty()) inside = common(inside, insideIntervals(*also, chord, epsilon, near));
-    for (const Interval& piece : inside) {
+    insideIntervals(region, chord, epsilon, scratch, scratch.inside);
+    const std::vector<Interval>* inside = &scratch.inside;
+    if (also && !inside->empty()) {
+      insideIntervals(*also, chord, epsilon, scratch, scratch.insideAlso);
+      common(scratch.inside, scratch.insideAlso, scratch.both);
+      inside = &scratch.both;
+    }
+    for (const Interval& piece : *inside) {
       crossing.pieces.push_back({SegmentKind::Line, chord.at(piece.first), chord.at(piece.second), {}, 0});
       crossing.length += (piece.second - piece.first) * chord.length;
     }
