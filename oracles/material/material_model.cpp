@@ -245,6 +245,25 @@ MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double ch
     throw std::invalid_argument("the material model needs a positive reach and chord tolerance");
   }
   stockEnvelope_ = envelopeOf(stock_);
+  // The stock's top: the lower envelope of its edges seen from the other side (away reversed).
+  const DepthFrame reversed({-frame_.away().z, -frame_.away().x});
+  for (const auto& ring : outlinesOf(stock_)) {
+    for (std::size_t i = 0; i < ring.size(); ++i) stockTop_.lower({ring[i], ring[(i + 1) % ring.size()]}, reversed);
+  }
+}
+
+std::optional<double> MaterialModel::stockDeepestWithin(double c0, double c1) const {
+  // Reversed, the cut coordinate and the depth change sign.
+  std::optional<double> deepest;
+  stockTop_.walk(
+      -c1, -c0,
+      [&](const CutEnvelope::Piece& p) {
+        // A wall standing at an end of a range that has some width stands over none of it.
+        if (p.c1 - p.c0 <= kTidyDistance && c1 - c0 > kTidyDistance) return;
+        deepest = std::max(deepest.value_or(-INFINITY), -std::min(p.d0, p.d1));
+      },
+      [](double, double) {});
+  return deepest;
 }
 
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
@@ -324,7 +343,7 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {
   std::vector<CutEnvelope::Piece> top;
-  const auto stockTop = deepestWithin(stock_, frame_, c0, c1);
+  const auto stockTop = stockDeepestWithin(c0, c1);
   if (!stockTop) return top;
   const double cap = *stockTop;
   cut_.walk(

@@ -88,9 +88,13 @@ class MaterialModel {
   FrameBox frameBox() const;
   // The outline of the region below the envelope, within frameBox() (CutEnvelope::belowOutline).
   const std::vector<Point>& belowOutline() const;
+  // The deepest the stock comes over the cut coordinates [c0, c1]; nothing when it has no point
+  // there. Where the range has some width, a wall standing at one of its ends does not count.
+  std::optional<double> stockDeepestWithin(double c0, double c1) const;
 
   BgRegion stock_;
   CrossingRegion stockForCrossing_;
+  CutEnvelope stockTop_;  // the stock's top, seen from the other side (stockDeepestWithin)
   Box stockEnvelope_;
   DepthFrame frame_;
   double reach_;

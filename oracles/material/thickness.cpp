@@ -226,31 +226,4 @@ std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& t
   return search.best();
 }
 
-std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& frame, double c0, double c1) {
-  std::optional<double> deepest;
-  // The deepest point of an edge within [c0, c1] is one of its ends clipped to that range.
-  const auto clipEdge = [&](Point p, Point q) {
-    double a = frame.cut(p), da = frame.depth(p), b = frame.cut(q), db = frame.depth(q);
-    if (a > b) {
-      std::swap(a, b);
-      std::swap(da, db);
-    }
-    const double lo = std::max(a, c0), hi = std::min(b, c1);
-    if (hi < lo) return;
-    // A wall standing at an end of the range stands over none of it.
-    if (hi - lo <= kTidyDistance && c1 - c0 > kTidyDistance) return;
-    const auto depthAt = [&](double c) { return b - a > 0 ? da + (c - a) / (b - a) * (db - da) : std::max(da, db); };
-    const double top = std::max(depthAt(lo), depthAt(hi));
-    if (!deepest || top > *deepest) deepest = top;
-  };
-  const auto visitRing = [&](const BgPolygon::ring_type& ring) {
-    for (std::size_t i = 1; i < ring.size(); ++i) clipEdge(fromBg(ring[i - 1]), fromBg(ring[i]));
-  };
-  for (const BgPolygon& polygon : region) {
-    visitRing(polygon.outer());
-    for (const auto& hole : polygon.inners()) visitRing(hole);
-  }
-  return deepest;
-}
-
 }  // namespace cyclecert

@@ -50,10 +50,4 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
 std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile,
                                         Point away, double chordTolerance);
 
-// The deepest the region comes over the cut coordinates [c0, c1]; nothing when it has no point
-// there. Where the range has some width, an edge meeting it in a single cut coordinate (a wall
-// standing at one of its ends) does not count: the region stands over no length of it there. One
-// pass over its edges.
-std::optional<double> deepestWithin(const BgRegion& region, const DepthFrame& frame, double c0, double c1);
-
 }  // namespace cyclecert
