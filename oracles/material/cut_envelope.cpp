@@ -75,15 +75,24 @@ bool CutEnvelope::lower(const std::vector<Point>& path, const DepthFrame& frame)
 
 // Merges the path's pieces into the envelope's in one sweep over the stretches where either list
 // has a piece: the old piece where no new one lies, the new one where no old one does (no feed was
-// there yet), the lower of the two where both do.
+// there yet), the lower of the two where both do. Only the old pieces the new ones reach change
+// (with a neighbour each side, which a new piece may continue in a line): those are merged, and
+// the result spliced in.
 bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
+  const auto byEnd = [](const Piece& p, double c) { return p.c1 < c; };
+  const auto byStart = [](double c, const Piece& p) { return c < p.c0; };
+  auto first = std::lower_bound(pieces_.begin(), pieces_.end(), fresh.front().c0, byEnd);
+  auto last = std::upper_bound(first, pieces_.end(), fresh.back().c1, byStart);
+  if (first != pieces_.begin()) --first;
+  if (last != pieces_.end()) ++last;
   bool lowered = false;
-  std::vector<Piece>& out = spare_;  // becomes the envelope; the old one is kept for next time
+  std::vector<Piece>& out = spare_;
   out.clear();
-  std::size_t i = 0, j = 0;
+  auto i = first;
+  std::size_t j = 0;
   double merged = -INFINITY;  // everything left of here is in `out`
-  while (i < pieces_.size() || j < fresh.size()) {
-    const Piece* old = i < pieces_.size() ? &pieces_[i] : nullptr;
+  while (i != last || j < fresh.size()) {
+    const Piece* old = i != last ? &*i : nullptr;
     const Piece* now = j < fresh.size() ? &fresh[j] : nullptr;
     const double oldStart = old ? std::max(old->c0, merged) : INFINITY;
     const double nowStart = now ? std::max(now->c0, merged) : INFINITY;
@@ -103,7 +112,8 @@ bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
     if (old && old->c1 <= merged) ++i;
     if (now && now->c1 <= merged) ++j;
   }
-  pieces_.swap(out);
+  const auto at = pieces_.erase(first, last);
+  pieces_.insert(at, out.begin(), out.end());
   return lowered;
 }
 

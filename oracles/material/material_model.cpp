@@ -245,10 +245,26 @@ MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double ch
     throw std::invalid_argument("the material model needs a positive reach and chord tolerance");
   }
   stockEnvelope_ = envelopeOf(stock_);
-  // The stock's top: the lower envelope of its edges seen from the other side (away reversed).
+  // The stock's top: the lower envelope of its edges seen from the other side (away reversed),
+  // lowered to run by run of each ring that goes one way along the cut axis.
   const DepthFrame reversed({-frame_.away().z, -frame_.away().x});
-  for (const auto& ring : outlinesOf(stock_)) {
-    for (std::size_t i = 0; i < ring.size(); ++i) stockTop_.lower({ring[i], ring[(i + 1) % ring.size()]}, reversed);
+  for (std::vector<Point> ring : outlinesOf(stock_)) {
+    if (ring.empty()) continue;
+    ring.push_back(ring.front());
+    std::vector<Point> run{ring.front()};
+    int direction = 0;
+    for (std::size_t i = 1; i < ring.size(); ++i) {
+      const double advance = reversed.cut(ring[i]) - reversed.cut(ring[i - 1]);
+      const int sign = std::abs(advance) <= kTidyDistance ? 0 : advance > 0 ? 1 : -1;
+      if (sign != 0 && direction != 0 && sign != direction) {
+        stockTop_.lower(run, reversed);
+        run = {ring[i - 1]};
+        direction = 0;
+      }
+      if (sign != 0) direction = sign;
+      run.push_back(ring[i]);
+    }
+    stockTop_.lower(run, reversed);
   }
 }
 
