@@ -71,7 +71,7 @@ class NoGougeOracle : public Oracle {
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
     for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
-      const Crossing c = crossingOf(r->partForCrossing, in.path.segment(i), tolerance(in), in.settings.chordTolerance);
+      const Crossing c = r->partCrossing(in.path.segment(i), tolerance(in), in.settings.chordTolerance);
       if (c.length <= 0) continue;
       std::ostringstream m;
       m << "move " << i << " enters the part grown by the allowances over " << c.length << " mm";

@@ -30,19 +30,35 @@ BgRegion withoutSkins(const BgRegion& region, Point away, double width) {
   return twice;
 }
 
-BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance) {
-  if (profile.empty()) return {};
-  // The outline: the profile, then down to a bottom line `reach` beyond its deepest point, and back.
-  const DepthFrame frame(away);
-  std::vector<Point> outline;
+namespace {
+
+// The part's outline: the profile flattened, then down to a bottom line `reach` beyond its deepest
+// point, and back.
+struct PartOutline {
+  std::vector<Point> profile;
+  double bottom = 0;
+};
+
+PartOutline partOutlineOf(const std::vector<Segment>& profile, const DepthFrame& frame, double reach, double chordTolerance) {
+  PartOutline o;
   double deepest = INFINITY;
   for (const Segment& s : profile) {
-    appendFlattened(outline, s, chordTolerance);
+    appendFlattened(o.profile, s, chordTolerance);
     for (Point p : {s.from, s.to}) deepest = std::min(deepest, frame.depth(p));
   }
-  const double bottom = deepest - reach;
-  outline.push_back(frame.atDepth(profile.back().to, bottom));
-  outline.push_back(frame.atDepth(profile.front().from, bottom));
+  o.bottom = deepest - reach;
+  return o;
+}
+
+}  // namespace
+
+BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance) {
+  if (profile.empty()) return {};
+  const DepthFrame frame(away);
+  const PartOutline part = partOutlineOf(profile, frame, reach, chordTolerance);
+  std::vector<Point> outline = part.profile;
+  outline.push_back(frame.atDepth(profile.back().to, part.bottom));
+  outline.push_back(frame.atDepth(profile.front().from, part.bottom));
   // A graph over the cut axis closes into a simple outline: Boost's validity check, which costs
   // more than the rest, is not needed.
   if (isGraphOverCutAxis(profile, frame)) return regionFromSimpleOutline(outline);
@@ -213,6 +229,11 @@ std::optional<std::vector<std::vector<Point>>> materialAfter(const JudgeInput& i
   return outlinesOf(model.remaining());
 }
 
+Crossing MaterialReplay::partCrossing(const Segment& move, double epsilon, double chordTolerance) const {
+  return partBelowProfile ? crossingOf(*partBelowProfile, move, epsilon, chordTolerance)
+                          : crossingOf(partForCrossing, move, epsilon, chordTolerance);
+}
+
 std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   const CycleSpec* c = in.program.singleRoughingCycle();
   if (!c || in.path.alarm) return std::nullopt;
@@ -225,7 +246,18 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
   const std::vector<Segment> profile(r.target.begin() + (c->typeII ? 0 : 1), r.target.end());
   r.part = partRegionOf(profile, r.away, r.reach, in.settings.chordTolerance);
-  r.partForCrossing = CrossingRegion(r.part);
+  // No-gouge's crossing tests: below a profile that is a graph over the cut axis the part's edges
+  // are found by their cut coordinates (nothing to build); any other part's rings are indexed.
+  const DepthFrame frame(r.away);
+  if (!profile.empty() && isGraphOverCutAxis(profile, frame)) {
+    const PartOutline part = partOutlineOf(profile, frame, r.reach, in.settings.chordTolerance);
+    std::vector<std::pair<double, double>> top;
+    for (Point p : part.profile) top.push_back({frame.cut(p), frame.depth(p)});
+    if (top.front().first > top.back().first) std::reverse(top.begin(), top.end());
+    r.partBelowProfile.emplace(frame, std::move(top), part.bottom);
+  } else {
+    r.partForCrossing = CrossingRegion(r.part);
+  }
 
   MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
   const double tolerance = in.settings.tolerance();

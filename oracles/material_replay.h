@@ -24,7 +24,10 @@ struct MaterialReplay {
   std::vector<Segment> target;       // the surface roughing must leave: the rough profile, or the
                                      // finish shape when a G70 follows
   BgRegion part;                     // everything beyond `target`: no move may enter it
-  CrossingRegion partForCrossing;    // the same, prepared for no-gouge's crossing tests
+  // The same, prepared for no-gouge's crossing tests: the region below the profile when it is a
+  // graph over the cut axis, else the part's rings.
+  std::optional<RegionBelowGraph> partBelowProfile;
+  CrossingRegion partForCrossing;
   std::vector<Crossing> rapidCrossings;                   // per move: material a rapid crosses (empty for feeds)
   // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
   // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).
@@ -32,6 +35,8 @@ struct MaterialReplay {
   std::optional<MaterialModel> model;  // after the last move (always set by replayMaterial)
 
   const BgRegion& remaining() const { return model->remaining(); }  // made when first asked for
+  // crossingOf(part, move, …) (material_model.h).
+  Crossing partCrossing(const Segment& move, double epsilon, double chordTolerance) const;
 };
 
 // The part (grown by the allowances, when `profile` is the rough profile): the region the profile

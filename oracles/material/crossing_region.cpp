@@ -92,6 +92,12 @@ bool CrossingRegion::contains(Point p) const {
 
 RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pair<double, double>> top, double dBottom)
     : frame_(frame), top_(std::move(top)), dBottom_(dBottom) {
+  for (std::size_t k = 0; k + 1 < top_.size(); ++k) {
+    if (k % kBlock == 0) blockDepths_.push_back({INFINITY, -INFINITY});
+    auto& [low, high] = blockDepths_.back();
+    low = std::min({low, top_[k].second, top_[k + 1].second});
+    high = std::max({high, top_[k].second, top_[k + 1].second});
+  }
   for (const auto& [c, d] : top_) {
     for (const Point p : {world(c, d), world(c, dBottom_)}) {
       zMin_ = std::min(zMin_, p.z);

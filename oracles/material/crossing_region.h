@@ -89,8 +89,12 @@ class RegionBelowGraph {
  private:
   Point world(double c, double d) const { return c * frame_.along() + d * frame_.away(); }
 
+  static constexpr std::size_t kBlock = 16;  // top edges per block
+
   DepthFrame frame_;
   std::vector<std::pair<double, double>> top_;
+  // Per block of kBlock top edges, the depths they span: a query skips the blocks it cannot meet.
+  std::vector<std::pair<double, double>> blockDepths_;
   double dBottom_;
   double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
 };
@@ -102,15 +106,23 @@ void RegionBelowGraph::forEachEdgeNear(double zMin, double zMax, double xMin, do
   visit(world(cMin, dBottom_), world(cMin, top_.front().second));
   visit(world(cMax, top_.back().second), world(cMax, dBottom_));
   visit(world(cMax, dBottom_), world(cMin, dBottom_));
-  double c0 = INFINITY, c1 = -INFINITY;
+  double c0 = INFINITY, c1 = -INFINITY, d0 = INFINITY, d1 = -INFINITY;
   for (const Point corner : {Point{zMin, xMin}, Point{zMin, xMax}, Point{zMax, xMin}, Point{zMax, xMax}}) {
     c0 = std::min(c0, frame_.cut(corner));
     c1 = std::max(c1, frame_.cut(corner));
+    d0 = std::min(d0, frame_.depth(corner));
+    d1 = std::max(d1, frame_.depth(corner));
   }
   auto it = std::lower_bound(top_.begin(), top_.end(), c0, [](const auto& p, double c) { return p.first < c; });
   std::size_t i = it == top_.begin() ? 0 : static_cast<std::size_t>(it - top_.begin()) - 1;
-  for (; i + 1 < top_.size() && top_[i].first <= c1; ++i) {
+  while (i + 1 < top_.size() && top_[i].first <= c1) {
+    const auto& [low, high] = blockDepths_[i / kBlock];
+    if (high < d0 || low > d1) {  // the rest of this block stands wholly above or below the query
+      i = (i / kBlock + 1) * kBlock;
+      continue;
+    }
     visit(world(top_[i].first, top_[i].second), world(top_[i + 1].first, top_[i + 1].second));
+    ++i;
   }
 }
 

@@ -239,6 +239,10 @@ Crossing crossingOf(const CrossingRegion& region, const Segment& move, double ep
   return crossingWithin(move, epsilon, chordTolerance, region);
 }
 
+Crossing crossingOf(const RegionBelowGraph& region, const Segment& move, double epsilon, double chordTolerance) {
+  return crossingWithin(move, epsilon, chordTolerance, region);
+}
+
 MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance)
     : stock_(std::move(stock)), stockForCrossing_(stock_), frame_(away), reach_(reach), chordTolerance_(chordTolerance) {
   if (!(reach > 0) || !(chordTolerance > 0)) {

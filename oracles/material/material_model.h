@@ -42,6 +42,7 @@ Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
                     double chordTolerance);
 // The same for a region prepared once for many moves.
 Crossing crossingOf(const CrossingRegion& region, const Segment& move, double epsilon, double chordTolerance);
+Crossing crossingOf(const RegionBelowGraph& region, const Segment& move, double epsilon, double chordTolerance);
 
 // The model keeps the stock as it is and, for what the feeds removed, the envelope of their paths
 // (cut_envelope.h): every shadow removes all beyond its move, so the feeds together remove all
