@@ -21,14 +21,9 @@ JudgeRequest judgeRequestFor(const SpecCase& c) {
 
 JudgeInput judgeInputFor(const JudgeRequest& request, Toolpath path) {
   const PlanRequest& p = request.program;
-  std::string profileName = p.profile.empty() ? profileFromHeader(p.programText) : p.profile;
-  if (profileName.empty()) profileName = "fanuc-0i-f";
-  const Profile* profile = findProfile(profileName);
-  if (!profile) throw UnknownProfile(profileName);
-  MachineParams params = profile->defaults;
-  for (const auto& [name, value] : p.params) params.set(name, value);
+  const ReadRequest read = readRequest(p);
   JudgeInput in;
-  in.program = readProgramSpec(parseProgram(p.programText, p.file), *profile, params, p.options.tool, p.options.mdi);
+  in.program = readProgramSpec(*read.program, *read.profile, read.params, p.options.tool, p.options.mdi);
   if (request.stock) {
     in.stock.kind = request.stock->bar ? Stock::Bar : Stock::Polygon;
     in.stock.diameter = request.stock->diameter;

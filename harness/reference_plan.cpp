@@ -16,16 +16,40 @@ std::string profileFromHeader(const std::string& text) {
   return std::regex_search(text, m, header) ? m[1].str() : std::string();
 }
 
-Toolpath planWithReference(const PlanRequest& request) {
+namespace {
+
+// The last program parsed on this thread, with the text and file it came from.
+std::shared_ptr<const Program> parsedOnce(const std::string& text, const std::string& file) {
+  thread_local struct {
+    std::string text, file;
+    std::shared_ptr<const Program> program;
+  } last;
+  if (!last.program || last.text != text || last.file != file) {
+    last.program = std::make_shared<const Program>(parseProgram(text, file));
+    last.text = text;
+    last.file = file;
+  }
+  return last.program;
+}
+
+}  // namespace
+
+ReadRequest readRequest(const PlanRequest& request) {
   std::string profileName = request.profile;
   if (profileName.empty()) profileName = profileFromHeader(request.programText);
   if (profileName.empty()) profileName = "fanuc-0i-f";
-  const Profile* profile = findProfile(profileName);
-  if (!profile) throw UnknownProfile(profileName);
-  MachineParams params = profile->defaults;
-  for (const auto& [name, value] : request.params) params.set(name, value);
-  const Program program = parseProgram(request.programText, request.file);
-  return planProgram(program, *profile, params, request.options);
+  ReadRequest read;
+  read.profile = findProfile(profileName);
+  if (!read.profile) throw UnknownProfile(profileName);
+  read.params = read.profile->defaults;
+  for (const auto& [name, value] : request.params) read.params.set(name, value);
+  read.program = parsedOnce(request.programText, request.file);
+  return read;
+}
+
+Toolpath planWithReference(const PlanRequest& request) {
+  const ReadRequest read = readRequest(request);
+  return planProgram(*read.program, *read.profile, read.params, request.options);
 }
 
 Toolpath planSpecCase(const SpecCase& c) {

@@ -1,11 +1,14 @@
 #pragma once
 // Planning a program or a spec case with the reference engine, from text.
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "harness/spec_case.h"
 #include "reference/engine/program_runner.h"
+#include "reference/gcode/parser.h"
+#include "reference/model/profile.h"
 #include "reference/model/toolpath.h"
 #include "reports/svg/toolpath_svg.h"
 
@@ -18,6 +21,17 @@ struct PlanRequest {
   std::vector<std::pair<std::string, double>> params;  // by number or mnemonic, applied in order
   RunOptions options;    // MDI mode, tool offset
 };
+
+// A request read: its profile, the machine parameters (the profile's defaults with the request's
+// applied), and the program parsed. The engine and the judge read the same program in turn, so
+// the last program parsed is kept (per thread) and shared rather than parsed again.
+struct ReadRequest {
+  const Profile* profile = nullptr;
+  MachineParams params;
+  std::shared_ptr<const Program> program;
+};
+// Throws ParseError, UnknownProfile and UnknownParam / std::invalid_argument.
+ReadRequest readRequest(const PlanRequest& request);
 
 // Throws ParseError (malformed program), UnknownProfile, UnknownParam / std::invalid_argument
 // (bad parameter) and NotSupported; a controller alarm is part of the returned toolpath.
