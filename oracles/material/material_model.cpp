@@ -363,20 +363,22 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {
   std::vector<CutEnvelope::Piece> top;
-  const auto stockTop = stockDeepestWithin(c0, c1);
-  if (!stockTop) return top;
-  const double cap = *stockTop;
   cut_.walk(
       c0, c1,
       [&](const CutEnvelope::Piece& p) {
         if (p.c1 <= p.c0) return;
+        const auto stockTop = stockDeepestWithin(p.c0, p.c1);
+        if (!stockTop) return;  // no stock under this feed
+        const double cap = *stockTop;
         if (p.d0 <= cap && p.d1 <= cap) return top.push_back(p);
         if (p.d0 >= cap && p.d1 >= cap) return top.push_back({p.c0, cap, p.c1, cap});
         const double c = p.c0 + (cap - p.d0) / (p.d1 - p.d0) * (p.c1 - p.c0);  // where it crosses the cap
         top.push_back({p.c0, std::min(p.d0, cap), c, cap});
         top.push_back({c, cap, p.c1, std::min(p.d1, cap)});
       },
-      [&](double g0, double g1) { top.push_back({g0, cap, g1, cap}); });
+      [&](double g0, double g1) {
+        if (const auto stockTop = stockDeepestWithin(g0, g1)) top.push_back({g0, *stockTop, g1, *stockTop});
+      });
   return top;
 }
 

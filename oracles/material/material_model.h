@@ -67,9 +67,10 @@ class MaterialModel {
   Crossing crossing(const Segment& move, double epsilon) const;
 
   // A top of the material over the cut coordinates [c0, c1], in frame coordinates: the envelope
-  // where feeds have been, capped by the stock's deepest point over [c0, c1], and that point over
-  // the gaps. Every point of remaining() there stands at or below it (exactly the material's top
-  // for a stock with a flat top: a bar, or the stock a cycle implies). No Boost.
+  // where feeds have been, capped by the stock's deepest point over each of its pieces, and that
+  // point over the gaps (nothing where no stock stands). Every point of remaining() there stands at
+  // or below it (exactly the material's top for a stock with a flat top: a bar, or the stock a
+  // cycle implies). No Boost.
   std::vector<CutEnvelope::Piece> topWithin(double c0, double c1) const;
 
   // The material a feed along `move` would remove now (remaining ∩ shadow), without removing it.
