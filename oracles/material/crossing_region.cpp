@@ -108,6 +108,44 @@ RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pai
   }
 }
 
+double RegionBelowGraph::topAt(double c) const {
+  auto it = std::lower_bound(top_.begin(), top_.end(), c, [](const auto& q, double v) { return q.first < v; });
+  if (it == top_.end()) return top_.back().second;
+  double depth = it->second;
+  if (it != top_.begin() && it->first > c) {
+    const auto& [c0, d0] = *(it - 1);
+    depth = d0 + (c - c0) / (it->first - c0) * (it->second - d0);
+  }
+  // Where a wall stands at c, its higher end.
+  for (auto at = it; at != top_.end() && at->first <= c; ++at) depth = std::max(depth, at->second);
+  return depth;
+}
+
+bool RegionBelowGraph::staysAbove(Point a, Point b) const {
+  double ca = frame_.cut(a), da = frame_.depth(a), cb = frame_.cut(b), db = frame_.depth(b);
+  if (ca > cb) {
+    std::swap(ca, cb);
+    std::swap(da, db);
+  }
+  const double cMin = top_.front().first, cMax = top_.back().first;
+  if (cb < cMin || ca > cMax) return true;  // beside the region
+  // Over the region only: clip the segment to its cut coordinates.
+  const auto depthAt = [&](double c) { return cb > ca ? da + (c - ca) / (cb - ca) * (db - da) : std::min(da, db); };
+  const double c0 = std::max(ca, cMin), c1 = std::min(cb, cMax);
+  if (depthAt(c0) < topAt(c0) || depthAt(c1) < topAt(c1)) return false;
+  const double lowest = std::min(depthAt(c0), depthAt(c1));
+  auto it = std::upper_bound(top_.begin(), top_.end(), c0, [](double v, const auto& q) { return v < q.first; });
+  for (std::size_t i = static_cast<std::size_t>(it - top_.begin()); i < top_.size() && top_[i].first < c1;) {
+    if (blockDepths_[std::min(i, top_.size() - 2) / kBlock].second <= lowest) {  // the block stands no higher
+      i = (i / kBlock + 1) * kBlock;
+      continue;
+    }
+    if (depthAt(top_[i].first) < top_[i].second) return false;
+    ++i;
+  }
+  return true;
+}
+
 bool RegionBelowGraph::contains(Point p) const {
   const double c = frame_.cut(p), d = frame_.depth(p);
   if (!(c > top_.front().first && c < top_.back().first && d > dBottom_)) return false;

@@ -159,11 +159,18 @@ struct Scratch {
 // The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region, into
 // `inside`. Away from every edge's ε-capsule the chord cannot cross the boundary, so each gap
 // between the near intervals lies wholly inside or wholly outside: its midpoint decides.
+// Whether the chord surely lies outside the region, without measuring: above the top of a region
+// below a graph; nothing is sure of a region of rings.
+bool surelyOutside(const CrossingRegion&, const Chord&) { return false; }
+bool surelyOutside(const RegionBelowGraph& region, const Chord& chord) {
+  return region.staysAbove(chord.a, chord.a + chord.d);
+}
+
 template <typename Region>
 void insideIntervals(const Region& region, const Chord& chord, double epsilon, Scratch& scratch,
                      std::vector<Interval>& inside) {
   inside.clear();
-  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax)) return;
+  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax) || surelyOutside(region, chord)) return;
   scratch.near.clear();
   region.forEachEdgeNear(chord.zMin - epsilon, chord.zMax + epsilon, chord.xMin - epsilon, chord.xMax + epsilon,
                          [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, scratch.near); });
@@ -358,7 +365,8 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
     const FrameBox box = frameBox();
     belowForCrossing_.emplace(frame_, cut_.belowTop(box.cMin, box.cMax, box.dBottom, box.dTop), box.dBottom);
   }
-  return crossingWithin(move, epsilon, chordTolerance_, stockForCrossing_, &*belowForCrossing_);
+  // Below the envelope first: a rapid in the air is found above it without measuring.
+  return crossingWithin(move, epsilon, chordTolerance_, *belowForCrossing_, &stockForCrossing_);
 }
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {
