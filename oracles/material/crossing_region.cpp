@@ -121,7 +121,7 @@ double RegionBelowGraph::topAt(double c) const {
   return depth;
 }
 
-bool RegionBelowGraph::staysAbove(Point a, Point b) const {
+bool RegionBelowGraph::staysAbove(Point a, Point b, double slack) const {
   double ca = frame_.cut(a), da = frame_.depth(a), cb = frame_.cut(b), db = frame_.depth(b);
   if (ca > cb) {
     std::swap(ca, cb);
@@ -132,15 +132,15 @@ bool RegionBelowGraph::staysAbove(Point a, Point b) const {
   // Over the region only: clip the segment to its cut coordinates.
   const auto depthAt = [&](double c) { return cb > ca ? da + (c - ca) / (cb - ca) * (db - da) : std::min(da, db); };
   const double c0 = std::max(ca, cMin), c1 = std::min(cb, cMax);
-  if (depthAt(c0) < topAt(c0) || depthAt(c1) < topAt(c1)) return false;
-  const double lowest = std::min(depthAt(c0), depthAt(c1));
+  if (depthAt(c0) < topAt(c0) - slack || depthAt(c1) < topAt(c1) - slack) return false;
+  const double lowest = std::min(depthAt(c0), depthAt(c1)) + slack;
   auto it = std::upper_bound(top_.begin(), top_.end(), c0, [](double v, const auto& q) { return v < q.first; });
   for (std::size_t i = static_cast<std::size_t>(it - top_.begin()); i < top_.size() && top_[i].first < c1;) {
     if (blockDepths_[std::min(i, top_.size() - 2) / kBlock].second <= lowest) {  // the block stands no higher
       i = (i / kBlock + 1) * kBlock;
       continue;
     }
-    if (depthAt(top_[i].first) < top_[i].second) return false;
+    if (depthAt(top_[i].first) < top_[i].second - slack) return false;
     ++i;
   }
   return true;

@@ -85,9 +85,10 @@ class RegionBelowGraph {
   bool contains(Point p) const;
   template <typename Visit>
   void forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const;
-  // Whether the segment a→b stays at or above the top wherever it passes over the region: then no
-  // point of it is inside. Their difference is linear between the top's points, so those decide.
-  bool staysAbove(Point a, Point b) const;
+  // Whether the segment a→b comes no more than `slack` below the top wherever it passes over the
+  // region: then no point of it is more than `slack` inside. Their difference is linear between the
+  // top's points, so those decide.
+  bool staysAbove(Point a, Point b, double slack = 0) const;
 
  private:
   Point world(double c, double d) const { return c * frame_.along() + d * frame_.away(); }

@@ -159,18 +159,19 @@ struct Scratch {
 // The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region, into
 // `inside`. Away from every edge's ε-capsule the chord cannot cross the boundary, so each gap
 // between the near intervals lies wholly inside or wholly outside: its midpoint decides.
-// Whether the chord surely lies outside the region, without measuring: above the top of a region
-// below a graph; nothing is sure of a region of rings.
-bool surelyOutside(const CrossingRegion&, const Chord&) { return false; }
-bool surelyOutside(const RegionBelowGraph& region, const Chord& chord) {
-  return region.staysAbove(chord.a, chord.a + chord.d);
+// Whether no point of the chord can be more than ε inside the region, without measuring: it comes
+// no more than ε below the top of a region below a graph (its distance to the boundary is no more
+// than that); nothing is sure of a region of rings.
+bool surelyNotInside(const CrossingRegion&, const Chord&, double) { return false; }
+bool surelyNotInside(const RegionBelowGraph& region, const Chord& chord, double epsilon) {
+  return region.staysAbove(chord.a, chord.a + chord.d, epsilon);
 }
 
 template <typename Region>
 void insideIntervals(const Region& region, const Chord& chord, double epsilon, Scratch& scratch,
                      std::vector<Interval>& inside) {
   inside.clear();
-  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax) || surelyOutside(region, chord)) return;
+  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax) || surelyNotInside(region, chord, epsilon)) return;
   scratch.near.clear();
   region.forEachEdgeNear(chord.zMin - epsilon, chord.zMax + epsilon, chord.xMin - epsilon, chord.xMax + epsilon,
                          [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, scratch.near); });
