@@ -6,7 +6,6 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
-#include <chrono>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -471,12 +470,10 @@ TEST(ReportHtml, AThousandFailuresMakeAPageOfReasonableSize) {
   json report = loadFixture();
   json& engine = engineNamed(report, "linuxcnc");
   addCopiesOfAPlottedFailure(engine, 1000, "bulk-");
-  const auto start = std::chrono::steady_clock::now();
+  // (How long rendering takes is measured in bench/report_bench.cpp.)
   const std::string page = renderReportHtml(report);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(svgFragments(page).size(), 40u);  // the default cap
   EXPECT_LT(page.size(), 8u << 20) << page.size();
-  EXPECT_LT(seconds, 10.0);
 }
 
 // ---- escaping and odd documents ---------------------------------------------------------------
