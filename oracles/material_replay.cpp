@@ -196,7 +196,7 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   const DepthFrame frame(away);
   if (isGraphOverCutAxis({move}, frame)) {
     const double a = frame.cut(move.from), b = frame.cut(move.to);
-    const auto top = thickestBeneath(model.topWithin(std::min(a, b), std::max(a, b)), {move}, away, tolerance / 2);
+    const auto top = thickestBeneath(model.topWithin(std::min(a, b), std::max(a, b)), {move}, away, kMeasuringChord);
     if (!top || top->thickness <= allowed) return std::nullopt;
   }
   const BgRegion layer = touching(model.remaining(), move, tolerance);

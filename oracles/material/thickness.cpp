@@ -49,8 +49,19 @@ struct RegionEdge {
 // to find those overlapping an interval quickly. Walls along the depth axis are left out.
 class ProfileSteps {
  public:
-  ProfileSteps(const std::vector<Segment>& profile, const DepthFrame& frame) {
+  // A profile that is a graph over the cut axis is measured exactly: under any point one piece
+  // (two at a junction, which the window's measurements cover), so the thickness above it is
+  // largest at the points measureEdge takes. Where the profile turns back, pieces overlap and the
+  // one beneath switches where they cross, which those points miss: such a profile is measured
+  // against fine chords (within `chordTolerance`) instead, which sample it densely.
+  ProfileSteps(const std::vector<Segment>& profile, const DepthFrame& frame, double chordTolerance) {
+    const bool graph = isGraphOverCutAxis(profile, frame);
     for (const Segment& segment : profile) {
+      if (!graph && segment.isArc()) {
+        const std::vector<Point> chords = flatten(segment, chordTolerance);
+        for (std::size_t i = 1; i < chords.size(); ++i) add({SegmentKind::Line, chords[i - 1], chords[i], {}, 0}, frame);
+        continue;
+      }
       for (const Segment& piece : splitWhereTangentIsAlong(segment, frame)) add(piece, frame);
     }
     std::sort(steps_.begin(), steps_.end(),
@@ -193,7 +204,7 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
                                       Point away, double chordTolerance) {
   if (region.empty() || profile.empty()) return std::nullopt;
   const DepthFrame frame(away);
-  const ProfileSteps steps(profile, frame);
+  const ProfileSteps steps(profile, frame, chordTolerance);
   const double resolution = std::max(kTidyDistance, 4 * kBooleanResolution * sizeOf(region));
   ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution);
   auto visitRing = [&search](const BgPolygon::ring_type& ring) {
@@ -212,7 +223,7 @@ std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& t
                                         Point away, double chordTolerance) {
   if (top.empty() || profile.empty()) return std::nullopt;
   const DepthFrame frame(away);
-  const ProfileSteps steps(profile, frame);
+  const ProfileSteps steps(profile, frame, chordTolerance);
   double cMin = INFINITY, cMax = -INFINITY, dMin = INFINITY, dMax = -INFINITY;
   for (const CutEnvelope::Piece& p : top) {
     cMin = std::min(cMin, p.c0);

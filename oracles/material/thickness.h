@@ -23,7 +23,8 @@ struct Thickest {
 // (material beside a shoulder is measured from the step below it), and material beyond the
 // profile's ends (outside its span) or under it is not measured.
 //
-// Tolerance. The profile is measured exactly, its arcs as arcs. The region's points may stand up to
+// Tolerance. A profile that is a graph over the cut axis is measured exactly, its arcs as arcs
+// (one that turns back along it, against chords within chordTolerance). The region's points may stand up to
 // chordTolerance sideways of where they belong (pass the tolerance its arcs were flattened with,
 // or a finer one when its vertices lie on the arcs exactly); next to a point where the profile is
 // steep, that reads as thickness along the depth axis. So "the profile beneath" a point at cut
