@@ -191,8 +191,8 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   const double tolerance = settings.tolerance();
   const double allowed = c.depthOfCut + tolerance;
   // Most passes provably remove no more than Δd: the material's top over the move, measured
-  // against it, bounds the layer (thickness.h, thickestBeneath) and spares making the material left
-  // (within ± the tolerance along the cut axis, as skins narrower than that are no layer below).
+  // against it as finely as the region below would be, bounds the layer (thickness.h,
+  // thickestBeneath) and spares making the material left.
   const DepthFrame frame(away);
   if (isGraphOverCutAxis({move}, frame)) {
     const double a = frame.cut(move.from), b = frame.cut(move.to);
