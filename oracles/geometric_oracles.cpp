@@ -38,10 +38,9 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
   const auto span = targetSpan(r, tolerance);
   if (!span) return {};
   // The span as a band across the depth axis, as wide as the shadows reach.
-  const Point along{r.away.x, -r.away.z};
-  const auto corner = [&](double cut, double depth) { return cut * along + depth * r.away; };
-  const BgRegion band = regionFrom({corner(span->first, -r.reach), corner(span->second, -r.reach),
-                                    corner(span->second, r.reach), corner(span->first, r.reach)});
+  const DepthFrame frame(r.away);
+  const BgRegion band = regionFrom({frame.point(span->first, -r.reach), frame.point(span->second, -r.reach),
+                                    frame.point(span->second, r.reach), frame.point(span->first, r.reach)});
   return checkedIntersection(without(r.remaining(), r.part), band);
 }
 

@@ -1,7 +1,6 @@
 #include "oracles/material_replay.h"
 
 #include <algorithm>
-#include <numbers>
 
 #include "oracles/material/boost_geometry.h"
 #include "reference/model/offset.h"
@@ -17,10 +16,10 @@ Point awayFrom(const CycleSpec& c) {
 
 BgRegion withoutSkins(const BgRegion& region, Point away, double width) {
   const DepthFrame frame(away);
-  const Point along{frame.away().x, -frame.away().z};
   const auto shifted = [&](double by) {
     BgRegion moved;
-    boost::geometry::strategy::transform::translate_transformer<double, 2, 2> shift(by * along.z, by * along.x);
+    const Point step = frame.point(by, 0);
+    boost::geometry::strategy::transform::translate_transformer<double, 2, 2> shift(step.z, step.x);
     boost::geometry::transform(region, moved, shift);
     return moved;
   };
@@ -32,11 +31,12 @@ BgRegion withoutSkins(const BgRegion& region, Point away, double width) {
 
 namespace {
 
-// The part's outline: the profile flattened, then down to a bottom line `reach` beyond its deepest
-// point, and back.
+// The part's outline: the (non-empty) profile flattened, then down to a bottom line `reach` beyond
+// its deepest point, and back; and whether the profile is a graph over the cut axis.
 struct PartOutline {
   std::vector<Point> profile;
   double bottom = 0;
+  bool graph = false;
 };
 
 PartOutline partOutlineOf(const std::vector<Segment>& profile, const DepthFrame& frame, double reach, double chordTolerance) {
@@ -47,7 +47,24 @@ PartOutline partOutlineOf(const std::vector<Segment>& profile, const DepthFrame&
     for (Point p : {s.from, s.to}) deepest = std::min(deepest, frame.depth(p));
   }
   o.bottom = deepest - reach;
+  o.graph = isGraphOverCutAxis(profile, frame);
   return o;
+}
+
+BgRegion partRegionFrom(const PartOutline& part, const std::vector<Segment>& profile, const DepthFrame& frame,
+                        double reach, double chordTolerance) {
+  std::vector<Point> outline = part.profile;
+  outline.push_back(frame.atDepth(profile.back().to, part.bottom));
+  outline.push_back(frame.atDepth(profile.front().from, part.bottom));
+  // A graph over the cut axis closes into a simple outline: Boost's validity check, which costs
+  // more than the rest, is not needed.
+  if (part.graph) return regionFromSimpleOutline(outline);
+  try {
+    return regionFrom(outline);
+  } catch (const std::invalid_argument&) {
+    // A profile crossing itself: the union of its chords' regions.
+    return partRegion(profile, frame.away(), reach, chordTolerance);
+  }
 }
 
 }  // namespace
@@ -55,18 +72,7 @@ PartOutline partOutlineOf(const std::vector<Segment>& profile, const DepthFrame&
 BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance) {
   if (profile.empty()) return {};
   const DepthFrame frame(away);
-  const PartOutline part = partOutlineOf(profile, frame, reach, chordTolerance);
-  std::vector<Point> outline = part.profile;
-  outline.push_back(frame.atDepth(profile.back().to, part.bottom));
-  outline.push_back(frame.atDepth(profile.front().from, part.bottom));
-  // A graph over the cut axis closes into a simple outline: Boost's validity check, which costs
-  // more than the rest, is not needed.
-  if (isGraphOverCutAxis(profile, frame)) return regionFromSimpleOutline(outline);
-  try {
-    return regionFrom(outline);
-  } catch (const std::invalid_argument&) {
-    return partRegion(profile, away, reach, chordTolerance);  // a profile crossing itself: the union of its chords' regions
-  }
+  return partRegionFrom(partOutlineOf(profile, frame, reach, chordTolerance), profile, frame, reach, chordTolerance);
 }
 
 namespace {
@@ -79,13 +85,9 @@ double highestBetweenEnds(const std::vector<Segment>& path, const DepthFrame& fr
     const Segment& s = path[i];
     if (i > 0) highest = std::max(highest, frame.depth(s.from));
     if (i + 1 < path.size()) highest = std::max(highest, frame.depth(s.to));
-    if (!s.isArc()) continue;
-    const double start = std::atan2(s.from.x - s.center.x, s.from.z - s.center.z);
-    const double top = std::atan2(frame.away().x, frame.away().z);
-    const double span = sweep(s);
-    double offset = std::fmod((span < 0 ? -1 : 1) * (top - start), 2 * std::numbers::pi);
-    if (offset < 0) offset += 2 * std::numbers::pi;
-    if (offset < std::abs(span)) highest = std::max(highest, frame.depth(s.center) + s.radius());
+    if (s.isArc() && offsetAlongArc(s, std::atan2(frame.away().x, frame.away().z))) {
+      highest = std::max(highest, frame.depth(s.center) + s.radius());
+    }
   }
   return highest;
 }
@@ -113,10 +115,8 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
     outline.push_back(frame.atDepth(c.shape.front().from, level));
     return regionFromSimpleOutline(outline);
   }
-  const Point along{away.x, -away.z};
-  const Point unitAway = frame.away();
-  const auto corner = [&](double cut, double depth) { return cut * along + depth * unitAway; };
-  const BgRegion band = regionFrom({corner(lo, level), corner(hi, level), corner(hi, level - reach), corner(lo, level - reach)});
+  const BgRegion band = regionFrom({frame.point(lo, level), frame.point(hi, level), frame.point(hi, level - reach),
+                                    frame.point(lo, level - reach)});
   return without(band, partRegionOf(c.shape, away, reach, chordTolerance));
 }
 
@@ -245,19 +245,21 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   r.target = in.program.hasFinishingCycle ? c->shape : c->roughProfile();
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
   const std::vector<Segment> profile(r.target.begin() + (c->typeII ? 0 : 1), r.target.end());
-  r.part = partRegionOf(profile, r.away, r.reach, in.settings.chordTolerance);
-  // No-gouge's crossing tests: below a profile that is a graph over the cut axis the part's edges
-  // are found by their cut coordinates (nothing to build); any other part's rings are indexed.
   const DepthFrame frame(r.away);
-  if (!profile.empty() && isGraphOverCutAxis(profile, frame)) {
+  if (!profile.empty()) {
     const PartOutline part = partOutlineOf(profile, frame, r.reach, in.settings.chordTolerance);
-    std::vector<std::pair<double, double>> top;
-    for (Point p : part.profile) top.push_back({frame.cut(p), frame.depth(p)});
-    if (top.front().first > top.back().first) std::reverse(top.begin(), top.end());
-    r.partBelowProfile.emplace(frame, std::move(top), part.bottom);
-  } else {
-    r.partForCrossing = CrossingRegion(r.part);
+    r.part = partRegionFrom(part, profile, frame, r.reach, in.settings.chordTolerance);
+    // No-gouge's crossing tests: below a profile that is a graph over the cut axis the part's
+    // edges are found by their cut coordinates (nothing to build); any other part's rings are
+    // indexed.
+    if (part.graph) {
+      std::vector<std::pair<double, double>> top;
+      for (Point p : part.profile) top.push_back({frame.cut(p), frame.depth(p)});
+      if (top.front().first > top.back().first) std::reverse(top.begin(), top.end());
+      r.partBelowProfile.emplace(frame, std::move(top), part.bottom);
+    }
   }
+  if (!r.partBelowProfile) r.partForCrossing = CrossingRegion(r.part);
 
   MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
   const double tolerance = in.settings.tolerance();

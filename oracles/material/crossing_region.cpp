@@ -99,7 +99,7 @@ RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pai
     high = std::max({high, top_[k].second, top_[k + 1].second});
   }
   for (const auto& [c, d] : top_) {
-    for (const Point p : {world(c, d), world(c, dBottom_)}) {
+    for (const Point p : {frame_.point(c, d), frame_.point(c, dBottom_)}) {
       zMin_ = std::min(zMin_, p.z);
       zMax_ = std::max(zMax_, p.z);
       xMin_ = std::min(xMin_, p.x);

@@ -18,7 +18,6 @@ class CrossingRegion {
   explicit CrossingRegion(const BgRegion& region);
   explicit CrossingRegion(const std::vector<std::vector<Point>>& rings);  // each closed implicitly
 
-  bool empty() const { return grid_.empty() && long_.empty(); }
   // Whether the box [zMin, zMax] × [xMin, xMax] meets the region's box.
   bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
     return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
@@ -91,7 +90,6 @@ class RegionBelowGraph {
   bool staysAbove(Point a, Point b, double slack = 0) const;
 
  private:
-  Point world(double c, double d) const { return c * frame_.along() + d * frame_.away(); }
   double topAt(double c) const;  // the top's depth at c (the higher side of a wall standing there)
 
   static constexpr std::size_t kBlock = 16;  // top edges per block
@@ -108,25 +106,19 @@ template <typename Visit>
 void RegionBelowGraph::forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const {
   const double cMin = top_.front().first, cMax = top_.back().first;
   // The sides and the bottom, always; then the top's edges over the query's cut coordinates.
-  visit(world(cMin, dBottom_), world(cMin, top_.front().second));
-  visit(world(cMax, top_.back().second), world(cMax, dBottom_));
-  visit(world(cMax, dBottom_), world(cMin, dBottom_));
-  double c0 = INFINITY, c1 = -INFINITY, d0 = INFINITY, d1 = -INFINITY;
-  for (const Point corner : {Point{zMin, xMin}, Point{zMin, xMax}, Point{zMax, xMin}, Point{zMax, xMax}}) {
-    c0 = std::min(c0, frame_.cut(corner));
-    c1 = std::max(c1, frame_.cut(corner));
-    d0 = std::min(d0, frame_.depth(corner));
-    d1 = std::max(d1, frame_.depth(corner));
-  }
-  auto it = std::lower_bound(top_.begin(), top_.end(), c0, [](const auto& p, double c) { return p.first < c; });
+  visit(frame_.point(cMin, dBottom_), frame_.point(cMin, top_.front().second));
+  visit(frame_.point(cMax, top_.back().second), frame_.point(cMax, dBottom_));
+  visit(frame_.point(cMax, dBottom_), frame_.point(cMin, dBottom_));
+  const DepthFrame::Ranges q = frame_.rangesOf(zMin, zMax, xMin, xMax);
+  auto it = std::lower_bound(top_.begin(), top_.end(), q.cMin, [](const auto& p, double c) { return p.first < c; });
   std::size_t i = it == top_.begin() ? 0 : static_cast<std::size_t>(it - top_.begin()) - 1;
-  while (i + 1 < top_.size() && top_[i].first <= c1) {
+  while (i + 1 < top_.size() && top_[i].first <= q.cMax) {
     const auto& [low, high] = blockDepths_[i / kBlock];
-    if (high < d0 || low > d1) {  // the rest of this block stands wholly above or below the query
+    if (high < q.dMin || low > q.dMax) {  // the rest of this block stands wholly above or below the query
       i = (i / kBlock + 1) * kBlock;
       continue;
     }
-    visit(world(top_[i].first, top_[i].second), world(top_[i + 1].first, top_[i + 1].second));
+    visit(frame_.point(top_[i].first, top_[i].second), frame_.point(top_[i + 1].first, top_[i + 1].second));
     ++i;
   }
 }

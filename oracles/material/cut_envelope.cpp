@@ -117,9 +117,6 @@ bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
   return lowered;
 }
 
-BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const {
-  return regionFromSimpleOutline(belowOutline(frame, cMin, cMax, dBottom, dTop));
-}
 
 std::vector<std::pair<double, double>> CutEnvelope::belowTop(double cMin, double cMax, double dBottom,
                                                              double dTop) const {
@@ -142,16 +139,12 @@ std::vector<std::pair<double, double>> CutEnvelope::belowTop(double cMin, double
   return top;
 }
 
-std::vector<Point> CutEnvelope::belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom,
-                                             double dTop) const {
-  const auto top = belowTop(cMin, cMax, dBottom, dTop);
+BgRegion CutEnvelope::below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const {
   std::vector<Point> outline;
-  outline.reserve(top.size() + 2);
-  const auto world = [&](double c, double d) { return c * frame.along() + d * frame.away(); };
-  for (const auto& [c, d] : top) outline.push_back(world(c, d));
-  outline.push_back(world(cMax, dBottom));
-  outline.push_back(world(cMin, dBottom));
-  return outline;
+  for (const auto& [c, d] : belowTop(cMin, cMax, dBottom, dTop)) outline.push_back(frame.point(c, d));
+  outline.push_back(frame.point(cMax, dBottom));
+  outline.push_back(frame.point(cMin, dBottom));
+  return regionFromSimpleOutline(outline);  // a graph over the cut axis above a flat bottom
 }
 
 }  // namespace cyclecert

@@ -38,9 +38,8 @@ class CutEnvelope {
   // [dBottom, dTop] of the frame, as a region of the plane: the box itself where no feed has been.
   // The box must hold the stock; depths beyond it are clipped to it.
   BgRegion below(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
-  // That region's outline (a graph over the cut axis above a flat bottom, not crossing itself).
-  std::vector<Point> belowOutline(const DepthFrame& frame, double cMin, double cMax, double dBottom, double dTop) const;
-  // The outline's top alone, as (cut, depth) in frame coordinates from cMin to cMax.
+  // That region's top, as (cut, depth) in frame coordinates from cMin to cMax: a graph over the cut
+  // axis (the region is below it, down to dBottom).
   std::vector<std::pair<double, double>> belowTop(double cMin, double cMax, double dBottom, double dTop) const;
 
  private:

@@ -2,6 +2,7 @@
 // The cycle's frame as the material model sees it: a depth axis (along `away`, which points from
 // the part towards the cycle start side) and a cut axis perpendicular to it. G71 outer turning:
 // away = (0, +1); boring: (0, −1); G72 facing: (±1, 0).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -32,6 +33,25 @@ class DepthFrame {
   // The point with p's cut coordinate at the given depth.
   Point atDepth(Point p, double depthCoordinate) const {
     return p + (depthCoordinate - depth(p)) * away_;
+  }
+  // The point of the plane at the given frame coordinates.
+  Point point(double cutCoordinate, double depthCoordinate) const {
+    return cutCoordinate * along_ + depthCoordinate * away_;
+  }
+
+  // The ranges of cut and depth coordinates a box of the plane, [zMin, zMax] × [xMin, xMax], spans.
+  struct Ranges {
+    double cMin, cMax, dMin, dMax;
+  };
+  Ranges rangesOf(double zMin, double zMax, double xMin, double xMax) const {
+    Ranges r{INFINITY, -INFINITY, INFINITY, -INFINITY};
+    for (const Point corner : {Point{zMin, xMin}, Point{zMin, xMax}, Point{zMax, xMin}, Point{zMax, xMax}}) {
+      r.cMin = std::min(r.cMin, cut(corner));
+      r.cMax = std::max(r.cMax, cut(corner));
+      r.dMin = std::min(r.dMin, depth(corner));
+      r.dMax = std::max(r.dMax, depth(corner));
+    }
+    return r;
   }
 
  private:

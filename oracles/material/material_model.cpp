@@ -301,22 +301,15 @@ void MaterialModel::apply(const Segment& move, MoveKind kind) {
     lowered = cut_.lower(flatten(part, chordTolerance_), frame_) || lowered;
   }
   if (lowered) {
-    belowOutline_.reset();
     belowForCrossing_.reset();
     remaining_.reset();
   }
 }
 
 MaterialModel::FrameBox MaterialModel::inFrame(const Box& box) const {
-  FrameBox out{INFINITY, -INFINITY, INFINITY, -INFINITY};
   const BgPoint lo = box.min_corner(), hi = box.max_corner();
-  for (const Point corner : {Point{lo.x(), lo.y()}, Point{lo.x(), hi.y()}, Point{hi.x(), lo.y()}, Point{hi.x(), hi.y()}}) {
-    out.cMin = std::min(out.cMin, frame_.cut(corner));
-    out.cMax = std::max(out.cMax, frame_.cut(corner));
-    out.dBottom = std::min(out.dBottom, frame_.depth(corner));
-    out.dTop = std::max(out.dTop, frame_.depth(corner));
-  }
-  return out;
+  const DepthFrame::Ranges r = frame_.rangesOf(lo.x(), hi.x(), lo.y(), hi.y());
+  return {r.cMin, r.cMax, r.dMin, r.dMax};
 }
 
 // The frame box the stock stands in, 1 mm wider on every side (and below every feed): the region
@@ -331,21 +324,14 @@ MaterialModel::FrameBox MaterialModel::frameBox() const {
   return box;
 }
 
-const std::vector<Point>& MaterialModel::belowOutline() const {
-  if (!belowOutline_) {
-    const FrameBox box = frameBox();
-    belowOutline_ = cut_.belowOutline(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
-  }
-  return *belowOutline_;
-}
-
 const BgRegion& MaterialModel::remaining() const {
   if (remaining_) return *remaining_;
   if (cut_.empty() || stock_.empty()) {
     remaining_ = stock_;
     return *remaining_;
   }
-  const BgRegion below = regionFromSimpleOutline(belowOutline());
+  const FrameBox box = frameBox();
+  const BgRegion below = cut_.below(frame_, box.cMin, box.cMax, box.dBottom, box.dTop);
   BgRegion rest = checkedIntersection(stock_, below);
   Box operands = stockEnvelope_;
   bg::expand(operands, envelopeOf(below));

@@ -88,8 +88,6 @@ class MaterialModel {
 
   FrameBox inFrame(const Box& box) const;  // the box's ranges along the cut and depth axes
   FrameBox frameBox() const;
-  // The outline of the region below the envelope, within frameBox() (CutEnvelope::belowOutline).
-  const std::vector<Point>& belowOutline() const;
   // The deepest the stock comes over the cut coordinates [c0, c1]; nothing when it has no point
   // there. Where the range has some width, a wall standing at one of its ends does not count.
   std::optional<double> stockDeepestWithin(double c0, double c1) const;
@@ -102,8 +100,8 @@ class MaterialModel {
   double reach_;
   double chordTolerance_;
   CutEnvelope cut_;
-  mutable std::optional<std::vector<Point>> belowOutline_;  // made when first needed after a feed
-  mutable std::optional<RegionBelowGraph> belowForCrossing_;  // likewise
+  // The region below the envelope as the crossing tests see it; made when first needed after a feed.
+  mutable std::optional<RegionBelowGraph> belowForCrossing_;
   mutable std::optional<BgRegion> remaining_;  // likewise
 };
 

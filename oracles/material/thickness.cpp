@@ -178,7 +178,7 @@ class ThicknessSearch {
     if (!beneath) return;
     const double thickness = d - *beneath;
     if (!best_ || thickness > best_->thickness) {
-      const Point where = frame_.atDepth(c * frame_.along(), d);
+      const Point where = frame_.point(c, d);
       best_ = Thickest{thickness, where, frame_.atDepth(where, *beneath)};
     }
   }

@@ -17,8 +17,8 @@ double normalized(double a) {
   return a < 0 ? a + kTwoPi : a;
 }
 
-// How far along the arc (0 at `from`, |sweep| at `to`) the angle `a` lies, or nothing when the
-// angle is outside the arc's span (with a small angular tolerance).
+}  // namespace
+
 std::optional<double> offsetAlongArc(const Segment& s, double a) {
   const double start = angleOf(s.from, s.center);
   const double span = std::abs(sweep(s));
@@ -28,7 +28,6 @@ std::optional<double> offsetAlongArc(const Segment& s, double a) {
   if (off <= span + angularTol) return std::min(off, span);
   return std::nullopt;
 }
-}  // namespace
 
 // Coordinates are millimetres: no overflow for std::hypot to guard against, and it is slow.
 double distance(Point a, Point b) { return std::sqrt((a.z - b.z) * (a.z - b.z) + (a.x - b.x) * (a.x - b.x)); }

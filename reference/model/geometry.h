@@ -44,6 +44,11 @@ Point pointAt(const Segment& s, double t);
 // Signed sweep angle of an arc in radians (negative for CW), in (-2π, 2π]; 0 for lines.
 double sweep(const Segment& s);
 
+// How far along the arc (0 at `from`, |sweep| at `to`) the angle `a` around its centre lies
+// (measured as atan2(x, z) of the direction from the centre), or nothing when the angle is outside
+// the arc's span (with an angular tolerance of 1e-9).
+std::optional<double> offsetAlongArc(const Segment& s, double a);
+
 // Exchanges the roles of z and x (transposes the plane); arcs change direction.
 Point transposed(Point p);
 Segment transposed(const Segment& s);
