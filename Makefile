@@ -6,7 +6,7 @@
 BUILD      ?= build
 BUILD_TYPE ?= RelWithDebInfo
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
-DEB_PACKAGES := librapidcheck-dev libgtest-dev nlohmann-json3-dev libboost-dev libbenchmark-dev libssl-dev cmake g++ make git python3 python3-jsonschema libxml2-utils
+DEB_PACKAGES := librapidcheck-dev libgtest-dev nlohmann-json3-dev libboost-dev libbenchmark-dev libgoogle-perftools-dev libssl-dev cmake g++ make git python3 python3-jsonschema libxml2-utils
 # Only the tests need a browser (they open the HTML report in headless Chromium); `make run` does not.
 TEST_DEB_PACKAGES := chromium
 
