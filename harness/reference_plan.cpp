@@ -1,6 +1,8 @@
 #include "harness/reference_plan.h"
 
+#include <deque>
 #include <regex>
+#include <unordered_map>
 
 #include "reference/gcode/parser.h"
 #include "reference/model/profile.h"
@@ -18,18 +20,22 @@ std::string profileFromHeader(const std::string& text) {
 
 namespace {
 
-// The last program parsed on this thread, with the text and file it came from.
+// The programs parsed lately on this thread, by file and text: an engine and the judge read the
+// same program, and fuzz plans a whole batch of cases (kFuzzBatch, 64) before it judges them.
 std::shared_ptr<const Program> parsedOnce(const std::string& text, const std::string& file) {
-  thread_local struct {
-    std::string text, file;
-    std::shared_ptr<const Program> program;
-  } last;
-  if (!last.program || last.text != text || last.file != file) {
-    last.program = std::make_shared<const Program>(parseProgram(text, file));
-    last.text = text;
-    last.file = file;
+  constexpr std::size_t kKept = 128;
+  thread_local std::unordered_map<std::string, std::shared_ptr<const Program>> parsed;
+  thread_local std::deque<std::string> oldestFirst;
+  std::string key = file + '\0' + text;
+  if (const auto found = parsed.find(key); found != parsed.end()) return found->second;
+  auto program = std::make_shared<const Program>(parseProgram(text, file));
+  if (oldestFirst.size() == kKept) {
+    parsed.erase(oldestFirst.front());
+    oldestFirst.pop_front();
   }
-  return last.program;
+  parsed.emplace(key, program);
+  oldestFirst.push_back(std::move(key));
+  return program;
 }
 
 }  // namespace

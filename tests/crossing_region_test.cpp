@@ -99,14 +99,17 @@ RC_GTEST_PROP(CrossingRegion, TheRegionBelowTheEnvelopeAgreesWithBoost, ()) {
     if (distanceToBoundary(below, p) < 1e-6) continue;
     RC_ASSERT(index.contains(p) == bg::within(toBg(p), below));
   }
-  // A segment the index finds above the top (or no more than a slack below it) has no point
-  // inside (more than the slack deep).
+  // A segment the index finds no more than a slack inside has no point inside more than the slack
+  // deep: segments along either axis (along the depth axis on the walls' cut coordinates, the grid
+  // being the feeds'), and any other.
   const double slack = *rc::gen::element(0.0, 0.5);
   for (int k = 0; k < 50; ++k) {
     const Point a{*rc::gen::inRange(-400, 400) / 10.0, *rc::gen::inRange(-400, 400) / 10.0};
-    const Point b = *rc::gen::element(0, 1) ? a + Point{*rc::gen::inRange(-300, 300) / 10.0, 0}
-                                           : Point{*rc::gen::inRange(-400, 400) / 10.0, *rc::gen::inRange(-400, 400) / 10.0};
-    if (!index.staysAbove(a, b, slack)) continue;
+    const int direction = *rc::gen::inRange(0, 3);
+    const Point b = direction == 0   ? a + Point{*rc::gen::inRange(-300, 300) / 10.0, 0}
+                    : direction == 1 ? a + Point{0, *rc::gen::inRange(-300, 300) / 10.0}
+                                     : Point{*rc::gen::inRange(-400, 400) / 10.0, *rc::gen::inRange(-400, 400) / 10.0};
+    if (!index.staysWithin(a, b, slack)) continue;
     for (int t = 0; t <= 100; ++t) {
       const Point p = a + (t / 100.0) * (b - a);
       RC_ASSERT(!bg::within(toBg(p), below) || distanceToBoundary(below, p) < slack + 1e-9);

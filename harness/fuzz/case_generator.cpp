@@ -1,7 +1,7 @@
 #include "harness/fuzz/case_generator.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -9,9 +9,17 @@ namespace cyclecert {
 
 namespace {
 
+// Hundredths of a millimetre as a program writes them: "12.5", "-0.05", "3" (no trailing zeros,
+// as an ostream of precision 12 writes the value).
 std::string mm(long hundredths) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", hundredths / 100.0);  // as an ostream of precision 12 writes it
+  std::string text = hundredths < 0 ? "-" : "";
+  const unsigned long h = static_cast<unsigned long>(std::labs(hundredths));
+  text += std::to_string(h / 100);
+  if (const unsigned long fraction = h % 100) {
+    text += '.';
+    text += static_cast<char>('0' + fraction / 10);
+    if (fraction % 10) text += static_cast<char>('0' + fraction % 10);
+  }
   return text;
 }
 

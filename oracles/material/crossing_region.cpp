@@ -121,14 +121,28 @@ double RegionBelowGraph::topAt(double c) const {
   return depth;
 }
 
-bool RegionBelowGraph::staysAbove(Point a, Point b, double slack) const {
+bool RegionBelowGraph::staysWithin(Point a, Point b, double slack) const {
   double ca = frame_.cut(a), da = frame_.depth(a), cb = frame_.cut(b), db = frame_.depth(b);
   if (ca > cb) {
     std::swap(ca, cb);
     std::swap(da, db);
   }
+  if (cb < top_.front().first || ca > top_.back().first) return true;  // beside the region
+  // Along the depth axis: each point has one at or above the top within `slack` beside it.
+  if (cb - ca <= kGeomEps && std::min(da, db) >= lowestTopWithin(ca - slack, cb + slack)) return true;
+  return staysAbove(ca, da, cb, db, slack);
+}
+
+double RegionBelowGraph::lowestTopWithin(double c0, double c1) const {
+  if (c0 <= top_.front().first || c1 >= top_.back().first) return -INFINITY;
+  double lowest = std::min(topAt(c0), topAt(c1));
+  auto it = std::lower_bound(top_.begin(), top_.end(), c0, [](const auto& q, double v) { return q.first < v; });
+  for (; it != top_.end() && it->first <= c1; ++it) lowest = std::min(lowest, it->second);
+  return lowest;
+}
+
+bool RegionBelowGraph::staysAbove(double ca, double da, double cb, double db, double slack) const {
   const double cMin = top_.front().first, cMax = top_.back().first;
-  if (cb < cMin || ca > cMax) return true;  // beside the region
   // Over the region only: clip the segment to its cut coordinates.
   const auto depthAt = [&](double c) { return cb > ca ? da + (c - ca) / (cb - ca) * (db - da) : std::min(da, db); };
   const double c0 = std::max(ca, cMin), c1 = std::min(cb, cMax);

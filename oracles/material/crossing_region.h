@@ -84,13 +84,17 @@ class RegionBelowGraph {
   bool contains(Point p) const;
   template <typename Visit>
   void forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const;
-  // Whether the segment a→b comes no more than `slack` below the top wherever it passes over the
-  // region: then no point of it is more than `slack` inside. Their difference is linear between the
-  // top's points, so those decide.
-  bool staysAbove(Point a, Point b, double slack = 0) const;
+  // Whether no point of the segment a→b is more than `slack` inside, found without measuring: it
+  // comes no more than `slack` below the top wherever it passes over the region (their difference
+  // is linear between the top's points, so those decide), or — a segment along the depth axis, as
+  // a plunge or a move down a wall — it stands no lower than the top somewhere within `slack` of
+  // it along the cut axis (beside a wall, or a side of the region).
+  bool staysWithin(Point a, Point b, double slack) const;
 
  private:
   double topAt(double c) const;  // the top's depth at c (the higher side of a wall standing there)
+  bool staysAbove(double ca, double da, double cb, double db, double slack) const;  // ca < cb
+  double lowestTopWithin(double c0, double c1) const;  // -∞ where [c0, c1] reaches past a side
 
   static constexpr std::size_t kBlock = 16;  // top edges per block
 

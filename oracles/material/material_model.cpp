@@ -156,17 +156,16 @@ struct Scratch {
   std::vector<Interval> near, gaps, inside, insideAlso, both;
 };
 
+// Whether no point of the chord can be more than ε inside the region, without measuring: a region
+// below a graph knows (RegionBelowGraph::staysWithin); nothing is sure of a region of rings.
+bool surelyNotInside(const CrossingRegion&, const Chord&, double) { return false; }
+bool surelyNotInside(const RegionBelowGraph& region, const Chord& chord, double epsilon) {
+  return region.staysWithin(chord.a, chord.a + chord.d, epsilon);
+}
+
 // The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region, into
 // `inside`. Away from every edge's ε-capsule the chord cannot cross the boundary, so each gap
 // between the near intervals lies wholly inside or wholly outside: its midpoint decides.
-// Whether no point of the chord can be more than ε inside the region, without measuring: it comes
-// no more than ε below the top of a region below a graph (its distance to the boundary is no more
-// than that); nothing is sure of a region of rings.
-bool surelyNotInside(const CrossingRegion&, const Chord&, double) { return false; }
-bool surelyNotInside(const RegionBelowGraph& region, const Chord& chord, double epsilon) {
-  return region.staysAbove(chord.a, chord.a + chord.d, epsilon);
-}
-
 template <typename Region>
 void insideIntervals(const Region& region, const Chord& chord, double epsilon, Scratch& scratch,
                      std::vector<Interval>& inside) {

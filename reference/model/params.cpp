@@ -56,10 +56,11 @@ const std::vector<ParamSpec>& MachineParams::catalogue() {
 }
 
 namespace {
+char toUpper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
 bool sameName(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
-         });
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return toUpper(x) == toUpper(y); });
 }
 
 std::string_view trimmed(std::string_view s) {
@@ -78,7 +79,7 @@ const ParamSpec* MachineParams::find(std::string_view name) {
 }
 
 MachineParams::MachineParams() {
-  for (const ParamSpec& p : catalogue()) values_[p.number] = p.defaultValue;
+  for (const ParamSpec& p : catalogue()) values_.push_back(p.defaultValue);
 }
 
 static const ParamSpec& require(std::string_view name) {
@@ -90,7 +91,10 @@ static const ParamSpec& require(std::string_view name) {
   return *p;
 }
 
-double MachineParams::get(std::string_view name) const { return values_.at(require(name).number); }
+// Where a parameter's value is kept: its place in the catalogue.
+static std::size_t indexOf(const ParamSpec& p) { return static_cast<std::size_t>(&p - MachineParams::catalogue().data()); }
+
+double MachineParams::get(std::string_view name) const { return values_[indexOf(require(name))]; }
 
 void MachineParams::set(std::string_view name, double value) {
   const ParamSpec& p = require(name);
@@ -100,7 +104,7 @@ void MachineParams::set(std::string_view name, double value) {
     throw std::invalid_argument("parameter " + label + " is a bit: expected 0 or 1");
   }
   if (!p.isBit && value < 0) throw std::invalid_argument("parameter " + label + ": expected a value ≥ 0");
-  values_[p.number] = value;
+  values_[indexOf(p)] = value;
 }
 
 void MachineParams::setFromText(std::string_view assignment) {

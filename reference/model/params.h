@@ -2,7 +2,6 @@
 // MachineParams: the controller parameters the rules name, each with its number ("5132", "5105#1"),
 // its mnemonic where FANUC gives one ("RF1"), its default and the rule IDs it serves. A parameter
 // can be named either way: set("5105#1", 1) and set("RF1", 1) are the same.
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -42,7 +41,7 @@ class MachineParams {
   void setFromText(std::string_view assignment);
 
  private:
-  std::map<std::string, double> values_;  // keyed by ParamSpec::number
+  std::vector<double> values_;  // in the catalogue's order
 };
 
 }  // namespace cyclecert
