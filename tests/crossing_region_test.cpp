@@ -143,5 +143,23 @@ TEST(CrossingRegion, AWallOnTheFarSideOfTheIndexCounts) {
   EXPECT_TRUE(index.contains({-5, 17}));
 }
 
+// A wall in the top (from depth 2 up to 5 at cut 10): a segment at depth 3 leaving the wall
+// towards the high side runs inside; one reaching the wall from the low side stays outside, as
+// does a move down the wall itself or beside it within the slack — but not farther off.
+TEST(CrossingRegion, TheTopOnEachSideOfAWall) {
+  const DepthFrame frame(Point{0, 1});
+  const RegionBelowGraph index(frame, {{0, 2}, {10, 2}, {10, 5}, {20, 5}}, -10);
+  const auto at = [&](double c, double d) { return frame.point(c, d); };
+  EXPECT_FALSE(index.staysWithin(at(10, 3), at(15, 3), 0.5));
+  EXPECT_FALSE(index.staysWithin(at(15, 3), at(10, 3), 0.5));
+  EXPECT_TRUE(index.staysWithin(at(5, 3), at(10, 3), 0.5));
+  EXPECT_TRUE(index.staysWithin(at(10, 3), at(5, 3), 0.5));
+  EXPECT_TRUE(index.staysWithin(at(10, 5), at(10, 2.2), 0.5));
+  EXPECT_TRUE(index.staysWithin(at(10.3, 5), at(10.3, 2.2), 0.5));
+  EXPECT_FALSE(index.staysWithin(at(11, 5), at(11, 2.2), 0.5));
+  EXPECT_TRUE(index.contains(at(12, 3)));
+  EXPECT_FALSE(index.contains(at(8, 3)));
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -108,19 +108,6 @@ RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pai
   }
 }
 
-double RegionBelowGraph::topAt(double c) const {
-  auto it = std::lower_bound(top_.begin(), top_.end(), c, [](const auto& q, double v) { return q.first < v; });
-  if (it == top_.end()) return top_.back().second;
-  double depth = it->second;
-  if (it != top_.begin() && it->first > c) {
-    const auto& [c0, d0] = *(it - 1);
-    depth = d0 + (c - c0) / (it->first - c0) * (it->second - d0);
-  }
-  // Where a wall stands at c, its higher end.
-  for (auto at = it; at != top_.end() && at->first <= c; ++at) depth = std::max(depth, at->second);
-  return depth;
-}
-
 bool RegionBelowGraph::staysWithin(Point a, Point b, double slack) const {
   double ca = frame_.cut(a), da = frame_.depth(a), cb = frame_.cut(b), db = frame_.depth(b);
   if (ca > cb) {
@@ -129,13 +116,29 @@ bool RegionBelowGraph::staysWithin(Point a, Point b, double slack) const {
   }
   if (cb < top_.front().first || ca > top_.back().first) return true;  // beside the region
   // Along the depth axis: each point has one at or above the top within `slack` beside it.
-  if (cb - ca <= kGeomEps && std::min(da, db) >= lowestTopWithin(ca - slack, cb + slack)) return true;
+  if (cb - ca <= kGeomEps) return std::min(da, db) >= lowestTopWithin(ca - slack, cb + slack);
   return staysAbove(ca, da, cb, db, slack);
+}
+
+double RegionBelowGraph::topBefore(double c) const {
+  const auto it = std::lower_bound(top_.begin(), top_.end(), c, [](const auto& q, double v) { return q.first < v; });
+  if (it == top_.end()) return top_.back().second;
+  if (it == top_.begin() || it->first == c) return it->second;
+  const auto& [c0, d0] = *(it - 1);
+  return d0 + (c - c0) / (it->first - c0) * (it->second - d0);
+}
+
+double RegionBelowGraph::topAfter(double c) const {
+  const auto it = std::upper_bound(top_.begin(), top_.end(), c, [](double v, const auto& q) { return v < q.first; });
+  if (it == top_.begin()) return top_.front().second;
+  const auto& [c0, d0] = *(it - 1);
+  if (it == top_.end() || c0 == c) return d0;
+  return d0 + (c - c0) / (it->first - c0) * (it->second - d0);
 }
 
 double RegionBelowGraph::lowestTopWithin(double c0, double c1) const {
   if (c0 <= top_.front().first || c1 >= top_.back().first) return -INFINITY;
-  double lowest = std::min(topAt(c0), topAt(c1));
+  double lowest = std::min(topBefore(c0), topAfter(c1));
   auto it = std::lower_bound(top_.begin(), top_.end(), c0, [](const auto& q, double v) { return q.first < v; });
   for (; it != top_.end() && it->first <= c1; ++it) lowest = std::min(lowest, it->second);
   return lowest;
@@ -144,9 +147,10 @@ double RegionBelowGraph::lowestTopWithin(double c0, double c1) const {
 bool RegionBelowGraph::staysAbove(double ca, double da, double cb, double db, double slack) const {
   const double cMin = top_.front().first, cMax = top_.back().first;
   // Over the region only: clip the segment to its cut coordinates.
-  const auto depthAt = [&](double c) { return cb > ca ? da + (c - ca) / (cb - ca) * (db - da) : std::min(da, db); };
+  const auto depthAt = [&](double c) { return da + (c - ca) / (cb - ca) * (db - da); };
   const double c0 = std::max(ca, cMin), c1 = std::min(cb, cMax);
-  if (depthAt(c0) < topAt(c0) - slack || depthAt(c1) < topAt(c1) - slack) return false;
+  // At its ends, the top on the segment's side of a wall standing there.
+  if (depthAt(c0) < topAfter(c0) - slack || depthAt(c1) < topBefore(c1) - slack) return false;
   const double lowest = std::min(depthAt(c0), depthAt(c1)) + slack;
   auto it = std::upper_bound(top_.begin(), top_.end(), c0, [](double v, const auto& q) { return v < q.first; });
   for (std::size_t i = static_cast<std::size_t>(it - top_.begin()); i < top_.size() && top_[i].first < c1;) {

@@ -92,8 +92,11 @@ class RegionBelowGraph {
   bool staysWithin(Point a, Point b, double slack) const;
 
  private:
-  double topAt(double c) const;  // the top's depth at c (the higher side of a wall standing there)
-  bool staysAbove(double ca, double da, double cb, double db, double slack) const;  // ca < cb
+  // The top's depth just before c and just after it along the cut axis: the two sides of a wall
+  // standing at c.
+  double topBefore(double c) const;
+  double topAfter(double c) const;
+  bool staysAbove(double ca, double da, double cb, double db, double slack) const;  // ca < cb, not along the depth axis
   double lowestTopWithin(double c0, double c1) const;  // -∞ where [c0, c1] reaches past a side
 
   static constexpr std::size_t kBlock = 16;  // top edges per block

@@ -166,11 +166,18 @@ bool surelyNotInside(const RegionBelowGraph& region, const Chord& chord, double 
 // The parts of a chord (as intervals of t ∈ [0, 1]) deeper than ε inside the region, into
 // `inside`. Away from every edge's ε-capsule the chord cannot cross the boundary, so each gap
 // between the near intervals lies wholly inside or wholly outside: its midpoint decides.
+// Whether the chord comes more than ε inside the region's box (a point more than ε inside the
+// region does).
+template <typename Region>
+bool entersBoxOf(const Region& region, const Chord& chord, double epsilon) {
+  return region.mayMeet(chord.zMin + epsilon, chord.zMax - epsilon, chord.xMin + epsilon, chord.xMax - epsilon);
+}
+
 template <typename Region>
 void insideIntervals(const Region& region, const Chord& chord, double epsilon, Scratch& scratch,
                      std::vector<Interval>& inside) {
   inside.clear();
-  if (!region.mayMeet(chord.zMin, chord.zMax, chord.xMin, chord.xMax) || surelyNotInside(region, chord, epsilon)) return;
+  if (!entersBoxOf(region, chord, epsilon) || surelyNotInside(region, chord, epsilon)) return;
   scratch.near.clear();
   region.forEachEdgeNear(chord.zMin - epsilon, chord.zMax + epsilon, chord.xMin - epsilon, chord.xMax + epsilon,
                          [&](Point p, Point q) { addNearIntervals(chord, p, q, epsilon, scratch.near); });
@@ -201,7 +208,7 @@ Crossing crossingWithin(const Segment& move, double epsilon, double chordToleran
   Scratch scratch;
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Chord chord(points[i - 1], points[i]);
-    if (chord.length <= kGeomEps) continue;
+    if (chord.length <= kGeomEps || (also && !entersBoxOf(*also, chord, epsilon))) continue;
     insideIntervals(region, chord, epsilon, scratch, scratch.inside);
     const std::vector<Interval>* inside = &scratch.inside;
     if (also && !inside->empty()) {
