@@ -338,9 +338,12 @@ TEST(Parser, BlockQueriesFindWordsByAddress) {
   const Block block = parse("G01 G74.1 X5 X6").blocks.at(0);
   EXPECT_EQ(block.find('X')->text, "X5");
   EXPECT_EQ(block.find('Z'), nullptr);
-  ASSERT_EQ(block.all('X').size(), 2u);
-  EXPECT_EQ(block.all('X')[1]->text, "X6");
-  EXPECT_TRUE(block.all('Z').empty());
+  std::vector<std::string> xs, zs;
+  for (const Word* x : block.all('X')) xs.push_back(x->text);
+  for (const Word* z : block.all('Z')) zs.push_back(z->text);
+  ASSERT_EQ(xs.size(), 2u);
+  EXPECT_EQ(xs[1], "X6");
+  EXPECT_TRUE(zs.empty());
   EXPECT_TRUE(block.has('G'));
   EXPECT_FALSE(block.has('Z'));
   EXPECT_TRUE(block.hasG(741));

@@ -41,8 +41,7 @@ FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double 
   return judgeFuzzResult(engine.run(c), engine, vs, c, tolerance);
 }
 
-FuzzVerdict judgeFuzzResult(const EngineResult& r, const Engine& engine, Engine* vs, const SpecCase& c,
-                            double tolerance) {
+FuzzVerdict judgeFuzzResult(EngineResult r, const Engine& engine, Engine* vs, const SpecCase& c, double tolerance) {
   FuzzVerdict v;
   v.seconds = r.seconds;
   if (r.kind == EngineResult::Failed || r.kind == EngineResult::NotApplicable) {
@@ -54,7 +53,9 @@ FuzzVerdict judgeFuzzResult(const EngineResult& r, const Engine& engine, Engine*
   try {
     JudgeRequest request = judgeRequestFor(c);
     request.settings.epsilon = tolerance;
-    v.findings = judge(judgeInputFor(request, r.path));
+    JudgeInput input = judgeInputFor(request, std::move(r.path));
+    v.findings = judge(input);
+    r.path = std::move(input.path);  // for the comparison with `vs` below
   } catch (const std::exception& e) {
     // A generated program the oracles cannot read is the generator's fault, not the engine's.
     v.verdict = "not-applicable";
@@ -140,12 +141,12 @@ class FuzzCampaign {
         seeds.push_back(caseSeed);
         batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed), caseSeedTag(caseSeed)));
       }
-      const std::vector<EngineResult> planned = engine_.runBatch(batch);
+      std::vector<EngineResult> planned = engine_.runBatch(batch);
       for (std::size_t k = 0; k < batch.size(); ++k) {
         // The time budget holds within a batch too: cases planned but not judged are not recorded
         // (a resumed run runs them).
         if (options_.seconds && elapsed() >= *options_.seconds) break;
-        record(seeds[k], batch[k], planned[k]);
+        record(seeds[k], batch[k], std::move(planned[k]));
       }
     }
     summary_.seconds = elapsed();
@@ -153,8 +154,8 @@ class FuzzCampaign {
   }
 
  private:
-  void record(std::uint64_t caseSeed, const SpecCase& c, const EngineResult& planned) {
-    const FuzzVerdict v = judgeFuzzResult(planned, engine_, vs_, c, options_.tolerance);
+  void record(std::uint64_t caseSeed, const SpecCase& c, EngineResult planned) {
+    const FuzzVerdict v = judgeFuzzResult(std::move(planned), engine_, vs_, c, options_.tolerance);
     CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
                  caseSeed, "", vs_ ? vs_->name() : "", std::nullopt, ""};
     ++summary_.run;

@@ -65,9 +65,8 @@ struct FuzzVerdict {
   double seconds = 0;
 };
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance);
-// The same for a result the engine already gave (a batch's).
-FuzzVerdict judgeFuzzResult(const EngineResult& r, const Engine& engine, Engine* vs, const SpecCase& c,
-                            double tolerance);
+// The same for a result the engine already gave (a batch's; moved in, its toolpath is not copied).
+FuzzVerdict judgeFuzzResult(EngineResult r, const Engine& engine, Engine* vs, const SpecCase& c, double tolerance);
 
 // Cases per engine batch: one rs274 start serves this many.
 inline constexpr std::size_t kFuzzBatch = 64;

@@ -120,26 +120,32 @@ bool RegionBelowGraph::staysWithin(Point a, Point b, double slack) const {
   return staysAbove(ca, da, cb, db, slack);
 }
 
-double RegionBelowGraph::topBefore(double c) const {
-  const auto it = std::lower_bound(top_.begin(), top_.end(), c, [](const auto& q, double v) { return q.first < v; });
-  if (it == top_.end()) return top_.back().second;
-  if (it == top_.begin() || it->first == c) return it->second;
-  const auto& [c0, d0] = *(it - 1);
-  return d0 + (c - c0) / (it->first - c0) * (it->second - d0);
+RegionBelowGraph::Vertex RegionBelowGraph::firstAtOrAfter(double c, Vertex from) const {
+  return std::lower_bound(from, top_.end(), c, [](const auto& q, double v) { return q.first < v; });
 }
 
-double RegionBelowGraph::topAfter(double c) const {
-  const auto it = std::upper_bound(top_.begin(), top_.end(), c, [](double v, const auto& q) { return v < q.first; });
-  if (it == top_.begin()) return top_.front().second;
-  const auto& [c0, d0] = *(it - 1);
-  if (it == top_.end() || c0 == c) return d0;
-  return d0 + (c - c0) / (it->first - c0) * (it->second - d0);
+RegionBelowGraph::Vertex RegionBelowGraph::firstAfter(double c) const {
+  return std::upper_bound(top_.begin(), top_.end(), c, [](double v, const auto& q) { return v < q.first; });
+}
+
+double RegionBelowGraph::topBefore(double c, Vertex atOrAfter) const {
+  if (atOrAfter == top_.end()) return top_.back().second;
+  if (atOrAfter == top_.begin() || atOrAfter->first == c) return atOrAfter->second;
+  const auto& [c0, d0] = *(atOrAfter - 1);
+  return d0 + (c - c0) / (atOrAfter->first - c0) * (atOrAfter->second - d0);
+}
+
+double RegionBelowGraph::topAfter(double c, Vertex after) const {
+  if (after == top_.begin()) return top_.front().second;
+  const auto& [c0, d0] = *(after - 1);
+  if (after == top_.end() || c0 == c) return d0;
+  return d0 + (c - c0) / (after->first - c0) * (after->second - d0);
 }
 
 double RegionBelowGraph::lowestTopWithin(double c0, double c1) const {
   if (c0 <= top_.front().first || c1 >= top_.back().first) return -INFINITY;
-  double lowest = std::min(topBefore(c0), topAfter(c1));
-  auto it = std::lower_bound(top_.begin(), top_.end(), c0, [](const auto& q, double v) { return q.first < v; });
+  auto it = firstAtOrAfter(c0, top_.begin());
+  double lowest = std::min(topBefore(c0, it), topAfter(c1, firstAfter(c1)));
   for (; it != top_.end() && it->first <= c1; ++it) lowest = std::min(lowest, it->second);
   return lowest;
 }
@@ -149,11 +155,12 @@ bool RegionBelowGraph::staysAbove(double ca, double da, double cb, double db, do
   // Over the region only: clip the segment to its cut coordinates.
   const auto depthAt = [&](double c) { return da + (c - ca) / (cb - ca) * (db - da); };
   const double c0 = std::max(ca, cMin), c1 = std::min(cb, cMax);
-  // At its ends, the top on the segment's side of a wall standing there.
-  if (depthAt(c0) < topAfter(c0) - slack || depthAt(c1) < topBefore(c1) - slack) return false;
+  // At its ends, the top on the segment's side of a wall standing there (one search finds both).
+  const Vertex after = firstAfter(c0);
+  if (depthAt(c0) < topAfter(c0, after) - slack) return false;
+  if (depthAt(c1) < topBefore(c1, firstAtOrAfter(c1, c1 > c0 ? after : top_.begin())) - slack) return false;
   const double lowest = std::min(depthAt(c0), depthAt(c1)) + slack;
-  auto it = std::upper_bound(top_.begin(), top_.end(), c0, [](double v, const auto& q) { return v < q.first; });
-  for (std::size_t i = static_cast<std::size_t>(it - top_.begin()); i < top_.size() && top_[i].first < c1;) {
+  for (std::size_t i = static_cast<std::size_t>(after - top_.begin()); i < top_.size() && top_[i].first < c1;) {
     if (blockDepths_[std::min(i, top_.size() - 2) / kBlock].second <= lowest) {  // the block stands no higher
       i = (i / kBlock + 1) * kBlock;
       continue;

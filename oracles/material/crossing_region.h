@@ -92,10 +92,15 @@ class RegionBelowGraph {
   bool staysWithin(Point a, Point b, double slack) const;
 
  private:
-  // The top's depth just before c and just after it along the cut axis: the two sides of a wall
-  // standing at c.
-  double topBefore(double c) const;
-  double topAfter(double c) const;
+  // The top's vertices by cut coordinate: the first at or after c (searched from `from` on), the
+  // first after c.
+  using Vertex = std::vector<std::pair<double, double>>::const_iterator;
+  Vertex firstAtOrAfter(double c, Vertex from) const;
+  Vertex firstAfter(double c) const;
+  // The top's depth just before c and just after it along the cut axis — the two sides of a wall
+  // standing at c — given the vertex found for c.
+  double topBefore(double c, Vertex atOrAfter) const;
+  double topAfter(double c, Vertex after) const;
   bool staysAbove(double ca, double da, double cb, double db, double slack) const;  // ca < cb, not along the depth axis
   double lowestTopWithin(double c0, double c1) const;  // -∞ where [c0, c1] reaches past a side
 

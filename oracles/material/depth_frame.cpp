@@ -8,18 +8,19 @@ namespace cyclecert {
 
 std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame) {
   if (!s.isArc() || s.radius() <= kGeomEps) return {s};
-  const double span = std::abs(sweep(s));
+  const ArcAngles angles(s);
+  const double span = std::abs(angles.sweep);
   // The tangent is parallel to `away` where the radius is perpendicular to it: along the cut axis.
   std::vector<double> offsets;  // angles from `from`, along the arc
   for (double sign : {-1.0, 1.0}) {
-    const auto offset = offsetAlongArc(s, std::atan2(sign * frame.along().x, sign * frame.along().z));
+    const auto offset = offsetAlongArc(angles, std::atan2(sign * frame.along().x, sign * frame.along().z));
     if (offset && *offset > 1e-12 && *offset < span - 1e-12) offsets.push_back(*offset);
   }
   std::sort(offsets.begin(), offsets.end());
   std::vector<Segment> pieces;
   Point from = s.from;
   for (double offset : offsets) {
-    const Point at = pointAt(s, offset / span);
+    const Point at = pointAt(s, angles, offset / span);
     pieces.push_back({s.kind, from, at, s.center, s.sourceLine});
     from = at;
   }

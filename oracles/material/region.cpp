@@ -122,14 +122,15 @@ std::vector<Point> flatten(const Segment& s, double chordTolerance) {
   }
   const double radius = s.radius();
   if (!s.isArc() || radius <= kGeomEps) return {s.from, s.to};
-  const double span = sweep(s);  // signed: negative for clockwise
+  const ArcAngles angles(s);
+  const double span = angles.sweep;  // signed: negative for clockwise
   const double chords = std::ceil(std::abs(span) / largestChordAngle(radius, chordTolerance));
   if (chords > 1e6) {
     throw std::invalid_argument("the chord tolerance is too small for an arc of radius " +
                                 std::to_string(radius));
   }
   const int n = std::max(1, static_cast<int>(chords));
-  const double start = std::atan2(s.from.x - s.center.x, s.from.z - s.center.z);
+  const double start = angles.start;
   std::vector<Point> points;
   points.reserve(n + 1);
   points.push_back(s.from);

@@ -19,10 +19,13 @@ double normalized(double a) {
 
 }  // namespace
 
-std::optional<double> offsetAlongArc(const Segment& s, double a) {
-  const double start = angleOf(s.from, s.center);
-  const double span = std::abs(sweep(s));
-  double off = s.kind == SegmentKind::ArcCCW ? normalized(a - start) : normalized(start - a);
+ArcAngles::ArcAngles(const Segment& arc) : start(angleOf(arc.from, arc.center)), sweep(cyclecert::sweep(arc)) {}
+
+std::optional<double> offsetAlongArc(const Segment& s, double a) { return offsetAlongArc(ArcAngles(s), a); }
+
+std::optional<double> offsetAlongArc(const ArcAngles& arc, double a) {
+  const double span = std::abs(arc.sweep);
+  double off = arc.sweep > 0 ? normalized(a - arc.start) : normalized(arc.start - a);
   const double angularTol = 1e-9;
   if (off > kTwoPi - angularTol) off = 0;  // just before the start counts as the start
   if (off <= span + angularTol) return std::min(off, span);
@@ -78,12 +81,14 @@ double sweep(const Segment& s) {
 
 Point pointAt(const Segment& s, double t) {
   if (!s.isArc()) return s.from + t * (s.to - s.from);
-  const double a = angleOf(s.from, s.center) + t * sweep(s);
-  const double r = s.radius();
-  return {s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)};
+  return pointAt(s, ArcAngles(s), t);
 }
 
-Point transposed(Point p) { return {p.x, p.z}; }
+Point pointAt(const Segment& arc, const ArcAngles& angles, double t) {
+  const double a = angles.start + t * angles.sweep;
+  const double r = arc.radius();
+  return {arc.center.z + r * std::cos(a), arc.center.x + r * std::sin(a)};
+}
 
 Segment transposed(const Segment& s) {
   Segment t = s;
@@ -115,9 +120,10 @@ std::vector<Point> intersectWithLevelX(const Segment& s, double level) {
   if (std::abs(dx) > r + kGeomEps) return hits;
   const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
   std::vector<std::pair<double, Point>> ordered;
+  const ArcAngles angles(s);
   for (double sign : {-1.0, 1.0}) {
     const Point p{s.center.z + sign * h, level};
-    if (auto off = offsetAlongArc(s, angleOf(p, s.center))) ordered.push_back({*off, p});
+    if (auto off = offsetAlongArc(angles, angleOf(p, s.center))) ordered.push_back({*off, p});
   }
   std::sort(ordered.begin(), ordered.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -131,9 +137,10 @@ std::vector<Point> apexesAlong(const Segment& s) {
   std::vector<std::pair<double, Point>> found;
   if (!s.isArc()) return {};
   const double r = s.radius();
+  const ArcAngles angles(s);
   for (int k = 0; k < 4; ++k) {
     const double a = k * std::numbers::pi / 2;
-    if (auto off = offsetAlongArc(s, a); off && *off > 0 && *off < std::abs(sweep(s))) {
+    if (auto off = offsetAlongArc(angles, a); off && *off > 0 && *off < std::abs(angles.sweep)) {
       found.push_back({*off, {s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)}});
     }
   }

@@ -44,13 +44,23 @@ Point pointAt(const Segment& s, double t);
 // Signed sweep angle of an arc in radians (negative for CW), in (-2π, 2π]; 0 for lines.
 double sweep(const Segment& s);
 
+// An arc's angles, worked out once (two atan2) for many questions about one arc: the angle of
+// `from` around the centre (atan2(x, z) of the direction from it) and the signed sweep.
+struct ArcAngles {
+  explicit ArcAngles(const Segment& arc);
+  double start, sweep;
+};
+
 // How far along the arc (0 at `from`, |sweep| at `to`) the angle `a` around its centre lies
 // (measured as atan2(x, z) of the direction from the centre), or nothing when the angle is outside
 // the arc's span (with an angular tolerance of 1e-9).
 std::optional<double> offsetAlongArc(const Segment& s, double a);
+std::optional<double> offsetAlongArc(const ArcAngles& arc, double a);
+// pointAt of an arc whose angles are known.
+Point pointAt(const Segment& arc, const ArcAngles& angles, double t);
 
 // Exchanges the roles of z and x (transposes the plane); arcs change direction.
-Point transposed(Point p);
+inline Point transposed(Point p) { return {p.x, p.z}; }
 Segment transposed(const Segment& s);
 
 // Intersections of a segment with the line `x == level` (axis-parallel), ordered along the

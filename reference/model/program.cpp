@@ -13,14 +13,6 @@ const Word* Block::find(char letter) const {
   return nullptr;
 }
 
-std::vector<const Word*> Block::all(char letter) const {
-  std::vector<const Word*> found;
-  for (const Word& word : words) {
-    if (word.letter == letter) found.push_back(&word);
-  }
-  return found;
-}
-
 bool Block::hasG(int codeTimes10) const {
   for (const Word& word : words) {
     if (word.letter == 'G' && gCode10(word.value) == codeTimes10) return true;

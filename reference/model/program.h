@@ -23,6 +23,38 @@ struct Word {
   int column = 0;
 };
 
+// The words of a block with one address, in source order: for (const Word* g : block.all('G')).
+// A view over the block's words (nothing copied); valid while the block is.
+class WordsWith {
+ public:
+  class Iterator {
+   public:
+    Iterator(const Word* at, const Word* end, char letter) : at_(at), end_(end), letter_(letter) { skip(); }
+    const Word* operator*() const { return at_; }
+    Iterator& operator++() {
+      ++at_;
+      skip();
+      return *this;
+    }
+    bool operator!=(const Iterator& other) const { return at_ != other.at_; }
+
+   private:
+    void skip() {
+      while (at_ != end_ && at_->letter != letter_) ++at_;
+    }
+    const Word* at_;
+    const Word* end_;
+    char letter_;
+  };
+  WordsWith(const std::vector<Word>& words, char letter) : words_(words), letter_(letter) {}
+  Iterator begin() const { return {words_.data(), words_.data() + words_.size(), letter_}; }
+  Iterator end() const { return {words_.data() + words_.size(), words_.data() + words_.size(), letter_}; }
+
+ private:
+  const std::vector<Word>& words_;
+  char letter_;
+};
+
 struct Block {
   int line = 0;                    // source line where the block starts
   std::optional<long> sequence;    // N number
@@ -32,7 +64,7 @@ struct Block {
   std::string text;                // the block's source text
 
   const Word* find(char letter) const;            // first word with that address
-  std::vector<const Word*> all(char letter) const;
+  WordsWith all(char letter) const { return {words, letter}; }
   bool has(char letter) const { return find(letter) != nullptr; }
   // True when a G word with this code is present; code is ×10 (G74.1 -> 741, G01 -> 10).
   bool hasG(int codeTimes10) const;
