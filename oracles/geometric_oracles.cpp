@@ -46,7 +46,7 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
 
 // Whether the material left may stand thicker than `allowed` above the target. Where the target is
 // a graph over the cut axis, the material's top over the span (the feeds' envelope, capped by the
-// stock) measured against the exact target (thickness.h, thickestBeneath) answers without a
+// stock) measured against the exact target (thickness.h, standsThickerThan) answers without a
 // boolean: the material left stands nowhere higher. The profile beneath a point is taken within
 // ± the tolerance along the cut axis, as the region's measure leaves out skins narrower than that
 // (withoutSkins): the chords of a pass along an arc stray that far sideways, which next to a steep
@@ -56,8 +56,7 @@ bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance
   if (!isGraphOverCutAxis(r.target, DepthFrame(r.away))) return true;
   const auto span = targetSpan(r, tolerance);
   if (!span) return false;
-  const auto top = thickestBeneath(r.model->topWithin(span->first, span->second), r.target, r.away, tolerance / 2);
-  return top && top->thickness > allowed;
+  return standsThickerThan(r.model->topWithin(span->first, span->second), r.target, r.away, tolerance / 2, allowed);
 }
 
 // no-gouge: no move enters the finish shape grown by the allowances by more than the tolerance.

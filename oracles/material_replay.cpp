@@ -192,12 +192,13 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   const double allowed = c.depthOfCut + tolerance;
   // Most passes provably remove no more than Δd: the material's top over the move, measured
   // against it as finely as the region below would be, bounds the layer (thickness.h,
-  // thickestBeneath) and spares making the material left.
+  // standsThickerThan) and spares making the material left.
   const DepthFrame frame(away);
   if (isGraphOverCutAxis({move}, frame)) {
     const double a = frame.cut(move.from), b = frame.cut(move.to);
-    const auto top = thickestBeneath(model.topWithin(std::min(a, b), std::max(a, b)), {move}, away, kMeasuringChord);
-    if (!top || top->thickness <= allowed) return std::nullopt;
+    if (!standsThickerThan(model.topWithin(std::min(a, b), std::max(a, b)), {move}, away, kMeasuringChord, allowed)) {
+      return std::nullopt;
+    }
   }
   const BgRegion layer = touching(model.remaining(), move, tolerance);
   if (layer.empty()) return std::nullopt;

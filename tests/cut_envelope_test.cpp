@@ -182,6 +182,10 @@ RC_GTEST_PROP(CutEnvelope, TheTopBoundsTheMaterialLeftAboveAGraphProfile, ()) {
   const BgRegion left = checkedIntersection(without(model.remaining(), partRegionOf(profile, kOuter, 100, 0.001)), band);
   const auto region = thickestAbove(left, profile, kOuter, 1e-6);
   const auto top = thickestBeneath(model.topWithin(-40, 0), profile, kOuter, 1e-6);
+  // The oracles' question, answered without measuring what cannot exceed the limit: the same
+  // answer as the measure (limits within a millimetre of it either way).
+  const double limit = (top ? top->thickness : 5.0) + *rc::gen::inRange(-10, 11) / 10.0;
+  RC_ASSERT(standsThickerThan(model.topWithin(-40, 0), profile, kOuter, 1e-6, limit) == (top && top->thickness > limit));
   if (!region) return;
   RC_ASSERT(top.has_value());
   RC_ASSERT(region->thickness <= top->thickness + 0.005);

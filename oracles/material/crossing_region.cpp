@@ -11,22 +11,25 @@ constexpr int kMostCells = 64;  // per axis
 CrossingRegion::CrossingRegion(const BgRegion& region) : CrossingRegion(outlinesOf(region)) {}
 
 CrossingRegion::CrossingRegion(const std::vector<std::vector<Point>>& rings) {
-  std::vector<Edge> edges;
   for (const auto& ring : rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const Point a = ring[i], b = ring[(i + 1) % ring.size()];
       if (a == b) continue;
-      edges.push_back({a, b, 0, 0});
+      edges_.push_back({a, b, 0, 0});
       zMin_ = std::min({zMin_, a.z, b.z});
       zMax_ = std::max({zMax_, a.z, b.z});
       xMin_ = std::min({xMin_, a.x, b.x});
       xMax_ = std::max({xMax_, a.x, b.x});
     }
   }
+}
+
+void CrossingRegion::makeGrid() const {
+  gridMade_ = true;
   // Long: more than a quarter of the region's width or height.
   const double longZ = 0.25 * (zMax_ - zMin_), longX = 0.25 * (xMax_ - xMin_);
   double gz0 = INFINITY, gz1 = -INFINITY, gx0 = INFINITY, gx1 = -INFINITY;
-  for (const Edge& e : edges) {
+  for (const Edge& e : edges_) {
     if (std::abs(e.b.z - e.a.z) > longZ || std::abs(e.b.x - e.a.x) > longX) {
       long_.push_back(e);
       continue;
@@ -98,13 +101,17 @@ RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pai
     low = std::min({low, top_[k].second, top_[k + 1].second});
     high = std::max({high, top_[k].second, top_[k + 1].second});
   }
-  for (const auto& [c, d] : top_) {
-    for (const Point p : {frame_.point(c, d), frame_.point(c, dBottom_)}) {
-      zMin_ = std::min(zMin_, p.z);
-      zMax_ = std::max(zMax_, p.z);
-      xMin_ = std::min(xMin_, p.x);
-      xMax_ = std::max(xMax_, p.x);
-    }
+  // The box of the frame's rectangle the region fills: for a frame along the axes, as every
+  // cycle's is, the region's own box.
+  double highest = dBottom_;
+  for (const auto& [low, high] : blockDepths_) highest = std::max(highest, high);
+  const double cMin = top_.front().first, cMax = top_.back().first;
+  for (const Point p : {frame_.point(cMin, dBottom_), frame_.point(cMin, highest), frame_.point(cMax, dBottom_),
+                        frame_.point(cMax, highest)}) {
+    zMin_ = std::min(zMin_, p.z);
+    zMax_ = std::max(zMax_, p.z);
+    xMin_ = std::min(xMin_, p.x);
+    xMax_ = std::max(xMax_, p.x);
   }
 }
 

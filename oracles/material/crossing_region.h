@@ -14,6 +14,8 @@ namespace cyclecert {
 
 class CrossingRegion {
  public:
+  // The grid is made on the first query that visits edges (a move the box alone shows clear of the
+  // region never needs it): one region, one thread.
   CrossingRegion() = default;  // empty
   explicit CrossingRegion(const BgRegion& region);
   explicit CrossingRegion(const std::vector<std::vector<Point>>& rings);  // each closed implicitly
@@ -39,20 +41,24 @@ class CrossingRegion {
     int col0, col1, row0, row1;
   };
   CellRange cellsOf(double zMin, double zMax, double xMin, double xMax) const;
+  void makeGrid() const;
 
   double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
+  std::vector<Edge> edges_;  // every edge, ring by ring
   // Edges spanning a good part of the region (a bottom line, the sides) are few and visited
   // always; the others sit in a grid over their own box, each listed in every cell its box meets.
-  std::vector<Edge> long_;
-  std::vector<Edge> grid_;
-  double gridZ_ = 0, gridX_ = 0, gridZEnd_ = 0, gridXEnd_ = 0, cellWidth_ = 1, cellHeight_ = 1;
-  int columns_ = 0, rows_ = 0;
-  std::vector<std::uint32_t> cellStart_;  // per cell (row-major), where its edges start in cellEdges_
-  std::vector<std::uint32_t> cellEdges_;  // indices into grid_
+  mutable bool gridMade_ = false;
+  mutable std::vector<Edge> long_;
+  mutable std::vector<Edge> grid_;
+  mutable double gridZ_ = 0, gridX_ = 0, gridZEnd_ = 0, gridXEnd_ = 0, cellWidth_ = 1, cellHeight_ = 1;
+  mutable int columns_ = 0, rows_ = 0;
+  mutable std::vector<std::uint32_t> cellStart_;  // per cell (row-major), where its edges start in cellEdges_
+  mutable std::vector<std::uint32_t> cellEdges_;  // indices into grid_
 };
 
 template <typename Visit>
 void CrossingRegion::forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const {
+  if (!gridMade_) makeGrid();
   for (const Edge& e : long_) visit(e.a, e.b);
   if (grid_.empty()) return;
   const CellRange q = cellsOf(zMin, zMax, xMin, xMax);

@@ -115,9 +115,10 @@ class ProfileSteps {
 // not beneath.
 class ThicknessSearch {
  public:
-  ThicknessSearch(const ProfileSteps& profile, const DepthFrame& frame, double resolution,
-                  double window)
-      : profile_(profile), frame_(frame), resolution_(resolution), window_(window) {}
+  // Only thicknesses above `floor` are sought: an edge that cannot stand thicker is not measured.
+  ThicknessSearch(const ProfileSteps& profile, const DepthFrame& frame, double resolution, double window,
+                  double floor = -INFINITY)
+      : profile_(profile), frame_(frame), resolution_(resolution), window_(window), floor_(floor) {}
 
   void measureEdge(Point p, Point q) { measureEdge(frame_.cut(p), frame_.depth(p), frame_.cut(q), frame_.depth(q)); }
 
@@ -141,7 +142,7 @@ class ThicknessSearch {
     // that cannot beat the thickest found so far need not be measured.
     const double highestPoint = std::max(d0, d1);
     if (highestPoint + window_ < lowestStep) return;
-    if (best_ && highestPoint - lowestStep <= best_->thickness) return;
+    if (highestPoint - lowestStep <= (best_ ? std::max(best_->thickness, floor_) : floor_)) return;
     for (const ProfileStep* s : under_) {
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
       measureAt(edge, lo);
@@ -177,6 +178,7 @@ class ThicknessSearch {
     }
     if (!beneath) return;
     const double thickness = d - *beneath;
+    if (thickness <= floor_) return;
     if (!best_ || thickness > best_->thickness) {
       const Point where = frame_.point(c, d);
       best_ = Thickest{thickness, where, frame_.atDepth(where, *beneath)};
@@ -187,6 +189,7 @@ class ThicknessSearch {
   const DepthFrame& frame_;
   double resolution_;
   double window_;
+  double floor_;
   std::vector<const ProfileStep*> under_;  // the steps under the edge being measured, by c0
   double underWidest_ = 0;
   std::optional<Thickest> best_;
@@ -219,8 +222,11 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
   return search.best();
 }
 
-std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile,
-                                        Point away, double chordTolerance) {
+namespace {
+
+std::optional<Thickest> thickestBeneathAbove(const std::vector<CutEnvelope::Piece>& top,
+                                             const std::vector<Segment>& profile, Point away, double chordTolerance,
+                                             double floor) {
   if (top.empty() || profile.empty()) return std::nullopt;
   const DepthFrame frame(away);
   const ProfileSteps steps(profile, frame, chordTolerance);
@@ -232,9 +238,21 @@ std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& t
     dMax = std::max({dMax, p.d0, p.d1});
   }
   const double resolution = std::max(kTidyDistance, 4 * kBooleanResolution * std::max(cMax - cMin, dMax - dMin));
-  ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution);
+  ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution, floor);
   for (const CutEnvelope::Piece& p : top) search.measureEdge(p.c0, p.d0, p.c1, p.d1);
   return search.best();
+}
+
+}  // namespace
+
+std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile,
+                                        Point away, double chordTolerance) {
+  return thickestBeneathAbove(top, profile, away, chordTolerance, -INFINITY);
+}
+
+bool standsThickerThan(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile, Point away,
+                       double chordTolerance, double limit) {
+  return thickestBeneathAbove(top, profile, away, chordTolerance, limit).has_value();
 }
 
 }  // namespace cyclecert

@@ -51,4 +51,9 @@ std::optional<Thickest> thickestAbove(const BgRegion& region, const std::vector<
 std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile,
                                         Point away, double chordTolerance);
 
+// Whether thickestBeneath is more than `limit`: the oracles' question, answered without measuring
+// the top's edges that stand no more than `limit` above the lowest of the profile beneath them.
+bool standsThickerThan(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile, Point away,
+                       double chordTolerance, double limit);
+
 }  // namespace cyclecert
