@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "reference/model/toolpath_json.h"
 
@@ -110,14 +111,13 @@ SpecCase parseSpecCase(const std::string& text, const std::string& file) {
   } catch (const ToolpathFormatError& e) {
     throw std::runtime_error(e.what());
   }
-  return specCaseFrom(j, file);
+  return specCaseFrom(std::move(j), file);
 }
 
-SpecCase specCaseFrom(const json& j, const std::string& file) {
+SpecCase specCaseFrom(json j, const std::string& file) {
   if (!j.is_object()) throw SpecError(file, "(document)", "a JSON object");
   SpecCase c;
   c.file = file;
-  c.raw = j;
   c.id = requiredString(j, "id", file);
   c.title = requiredString(j, "title", file);
   c.profile = requiredString(j, "profile", file);
@@ -180,6 +180,7 @@ SpecCase specCaseFrom(const json& j, const std::string& file) {
     c.mdi = j["mode"] == "mdi";
   }
   readExpectation(required(j, "expect", file), c);
+  c.raw = std::move(j);
   return c;
 }
 

@@ -58,8 +58,8 @@ class SpecError : public std::runtime_error {
 };
 
 SpecCase parseSpecCase(const std::string& jsonText, const std::string& file);
-// The same for a case already parsed as JSON (the fuzzer's cases).
-SpecCase specCaseFrom(const nlohmann::json& j, const std::string& file);
+// The same for a case already parsed as JSON (the fuzzer's cases); the JSON becomes the case's raw.
+SpecCase specCaseFrom(nlohmann::json j, const std::string& file);
 SpecCase loadSpecCase(const std::string& path);
 
 // Every *.json file under a directory, sorted.
