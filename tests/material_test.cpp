@@ -77,6 +77,21 @@ TEST(Material, FlattenFollowsTheArcDirection) {
   EXPECT_NEAR(points[20].x, 6.464466, 1e-6);
 }
 
+TEST(Material, FlattenStaysOnTheArcOverThousandsOfChords) {
+  // r = 100, tol 1e-6: φ ≤ 4·asin(√(1e-6/200)) = 2.828e-4, (π/2)/φ = 5,554 chords. Each point is
+  // the one before turned by φ; the last interior point still stands where its angle says.
+  const Segment quarter = arc(SegmentKind::ArcCCW, {100, 0}, {0, 100}, {0, 0});
+  const auto points = flatten(quarter, 1e-6);
+  ASSERT_EQ(points.size(), 5555u);
+  const double step = (std::numbers::pi / 2) / 5554;
+  for (std::size_t k = 0; k + 1 < points.size(); k += 500) {
+    EXPECT_NEAR(points[k].z, 100 * std::cos(k * step), 1e-9);
+    EXPECT_NEAR(points[k].x, 100 * std::sin(k * step), 1e-9);
+  }
+  EXPECT_NEAR(points[5553].z, 100 * std::cos(5553 * step), 1e-9);
+  EXPECT_NEAR(points[5553].x, 100 * std::sin(5553 * step), 1e-9);
+}
+
 TEST(Material, FlattenCopesWithDegenerateArcs) {
   // No radius: the arc is a point; nothing to flatten but its two ends.
   const auto point = flatten(arc(SegmentKind::ArcCW, {1, 1}, {1, 1}, {1, 1}), 0.01);

@@ -24,10 +24,13 @@ struct ProfileStep {
     if (arc) return dc + side * std::sqrt(std::max(0.0, radius * radius - (c - cc) * (c - cc)));
     return c1 > c0 ? d0 + (c - c0) / (c1 - c0) * (d1 - d0) : d0;
   }
-  // Its lowest depth: at an end, or at the bottom of a lower half-circle.
-  double lowest() const {
-    const double ends = std::min(d0, d1);
-    return arc && side < 0 && cc > c0 && cc < c1 ? std::min(ends, dc - radius) : ends;
+  // Its lowest depth over [a, b] (clamped to its own span): at an end, or at the bottom of a lower
+  // half-circle.
+  double lowestWithin(double a, double b) const {
+    a = std::max(a, c0);
+    b = std::min(b, c1);
+    const double ends = std::min(depthAt(a), depthAt(b));
+    return arc && side < 0 && cc > a && cc < b ? std::min(ends, dc - radius) : ends;
   }
   // Where an edge of slope `slope` stands highest above an arc (its tangent there has the same
   // slope); nothing for a line, whose distance to an edge is largest at the overlap's ends.
@@ -132,14 +135,16 @@ class ThicknessSearch {
     const RegionEdge edge{c0, d0, c1, d1};
     profile_.overlapping(c0, c1, resolution_, under_);
     underWidest_ = 0;
+    // The lowest the steps come within the window of the edge: every depth measureAt takes beneath
+    // a point of the edge is at least that.
     double lowestStep = INFINITY;
     for (const ProfileStep* s : under_) {
       underWidest_ = std::max(underWidest_, s->c1 - s->c0);
-      lowestStep = std::min(lowestStep, s->lowest());
+      lowestStep = std::min(lowestStep, s->lowestWithin(c0 - window_, c1 + window_));
     }
     // Bounds that decide without measuring (exactly: a point's thickness is its depth less the
     // depth of a step beneath it): an edge wholly beneath every step stands above none, and one
-    // that cannot beat the thickest found so far need not be measured.
+    // that cannot beat the thickest found so far (or the floor) need not be measured.
     const double highestPoint = std::max(d0, d1);
     if (highestPoint + window_ < lowestStep) return;
     if (highestPoint - lowestStep <= (best_ ? std::max(best_->thickness, floor_) : floor_)) return;
