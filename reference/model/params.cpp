@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <unordered_map>
 
 namespace cyclecert {
 
@@ -72,6 +73,16 @@ std::string_view trimmed(std::string_view s) {
 
 const ParamSpec* MachineParams::find(std::string_view name) {
   name = trimmed(name);
+  // As the catalogue spells it (the planners ask so, dozens of times per program), then in any case.
+  static const std::unordered_map<std::string_view, const ParamSpec*> bySpelling = [] {
+    std::unordered_map<std::string_view, const ParamSpec*> names;
+    for (const ParamSpec& p : catalogue()) {
+      names.emplace(p.number, &p);
+      if (!p.mnemonic.empty()) names.emplace(p.mnemonic, &p);
+    }
+    return names;
+  }();
+  if (const auto found = bySpelling.find(name); found != bySpelling.end()) return found->second;
   for (const ParamSpec& p : catalogue()) {
     if (sameName(p.number, name) || (!p.mnemonic.empty() && sameName(p.mnemonic, name))) return &p;
   }
