@@ -30,13 +30,22 @@ std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame
 
 bool isGraphOverCutAxis(const std::vector<Segment>& path, const DepthFrame& frame) {
   int direction = 0;
+  // Whether the piece keeps to the direction of those before it (a wall keeps to any).
+  const auto keepsOn = [&](const Segment& piece) {
+    const double advance = frame.cut(piece.to) - frame.cut(piece.from);
+    if (std::abs(advance) <= kTidyDistance) return true;
+    const int sign = advance > 0 ? 1 : -1;
+    if (direction != 0 && sign != direction) return false;
+    direction = sign;
+    return true;
+  };
   for (const Segment& s : path) {
+    if (!s.isArc()) {
+      if (!keepsOn(s)) return false;
+      continue;
+    }
     for (const Segment& piece : splitWhereTangentIsAlong(s, frame)) {
-      const double advance = frame.cut(piece.to) - frame.cut(piece.from);
-      if (std::abs(advance) <= kTidyDistance) continue;  // a wall
-      const int sign = advance > 0 ? 1 : -1;
-      if (direction != 0 && sign != direction) return false;
-      direction = sign;
+      if (!keepsOn(piece)) return false;
     }
   }
   return true;

@@ -151,8 +151,9 @@ void gapsBetween(std::vector<Interval>& intervals, std::vector<Interval>& gaps) 
   if (reached < 1) gaps.push_back({reached, 1});
 }
 
-// Working space of a crossing test, kept from chord to chord to spare allocations.
+// Working space of a crossing test, kept from chord to chord and move to move to spare allocations.
 struct Scratch {
+  std::vector<Point> points;
   std::vector<Interval> near, gaps, inside, insideAlso, both;
 };
 
@@ -204,8 +205,9 @@ Crossing crossingWithin(const Segment& move, double epsilon, double chordToleran
                         const Also* also = nullptr) {
   Crossing crossing;
   epsilon = std::max(epsilon, kTidyDistance);
-  const std::vector<Point> points = flatten(move, chordTolerance);
-  Scratch scratch;
+  thread_local Scratch scratch;
+  flattenInto(scratch.points, move, chordTolerance);
+  const std::vector<Point>& points = scratch.points;
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Chord chord(points[i - 1], points[i]);
     if (chord.length <= kGeomEps || (also && !entersBoxOf(*also, chord, epsilon))) continue;
@@ -303,9 +305,12 @@ std::optional<double> MaterialModel::stockDeepestWithin(double c0, double c1) co
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || stock_.empty()) return;
   bool lowered = false;
-  for (const Segment& part : splitWhereTangentIsAlong(move, frame_)) {
-    lowered = cut_.lower(flatten(part, chordTolerance_), frame_) || lowered;
-  }
+  const auto lower = [&](const Segment& part) {
+    flattenInto(flattened_, part, chordTolerance_);
+    lowered = cut_.lower(flattened_, frame_) || lowered;
+  };
+  if (!move.isArc()) lower(move);  // (a line needs no splitting)
+  else for (const Segment& part : splitWhereTangentIsAlong(move, frame_)) lower(part);
   if (lowered) {
     belowForCrossing_.reset();
     remaining_.reset();

@@ -116,12 +116,23 @@ void tidyRing(Ring& ring, double dust) {
 }  // namespace
 
 std::vector<Point> flatten(const Segment& s, double chordTolerance) {
+  std::vector<Point> points;
+  flattenInto(points, s, chordTolerance);
+  return points;
+}
+
+void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance) {
   requireFinite(s);
   if (!(chordTolerance > 0) || !std::isfinite(chordTolerance)) {
     throw std::invalid_argument("the chord tolerance must be a positive number");
   }
+  points.clear();
   const double radius = s.radius();
-  if (!s.isArc() || radius <= kGeomEps) return {s.from, s.to};
+  if (!s.isArc() || radius <= kGeomEps) {
+    points.push_back(s.from);
+    points.push_back(s.to);
+    return;
+  }
   const ArcAngles angles(s);
   const double span = angles.sweep;  // signed: negative for clockwise
   const double chords = std::ceil(std::abs(span) / largestChordAngle(radius, chordTolerance));
@@ -130,7 +141,6 @@ std::vector<Point> flatten(const Segment& s, double chordTolerance) {
                                 std::to_string(radius));
   }
   const int n = std::max(1, static_cast<int>(chords));
-  std::vector<Point> points;
   points.reserve(n + 1);
   points.push_back(s.from);
   // Each point is the one before turned by the chord's angle about the centre: no sine or cosine
@@ -144,7 +154,6 @@ std::vector<Point> flatten(const Segment& s, double chordTolerance) {
     points.push_back({s.center.z + radius * cosA, s.center.x + radius * sinA});
   }
   points.push_back(s.to);
-  return points;
 }
 
 void appendFlattened(std::vector<Point>& points, const Segment& s, double chordTolerance) {

@@ -55,6 +55,8 @@ inline Point fromBg(const BgPoint& p) { return {p.x(), p.y()}; }
 // (Chords much finer than this, bounding the error along the axes too, would fall below the
 // booleans' resolution next to axis-parallel tangents and make Boost see self-intersections.)
 std::vector<Point> flatten(const Segment& s, double chordTolerance);
+// The same into `points` (cleared first): a caller flattening move after move keeps one buffer.
+void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance);
 
 // Appends flatten(s) to `points`, without repeating a first point equal to the last one there.
 void appendFlattened(std::vector<Point>& points, const Segment& s, double chordTolerance);
