@@ -255,6 +255,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     // indexed.
     if (part.graph) {
       std::vector<std::pair<double, double>> top;
+      top.reserve(part.profile.size());
       for (Point p : part.profile) top.push_back({frame.cut(p), frame.depth(p)});
       if (top.front().first > top.back().first) std::reverse(top.begin(), top.end());
       r.partBelowProfile.emplace(frame, std::move(top), part.bottom);

@@ -95,6 +95,7 @@ bool CrossingRegion::contains(Point p) const {
 
 RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pair<double, double>> top, double dBottom)
     : frame_(frame), top_(std::move(top)), dBottom_(dBottom) {
+  blockDepths_.reserve(top_.size() / kBlock + 1);
   for (std::size_t k = 0; k + 1 < top_.size(); ++k) {
     if (k % kBlock == 0) blockDepths_.push_back({INFINITY, -INFINITY});
     auto& [low, high] = blockDepths_.back();

@@ -121,6 +121,7 @@ bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
 std::vector<std::pair<double, double>> CutEnvelope::belowTop(double cMin, double cMax, double dBottom,
                                                              double dTop) const {
   std::vector<std::pair<double, double>> top;  // (cut, depth) from cMin to cMax
+  top.reserve(3 * pieces_.size() + 4);         // a piece gives at most three points, a gap two
   const auto at = [&](double c, double d) { top.push_back({c, std::clamp(d, dBottom, dTop)}); };
   walk(
       cMin, cMax,

@@ -64,6 +64,7 @@ class ProgramParser {
 
   void parseBlock() {
     Block block;
+    block.words.reserve(8);  // a block has a few words: one allocation, not one per doubling
     block.line = current_.line;
     const std::size_t begin = current_.offset;
     consumedEnd_ = begin;
