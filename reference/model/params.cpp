@@ -109,12 +109,12 @@ double MachineParams::get(std::string_view name) const { return values_[indexOf(
 
 void MachineParams::set(std::string_view name, double value) {
   const ParamSpec& p = require(name);
-  const std::string label = p.mnemonic.empty() ? p.number : p.number + " (" + p.mnemonic + ")";
-  if (!std::isfinite(value)) throw std::invalid_argument("parameter " + label + ": value must be a finite number");
+  const auto label = [&p] { return p.mnemonic.empty() ? p.number : p.number + " (" + p.mnemonic + ")"; };
+  if (!std::isfinite(value)) throw std::invalid_argument("parameter " + label() + ": value must be a finite number");
   if (p.isBit && value != 0 && value != 1) {
-    throw std::invalid_argument("parameter " + label + " is a bit: expected 0 or 1");
+    throw std::invalid_argument("parameter " + label() + " is a bit: expected 0 or 1");
   }
-  if (!p.isBit && value < 0) throw std::invalid_argument("parameter " + label + ": expected a value ≥ 0");
+  if (!p.isBit && value < 0) throw std::invalid_argument("parameter " + label() + ": expected a value ≥ 0");
   values_[indexOf(p)] = value;
 }
 
