@@ -6,8 +6,12 @@
 
 namespace cyclecert {
 
-std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame) {
-  if (!s.isArc() || s.radius() <= kGeomEps) return {s};
+SegmentPieces splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame) {
+  SegmentPieces pieces;
+  if (!s.isArc() || s.radius() <= kGeomEps) {
+    pieces.push(s);
+    return pieces;
+  }
   const ArcAngles angles(s);
   const double span = std::abs(angles.sweep);
   // The tangent is parallel to `away` where the radius is perpendicular to it: along the cut axis.
@@ -17,35 +21,25 @@ std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame
     if (offset && *offset > 1e-12 && *offset < span - 1e-12) offsets.push_back(*offset);
   }
   std::sort(offsets.begin(), offsets.end());
-  std::vector<Segment> pieces;
   Point from = s.from;
   for (double offset : offsets) {
     const Point at = pointAt(s, angles, offset / span);
-    pieces.push_back({s.kind, from, at, s.center, s.sourceLine});
+    pieces.push({s.kind, from, at, s.center, s.sourceLine});
     from = at;
   }
-  pieces.push_back({s.kind, from, s.to, s.center, s.sourceLine});
+  pieces.push({s.kind, from, s.to, s.center, s.sourceLine});
   return pieces;
 }
 
 bool isGraphOverCutAxis(const std::vector<Segment>& path, const DepthFrame& frame) {
   int direction = 0;
-  // Whether the piece keeps to the direction of those before it (a wall keeps to any).
-  const auto keepsOn = [&](const Segment& piece) {
-    const double advance = frame.cut(piece.to) - frame.cut(piece.from);
-    if (std::abs(advance) <= kTidyDistance) return true;
-    const int sign = advance > 0 ? 1 : -1;
-    if (direction != 0 && sign != direction) return false;
-    direction = sign;
-    return true;
-  };
   for (const Segment& s : path) {
-    if (!s.isArc()) {
-      if (!keepsOn(s)) return false;
-      continue;
-    }
     for (const Segment& piece : splitWhereTangentIsAlong(s, frame)) {
-      if (!keepsOn(piece)) return false;
+      const double advance = frame.cut(piece.to) - frame.cut(piece.from);
+      if (std::abs(advance) <= kTidyDistance) continue;  // a wall
+      const int sign = advance > 0 ? 1 : -1;
+      if (direction != 0 && sign != direction) return false;
+      direction = sign;
     }
   }
   return true;

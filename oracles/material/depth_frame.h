@@ -3,6 +3,7 @@
 // the part towards the cycle start side) and a cut axis perpendicular to it. G71 outer turning:
 // away = (0, +1); boring: (0, −1); G72 facing: (±1, 0).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -59,10 +60,23 @@ class DepthFrame {
   Point along_;
 };
 
+// The pieces of a segment, held in place (no allocation: callers split every move): an arc turns
+// back along the cut axis at most twice, so three pieces at most.
+class SegmentPieces {
+ public:
+  void push(const Segment& piece) { pieces_[count_++] = piece; }
+  const Segment* begin() const { return pieces_.data(); }
+  const Segment* end() const { return pieces_.data() + count_; }
+
+ private:
+  std::array<Segment, 3> pieces_;
+  std::size_t count_ = 0;
+};
+
 // The segment cut into pieces that are each a graph over the frame's cut axis: an arc is cut at
 // the points where its tangent is parallel to `away` (where it turns back along the cut axis);
 // lines come back unchanged.
-std::vector<Segment> splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame);
+SegmentPieces splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame);
 
 // Whether the path is a graph over the cut axis: it never turns back along it (walls along the
 // depth axis allowed).

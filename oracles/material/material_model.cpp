@@ -305,12 +305,10 @@ std::optional<double> MaterialModel::stockDeepestWithin(double c0, double c1) co
 void MaterialModel::apply(const Segment& move, MoveKind kind) {
   if (kind != MoveKind::Feed || stock_.empty()) return;
   bool lowered = false;
-  const auto lower = [&](const Segment& part) {
+  for (const Segment& part : splitWhereTangentIsAlong(move, frame_)) {
     flattenInto(flattened_, part, chordTolerance_);
     lowered = cut_.lower(flattened_, frame_) || lowered;
-  };
-  if (!move.isArc()) lower(move);  // (a line needs no splitting)
-  else for (const Segment& part : splitWhereTangentIsAlong(move, frame_)) lower(part);
+  }
   if (lowered) {
     belowForCrossing_.reset();
     remaining_.reset();

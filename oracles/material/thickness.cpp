@@ -65,10 +65,6 @@ class ProfileSteps {
         for (std::size_t i = 1; i < chords.size(); ++i) add({SegmentKind::Line, chords[i - 1], chords[i], {}, 0}, frame);
         continue;
       }
-      if (!segment.isArc()) {
-        add(segment, frame);
-        continue;
-      }
       for (const Segment& piece : splitWhereTangentIsAlong(segment, frame)) add(piece, frame);
     }
     std::sort(steps_.begin(), steps_.end(),
