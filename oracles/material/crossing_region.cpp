@@ -16,10 +16,8 @@ CrossingRegion::CrossingRegion(const std::vector<std::vector<Point>>& rings) {
       const Point a = ring[i], b = ring[(i + 1) % ring.size()];
       if (a == b) continue;
       edges_.push_back({a, b, 0, 0});
-      zMin_ = std::min({zMin_, a.z, b.z});
-      zMax_ = std::max({zMax_, a.z, b.z});
-      xMin_ = std::min({xMin_, a.x, b.x});
-      xMax_ = std::max({xMax_, a.x, b.x});
+      box_.include(a);
+      box_.include(b);
     }
   }
 }
@@ -27,7 +25,7 @@ CrossingRegion::CrossingRegion(const std::vector<std::vector<Point>>& rings) {
 void CrossingRegion::makeGrid() const {
   gridMade_ = true;
   // Long: more than a quarter of the region's width or height.
-  const double longZ = 0.25 * (zMax_ - zMin_), longX = 0.25 * (xMax_ - xMin_);
+  const double longZ = 0.25 * (box_.zMax - box_.zMin), longX = 0.25 * (box_.xMax - box_.xMin);
   double gz0 = INFINITY, gz1 = -INFINITY, gx0 = INFINITY, gx1 = -INFINITY;
   for (const Edge& e : edges_) {
     if (std::abs(e.b.z - e.a.z) > longZ || std::abs(e.b.x - e.a.x) > longX) {
@@ -87,7 +85,7 @@ bool CrossingRegion::contains(Point p) const {
   if (!mayMeet(p.z, p.z, p.x, p.x)) return false;
   bool inside = false;
   // Even-odd: count the edges a ray from p towards +z crosses.
-  forEachEdgeNear(p.z, zMax_, p.x, p.x, [&](Point a, Point b) {
+  forEachEdgeNear(p.z, box_.zMax, p.x, p.x, [&](Point a, Point b) {
     if ((a.x > p.x) != (b.x > p.x) && p.z < a.z + (p.x - a.x) / (b.x - a.x) * (b.z - a.z)) inside = !inside;
   });
   return inside;
@@ -109,10 +107,7 @@ RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pai
   const double cMin = top_.front().first, cMax = top_.back().first;
   for (const Point p : {frame_.point(cMin, dBottom_), frame_.point(cMin, highest), frame_.point(cMax, dBottom_),
                         frame_.point(cMax, highest)}) {
-    zMin_ = std::min(zMin_, p.z);
-    zMax_ = std::max(zMax_, p.z);
-    xMin_ = std::min(xMin_, p.x);
-    xMax_ = std::max(xMax_, p.x);
+    box_.include(p);
   }
 }
 
@@ -184,7 +179,7 @@ bool RegionBelowGraph::contains(Point p) const {
   if (!(c > top_.front().first && c < top_.back().first && d > dBottom_)) return false;
   // The first edge of the top reaching past c (a wall standing at c is as good as its neighbour:
   // the points asked about are away from the boundary).
-  auto it = std::upper_bound(top_.begin(), top_.end(), c, [](double v, const auto& q) { return v < q.first; });
+  const Vertex it = firstAfter(c);
   const auto& [c1, d1] = *it;
   const auto& [c0, d0] = *(it - 1);
   return d < d0 + (c - c0) / (c1 - c0) * (d1 - d0);

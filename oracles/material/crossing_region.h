@@ -12,6 +12,22 @@
 
 namespace cyclecert {
 
+// The box a region's points span, grown point by point (empty at first): what both indexes below
+// test a query against before visiting any edge.
+struct PlaneBox {
+  double zMin = INFINITY, zMax = -INFINITY, xMin = INFINITY, xMax = -INFINITY;
+  void include(Point p) {
+    zMin = std::min(zMin, p.z);
+    zMax = std::max(zMax, p.z);
+    xMin = std::min(xMin, p.x);
+    xMax = std::max(xMax, p.x);
+  }
+  // Whether the box [z0, z1] × [x0, x1] meets this one.
+  bool meets(double z0, double z1, double x0, double x1) const {
+    return !(z1 < zMin || z0 > zMax || x1 < xMin || x0 > xMax);
+  }
+};
+
 class CrossingRegion {
  public:
   // The grid is made on the first query that visits edges (a move the box alone shows clear of the
@@ -21,9 +37,7 @@ class CrossingRegion {
   explicit CrossingRegion(const std::vector<std::vector<Point>>& rings);  // each closed implicitly
 
   // Whether the box [zMin, zMax] × [xMin, xMax] meets the region's box.
-  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
-    return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
-  }
+  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const { return box_.meets(zMin, zMax, xMin, xMax); }
   // Whether p is inside: the even-odd rule over every ring (outer rings and holes alike). For
   // points away from the boundary, as the crossing test asks.
   bool contains(Point p) const;
@@ -43,7 +57,7 @@ class CrossingRegion {
   CellRange cellsOf(double zMin, double zMax, double xMin, double xMax) const;
   void makeGrid() const;
 
-  double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
+  PlaneBox box_;
   std::vector<Edge> edges_;  // every edge, ring by ring
   // Edges spanning a good part of the region (a bottom line, the sides) are few and visited
   // always; the others sit in a grid over their own box, each listed in every cell its box meets.
@@ -84,9 +98,7 @@ class RegionBelowGraph {
   // other; at least two points.
   RegionBelowGraph(const DepthFrame& frame, std::vector<std::pair<double, double>> top, double dBottom);
 
-  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const {
-    return !(zMax < zMin_ || zMin > zMax_ || xMax < xMin_ || xMin > xMax_);
-  }
+  bool mayMeet(double zMin, double zMax, double xMin, double xMax) const { return box_.meets(zMin, zMax, xMin, xMax); }
   bool contains(Point p) const;
   template <typename Visit>
   void forEachEdgeNear(double zMin, double zMax, double xMin, double xMax, Visit visit) const;
@@ -117,7 +129,7 @@ class RegionBelowGraph {
   // Per block of kBlock top edges, the depths they span: a query skips the blocks it cannot meet.
   std::vector<std::pair<double, double>> blockDepths_;
   double dBottom_;
-  double zMin_ = INFINITY, zMax_ = -INFINITY, xMin_ = INFINITY, xMax_ = -INFINITY;
+  PlaneBox box_;
 };
 
 template <typename Visit>
@@ -128,7 +140,7 @@ void RegionBelowGraph::forEachEdgeNear(double zMin, double zMax, double xMin, do
   visit(frame_.point(cMax, top_.back().second), frame_.point(cMax, dBottom_));
   visit(frame_.point(cMax, dBottom_), frame_.point(cMin, dBottom_));
   const DepthFrame::Ranges q = frame_.rangesOf(zMin, zMax, xMin, xMax);
-  auto it = std::lower_bound(top_.begin(), top_.end(), q.cMin, [](const auto& p, double c) { return p.first < c; });
+  const Vertex it = firstAtOrAfter(q.cMin, top_.begin());
   std::size_t i = it == top_.begin() ? 0 : static_cast<std::size_t>(it - top_.begin()) - 1;
   while (i + 1 < top_.size() && top_[i].first <= q.cMax) {
     const auto& [low, high] = blockDepths_[i / kBlock];
