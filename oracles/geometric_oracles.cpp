@@ -9,7 +9,6 @@
 
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
-#include "reference/model/offset.h"
 
 namespace cyclecert {
 
@@ -177,14 +176,9 @@ class PassLevelsOracle : public Oracle {
     const Point aPrime = inFrame(c, c.start + c.allowance);
     const std::vector<Segment> rough = c.roughProfile();
     for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
-      const Move& m = in.path.moves[i];
-      const Point from = inFrame(c, in.path.from(i)), to = inFrame(c, m.to);
-      const bool cut = m.kind == MoveKind::Feed && m.shape == SegmentKind::Line && std::abs(to.x - from.x) <= tol &&
-                       c.cutDirection() * (to.z - from.z) > tol;
-      const Point mid = 0.5 * (in.path.from(i) + m.to);
       // The semi-finish runs on the rough profile, G70 on the finish shape: neither is a roughing pass.
-      if (!cut || nearPath(mid, rough, tol) || (in.program.hasFinishingCycle && nearPath(mid, c.shape, tol))) continue;
-      const double depth = c.depthDirection() * (to.x - aPrime.x);
+      if (!isCutAlongCutAxis(in, c, i, tol) || runsOnProfile(in, c, rough, i, tol)) continue;
+      const double depth = c.depthDirection() * (inFrame(c, in.path.moves[i].to).x - aPrime.x);
       const double k = std::round(depth / c.depthOfCut);
       if (k >= 1 && std::abs(depth - k * c.depthOfCut) <= tol) continue;
       std::ostringstream s;

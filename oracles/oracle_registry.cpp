@@ -1,5 +1,9 @@
 #include "oracles/oracles.h"
 
+#include <cmath>
+
+#include "reference/model/offset.h"
+
 namespace cyclecert {
 
 std::vector<std::unique_ptr<Oracle>> makeOracles() {
@@ -26,5 +30,19 @@ Finding finding(const Oracle& o, std::optional<std::size_t> move, std::string me
 }
 
 Point inFrame(const CycleSpec& c, Point p) { return c.cutsAlongZ() ? p : transposed(p); }
+
+bool isCutAlongCutAxis(const JudgeInput& in, const CycleSpec& c, std::size_t i, double tol) {
+  if (i >= in.path.moves.size()) return false;
+  const Move& m = in.path.moves[i];
+  const Point from = inFrame(c, in.path.from(i)), to = inFrame(c, m.to);
+  return m.kind == MoveKind::Feed && m.shape == SegmentKind::Line && std::abs(to.x - from.x) <= tol &&
+         c.cutDirection() * (to.z - from.z) > tol;
+}
+
+bool runsOnProfile(const JudgeInput& in, const CycleSpec& c, const std::vector<Segment>& rough, std::size_t i,
+                   double tol) {
+  const Point mid = 0.5 * (in.path.from(i) + in.path.moves[i].to);
+  return nearPath(mid, rough, tol) || (in.program.hasFinishingCycle && nearPath(mid, c.shape, tol));
+}
 
 }  // namespace cyclecert

@@ -23,5 +23,12 @@ std::vector<std::unique_ptr<Oracle>> makeOracles();
 Finding finding(const Oracle& o, std::optional<std::size_t> move, std::string message);
 // Point in the cycle frame (cut along z, steps along x): G72 exchanges the axes.
 Point inFrame(const CycleSpec& c, Point p);
+// Whether move i is a cut along the cycle's cut axis: a line in cutting feed, level along the depth
+// axis and forward along the cut (within tol).
+bool isCutAlongCutAxis(const JudgeInput& in, const CycleSpec& c, std::size_t i, double tol);
+// Whether move i runs on the rough profile (the semi-finish pass, type II's bottom cuts) or, with a
+// G70, on the finish shape: its middle lies within tol of either. Such a cut is no roughing pass.
+bool runsOnProfile(const JudgeInput& in, const CycleSpec& c, const std::vector<Segment>& rough, std::size_t i,
+                   double tol);
 
 }  // namespace cyclecert

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "oracles/oracles.h"
-#include "reference/model/offset.h"
 
 namespace cyclecert {
 
@@ -24,9 +23,12 @@ class RetractOracle : public Oracle {
     if (!c || in.path.alarm) return;
     Check check{*c, in, c->roughProfile(), in.settings.tolerance()};
     for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
-      if (!check.isCutAlongCutAxis(i)) continue;
-      if (!check.onProfile(i)) c->typeII ? check.typeIIPassLeaves(i, *this, out) : check.typeIPassLeaves(i, *this, out);
-      else if (c->typeII) check.bottomLeaves(i, *this, out);
+      if (!isCutAlongCutAxis(in, *c, i, check.tol)) continue;
+      if (!runsOnProfile(in, *c, check.rough, i, check.tol)) {
+        c->typeII ? check.typeIIPassLeaves(i, *this, out) : check.typeIPassLeaves(i, *this, out);
+      } else if (c->typeII) {
+        check.bottomLeaves(i, *this, out);
+      }
     }
   }
 
@@ -41,14 +43,6 @@ class RetractOracle : public Oracle {
     Point to(std::size_t i) const { return inFrame(c, in.path.moves[i].to); }
     bool isFeedLine(std::size_t i) const {
       return i < in.path.moves.size() && in.path.moves[i].kind == MoveKind::Feed && in.path.moves[i].shape == SegmentKind::Line;
-    }
-    bool isCutAlongCutAxis(std::size_t i) const {
-      return isFeedLine(i) && std::abs(to(i).x - from(i).x) <= tol && c.cutDirection() * (to(i).z - from(i).z) > tol;
-    }
-    // On the rough profile (semi-finish, bottom cuts) or, with a G70, on the finish shape.
-    bool onProfile(std::size_t i) const {
-      const Point mid = 0.5 * (in.path.from(i) + in.path.moves[i].to);
-      return nearPath(mid, rough, tol) || (in.program.hasFinishingCycle && nearPath(mid, c.shape, tol));
     }
     double back(std::size_t i) const { return -c.cutDirection() * (to(i).z - from(i).z); }
     double out(std::size_t i) const { return -c.depthDirection() * (to(i).x - from(i).x); }
