@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "reference/model/ascii.h"
 #include "reference/model/program.h"
 
 namespace cyclecert {
@@ -17,14 +18,9 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isSign(char c) { return c == '+' || c == '-'; }
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 bool isLineEnd(char c) { return c == '\n' || c == '\r'; }
-char toUpper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
 
 bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
-  if (text.size() < prefix.size()) return false;
-  for (std::size_t i = 0; i < prefix.size(); ++i) {
-    if (toUpper(text[i]) != toUpper(prefix[i])) return false;
-  }
-  return true;
+  return text.size() >= prefix.size() && equalIgnoringCase(text.substr(0, prefix.size()), prefix);
 }
 
 // Length of the well-formed UTF-8 sequence starting at offset, or 0 when there is none, so that
@@ -61,7 +57,7 @@ constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 
 }  // namespace
 
-char Token::letter() const { return text.empty() ? '\0' : toUpper(text.front()); }
+char Token::letter() const { return text.empty() ? '\0' : asciiUpper(text.front()); }
 
 std::string_view Token::commentBody() const {
   return text.size() < 2 ? std::string_view{} : text.substr(1, text.size() - 2);

@@ -1,13 +1,14 @@
 #include "reference/gcode/writer.h"
 
 #include <charconv>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string_view>
 #include <system_error>
+
+#include "reference/model/ascii.h"
 
 namespace cyclecert {
 
@@ -43,7 +44,7 @@ double roundedToMostDigits(double value) {
 // The word as the source spelled it ("T0202", "X54.0", "G1"), when its text still says its value
 // exactly (a relation that changed the value and not the text gets the value written instead).
 std::optional<std::string> sourceSpelling(const Word& word) {
-  if (word.text.size() < 2 || std::toupper(static_cast<unsigned char>(word.text[0])) != word.letter) return std::nullopt;
+  if (word.text.size() < 2 || asciiUpper(word.text[0]) != word.letter) return std::nullopt;
   std::string number;
   for (char c : word.text.substr(1)) {
     if (c != ' ' && c != '\t') number += c;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "reference/model/ascii.h"
+
 namespace cyclecert {
 
 const std::vector<ParamSpec>& MachineParams::catalogue() {
@@ -57,13 +59,6 @@ const std::vector<ParamSpec>& MachineParams::catalogue() {
 }
 
 namespace {
-char toUpper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
-
-bool sameName(std::string_view a, std::string_view b) {
-  return a.size() == b.size() &&
-         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return toUpper(x) == toUpper(y); });
-}
-
 std::string_view trimmed(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
@@ -84,7 +79,7 @@ const ParamSpec* MachineParams::find(std::string_view name) {
   }();
   if (const auto found = bySpelling.find(name); found != bySpelling.end()) return found->second;
   for (const ParamSpec& p : catalogue()) {
-    if (sameName(p.number, name) || (!p.mnemonic.empty() && sameName(p.mnemonic, name))) return &p;
+    if (equalIgnoringCase(p.number, name) || (!p.mnemonic.empty() && equalIgnoringCase(p.mnemonic, name))) return &p;
   }
   return nullptr;
 }
