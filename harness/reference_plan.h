@@ -24,7 +24,8 @@ struct PlanRequest {
 
 // A request read: its profile, the machine parameters (the profile's defaults with the request's
 // applied), and the program parsed. The engine and the judge read the same program in turn, so
-// the last program parsed is kept (per thread) and shared rather than parsed again.
+// the programs parsed lately (the last 128, per thread) are kept and shared rather than parsed
+// again.
 struct ReadRequest {
   const Profile* profile = nullptr;
   MachineParams params;

@@ -100,8 +100,8 @@ class MaterialModel {
   double reach_;
   double chordTolerance_;
   CutEnvelope cut_;
-  // The region below the envelope as the crossing tests see it; made when first needed after a feed.
   std::vector<Point> flattened_;  // apply's buffer for a move's chords
+  // The region below the envelope as the crossing tests see it; made when first needed after a feed.
   mutable std::optional<RegionBelowGraph> belowForCrossing_;
   mutable std::optional<BgRegion> remaining_;  // likewise
 };

@@ -24,10 +24,10 @@ struct Thickest {
 // profile's ends (outside its span) or under it is not measured.
 //
 // Tolerance. A profile that is a graph over the cut axis is measured exactly, its arcs as arcs
-// (one that turns back along it, against chords within chordTolerance). The region's points may stand up to
-// chordTolerance sideways of where they belong (pass the tolerance its arcs were flattened with,
-// or a finer one when its vertices lie on the arcs exactly); next to a point where the profile is
-// steep, that reads as thickness along the depth axis. So "the profile beneath" a point at cut
+// (one that turns back along it, against chords within chordTolerance). The region's points may
+// stand up to chordTolerance sideways of where they belong (pass the tolerance its arcs were
+// flattened with, or a finer one when its vertices lie on the arcs exactly); next to a point where
+// the profile is steep, that reads as thickness along the depth axis. So "the profile beneath" a point at cut
 // coordinate c is the highest the profile comes within c ± w (and at most w above the point), with
 // w = 2·chordTolerance + the booleans' resolution (4 × kBooleanResolution × the region's size).
 // The price is the other way: where the profile rises along the cut axis with slope s, material
