@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""A cyclecert engine in 20 lines: reads one spec case per line (JSON) on stdin and answers one line
-per case on stdout. This one hands each case to `cyclecert plan` — replace `plan()` with yours."""
+"""A cyclecert engine in 25 lines: reads one request per line (a spec case as JSON, with "request": N)
+on stdin and answers one line per request on stdout, echoing "request": N. This one hands each case
+to `cyclecert plan` — replace `plan()` with yours. Anything else you print goes to stderr."""
 import json, subprocess, sys, tempfile
 
 CYCLECERT = sys.argv[1] if len(sys.argv) > 1 else "build/cyclecert"
@@ -17,5 +18,7 @@ def plan(case):
     path = json.loads(run.stdout)
     return {"alarm": path["alarm"]} if path["alarm"] else {"toolpath": path}
 
-for line in sys.stdin:
-    print(json.dumps(plan(json.loads(line))), flush=True)
+if __name__ == "__main__":
+    for line in sys.stdin:
+        case = json.loads(line)
+        print(json.dumps({**plan(case), "request": case["request"]}), flush=True)

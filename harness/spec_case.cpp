@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "reference/model/profile.h"
 #include "reference/model/toolpath_json.h"
 
 namespace cyclecert {
@@ -102,6 +103,25 @@ void readExpectation(const json& expect, SpecCase& c) {
   readTolerance(expect, c);
 }
 
+// The profile is one cyclecert knows and every parameter a value it can take there: a case that
+// names another is refused here, naming the file and the field, not later by the engine.
+void checkProfileAndParams(const SpecCase& c) {
+  const Profile* profile = findProfile(c.profile);
+  if (!profile) {
+    std::string known;
+    for (const Profile& p : allProfiles()) known += (known.empty() ? "" : ", ") + p.name;
+    throw SpecError(c.file, "/profile", "one of " + known + " (`cyclecert profiles`); unknown profile '" + c.profile + "'");
+  }
+  MachineParams params = profile->defaults;
+  for (const auto& [name, value] : c.params) {
+    try {
+      params.set(name, value);
+    } catch (const std::invalid_argument& e) {
+      throw SpecError(c.file, "/params/" + name, std::string("a valid value: ") + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 SpecCase parseSpecCase(const std::string& text, const std::string& file) {
@@ -179,6 +199,7 @@ SpecCase specCaseFrom(json j, const std::string& file) {
     if (j["mode"] != "mdi" && j["mode"] != "memory") throw SpecError(file, "/mode", "\"memory\" or \"mdi\"");
     c.mdi = j["mode"] == "mdi";
   }
+  checkProfileAndParams(c);
   readExpectation(required(j, "expect", file), c);
   c.raw = std::move(j);
   return c;

@@ -16,41 +16,10 @@
 #include "harness/check_run.h"
 #include "harness/engines/engine.h"
 #include "harness/rule_catalogue.h"
+#include "tests/check_run_fixture.h"
 
 namespace cyclecert {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::string source(const std::string& relative) { return std::string(CYCLECERT_SOURCE_DIR) + "/" + relative; }
-
-// A scratch folder with a specs/cases tree holding a few real cases.
-class CheckRun : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cyclecert-check-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    for (const char* id : {"fanuc-0i-f/g71/g01-head-stepped-shaft", "gsk/g72/first-infeed-g01", "fanuc-0i-f/g71/ps0064-z-reverse"}) {
-      const fs::path to = dir_ / "specs/cases" / (std::string(id) + ".json");
-      fs::create_directories(to.parent_path());
-      fs::copy_file(source("specs/cases/" + std::string(id) + ".json"), to);
-    }
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CheckOptions options() const { return {(dir_ / "specs").string(), "", (dir_ / "out").string(), false}; }
-  std::vector<nlohmann::json> results() const {
-    std::vector<nlohmann::json> lines;
-    std::ifstream in(dir_ / "out/results.jsonl");
-    std::string line;
-    while (std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
-    return lines;
-  }
-  std::string script(const std::string& name) const { return "sh " + source("tests/data/engines/" + name); }
-  std::string cli() const { return CYCLECERT_CLI; }
-
-  fs::path dir_;
-};
 
 TEST(Engines, ReferencePassesEverySpecCase) {
   auto engine = makeEngine("reference");

@@ -240,12 +240,20 @@ TEST_F(JudgeCli, BadToolpathsExitWith2NamingTheFieldAndTheMove) {
       {"arc-without-centre",
        [](json& j) { j["moves"][6]["shape"] = "arc_ccw"; },
        {"/moves/6/center", "field missing"}},
-      {"no-moves",
-       [](json& j) {
-         j["moves"] = json::array();
-         j["alarm"] = nullptr;
-       },
-       {"/moves", "at least one move"}},
+      // Fields of the wrong type name the field and what it must be (not nlohmann's "type must be
+      // string, but is number").
+      {"shape-number", [](json& j) { j["moves"][2]["shape"] = 3; }, {"/moves/2/shape", "\"line\"", "found 3"}},
+      {"phase-number", [](json& j) { j["moves"][2]["phase"] = 7; }, {"/moves/2/phase", "a string", "found 7"}},
+      {"pass-string", [](json& j) { j["moves"][2]["pass"] = "two"; }, {"/moves/2/pass", "an integer"}},
+      {"alarm-message-number",
+       [](json& j) { j["alarm"] = {{"code", "PS0064"}, {"message", 5}}; },
+       {"/alarm/message", "a string", "found 5"}},
+      {"alarm-when-number",
+       [](json& j) { j["alarm"] = {{"code", "PS0064"}, {"when", 1}}; },
+       {"/alarm/when", "\"cycle block\"", "found 1"}},
+      {"alarm-line-string",
+       [](json& j) { j["alarm"] = {{"code", "PS0064"}, {"line", "7"}}; },
+       {"/alarm/line", "an integer"}},
       {"moves-missing", [](json& j) { j.erase("moves"); }, {"/moves", "field missing"}},
   };
   for (const BadToolpath& c : cases) {
@@ -258,6 +266,18 @@ TEST_F(JudgeCli, BadToolpathsExitWith2NamingTheFieldAndTheMove) {
     EXPECT_NE(r.err.find(file), std::string::npos) << c.name << "\n" << r.err;
     for (const std::string& s : c.expected) EXPECT_NE(r.err.find(s), std::string::npos) << c.name << ": " << s << "\n" << r.err;
   }
+}
+
+// A toolpath with no moves and no alarm is a valid answer (the reference gives it when the start
+// point is already on the level where the shape ends): it is judged, not refused as malformed.
+TEST_F(JudgeCli, AnEmptyToolpathIsJudgedNotRefused) {
+  json j = handPath();
+  j["moves"] = json::array();
+  j["alarm"] = nullptr;
+  const std::string file = write("no-moves.json", j.dump(2));
+  const CliRun r = run("judge " + kCase + " " + file);
+  EXPECT_NE(r.exitCode, 2) << r.out << r.err;
+  EXPECT_EQ(r.err.find("at least one move"), std::string::npos) << r.err;
 }
 
 // The literal token NaN is not JSON: the parser's error names the file and the line and column of

@@ -1,68 +1,151 @@
-// process:COMMAND — any program speaking JSON lines: one spec case per line on its stdin, one reply
-// per line on its stdout: {"toolpath": {…}}, {"alarm": {"code", "message", "line"}},
-// {"not_applicable": "…"} or {"error": "…"}. The process is started once and reused; a crash, a hang
-// (per-case timeout), invalid JSON or a reply beyond the size cap is an engine failure for that
-// case, the process is restarted for the next one, and the run goes on.
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
+// process:COMMAND — any program speaking JSON lines (README "The process protocol"): one request
+// per line on its stdin — the spec case with "request": N added, N a number that grows with every
+// request — and one reply per line on its stdout, echoing "request": N, with one of
+// {"toolpath": {…}}, {"alarm": {"code", "message", "line"}}, {"not_applicable": "…"} or {"error": "…"}.
+//
+// The process is started once and reused. Everything that goes wrong is an engine failure of the
+// case it happens in, the process is restarted (its whole process group killed) so the next case
+// starts in sync, and the run goes on:
+// - no reply within the timeout (which covers writing the request as well as reading the reply),
+// - the process ended (crashed) or closed its stdout while running,
+// - a line that is not the reply to the current request (not JSON, no or another "request"),
+// - more output after the reply (a second reply, a log line) in the same read or already waiting,
+// - a reply beyond the size cap, or one that is not a valid toolpath/alarm.
+// Output that was not yet there when the reply was taken is found before the next request is
+// written (it is waiting on the pipe), or while that request waits (a second reply to the previous
+// request): it is never taken as the next case's reply. runBatch then turns the previous case's
+// result into that engine failure; run() has already returned it, so it restarts the engine and
+// runs the next case on the fresh process.
 #include <chrono>
-#include <cstring>
+#include <optional>
 
 #include "harness/engines/engines.h"
+#include "harness/engines/subprocess.h"
 #include "reference/model/toolpath_json.h"
 
 namespace cyclecert {
 
 namespace {
 
+// At most this much of an unexpected line in a message.
+constexpr std::size_t kQuotedBytes = 200;
+
+std::string quotedLine(const std::string& text) {
+  std::string shown = text.substr(0, kQuotedBytes);
+  for (char& ch : shown) {
+    if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
+  }
+  return "'" + shown + (text.size() > kQuotedBytes ? "…' (" + std::to_string(text.size()) + " bytes)" : "'");
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// One exchange: the case's result, and what it showed about the previous case's (extra output
+// that came after that case's result was taken).
+struct Exchange {
+  EngineResult result;
+  std::optional<std::string> previousCaseFault;
+};
+
 class ProcessEngine : public Engine {
  public:
-  ProcessEngine(std::string command, const EngineOptions& options) : command_(std::move(command)), options_(options) {
-    ::signal(SIGPIPE, SIG_IGN);  // a dead engine must not kill the run: writes fail with EPIPE instead
-  }
-  ~ProcessEngine() override { stop(); }
+  ProcessEngine(std::string command, const EngineOptions& options) : command_(std::move(command)), options_(options) {}
 
   std::string name() const override { return "process:" + command_; }
   std::string description() const override { return "external engine `" + command_ + "` (JSON lines)"; }
   std::string version() const override { return command_; }
 
-  EngineResult run(const SpecCase& c) override {
-    const auto started = std::chrono::steady_clock::now();
-    EngineResult r = exchange(c);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return r;
+  EngineResult run(const SpecCase& c) override { return exchange(c).result; }
+
+  std::vector<EngineResult> runBatch(const std::vector<SpecCase>& cases) override {
+    std::vector<EngineResult> results;
+    results.reserve(cases.size());
+    for (const SpecCase& c : cases) {
+      Exchange x = exchange(c);
+      if (x.previousCaseFault && !results.empty()) {
+        const double seconds = results.back().seconds;
+        results.back() = EngineResult::failed(*x.previousCaseFault);
+        results.back().seconds = seconds;
+      }
+      results.push_back(std::move(x.result));
+    }
+    return results;
   }
 
  private:
-  EngineResult exchange(const SpecCase& c) {
-    if (pid_ < 0 && !start()) return EngineResult::failed("cannot start `" + command_ + "`: " + std::strerror(errno));
-    const std::string request = c.raw.dump() + "\n";
-    if (!writeAll(request)) return restartAfter("the engine process stopped reading (it may have crashed)");
-    std::string line;
-    const std::string problem = readLine(line);
-    if (!problem.empty()) return restartAfter(problem);
-    return parseReply(line);
+  Exchange exchange(const SpecCase& c) {
+    const auto started = std::chrono::steady_clock::now();
+    Exchange x;
+    if (process_) {
+      if (const std::string late = process_->readWaiting(kQuotedBytes + 1); !late.empty()) {
+        x.previousCaseFault = "after its reply, the engine wrote more: " + quotedLine(late);
+        stop();
+      }
+    }
+    std::optional<EngineResult> result = ask(c, x);
+    if (!result) result = ask(c, x);  // a second reply to the previous case came: again, in sync
+    x.result = result ? std::move(*result) : EngineResult::failed("the engine replied to an earlier request twice");
+    x.result.seconds = secondsSince(started);
+    return x;
   }
 
-  EngineResult parseReply(const std::string& line) {
+  // The request for `c` and its reply. A second reply to the previous request, seen while waiting,
+  // goes to x.previousCaseFault and gives nothing: the process is stopped, the caller asks again.
+  std::optional<EngineResult> ask(const SpecCase& c, Exchange& x) {
+    if (!process_) {
+      try {
+        process_.emplace(SubprocessSpec{{"/bin/sh", "-c", command_}, std::nullopt, "", true, false});
+      } catch (const std::exception& e) {
+        return EngineResult::failed("cannot start `" + command_ + "`: " + e.what());
+      }
+      buffer_.clear();
+      scanned_ = 0;
+      answered_ = 0;
+    }
+    const long request = ++requests_;
+    nlohmann::json message = c.raw;
+    message["request"] = request;
+    const Deadline deadline = deadlineAfter(options_.timeoutSeconds);
+    switch (process_->write(message.dump() + "\n", deadline)) {
+      case IoResult::Done: break;
+      case IoResult::Closed: return restartAfter("the engine stopped reading its input: " + howItEnded());
+      case IoResult::TimedOut:
+        return restartAfter("the engine did not read the case within " + timeout() + " s (its input is full)");
+    }
+    std::string line;
+    if (const std::string problem = readLine(line, deadline); !problem.empty()) return restartAfter(problem);
     nlohmann::json reply;
     try {
-      reply = parseJsonDocument(line, "reply");
+      reply = parseJsonDocument(line, "the reply to request " + std::to_string(request));
     } catch (const std::exception& e) {
-      return restartAfter(std::string("invalid JSON reply: ") + e.what());
+      return restartAfter("invalid JSON reply to request " + std::to_string(request) + ": " + quotedLine(line) + " (" +
+                          e.what() + ")");
     }
-    if (!reply.is_object()) return restartAfter("the reply is not a JSON object");
+    const nlohmann::json* echoed = reply.is_object() && reply.contains("request") ? &reply["request"] : nullptr;
+    if (echoed && answered_ > 0 && *echoed == answered_) {
+      x.previousCaseFault = "the engine replied twice to this case: the second reply was " + quotedLine(line);
+      stop();
+      return std::nullopt;
+    }
+    if (!echoed || *echoed != request) {
+      return restartAfter("a line that is not the reply to request " + std::to_string(request) + ": " + quotedLine(line) +
+                          " (expected a JSON object with \"request\": " + std::to_string(request) + ")");
+    }
+    std::string more = buffer_;
+    if (more.size() <= kQuotedBytes) more += process_->readWaiting(kQuotedBytes + 1 - more.size());
+    if (!more.empty()) return restartAfter("after its reply, the engine wrote more: " + quotedLine(more));
+    answered_ = request;
+    return resultOf(reply);
+  }
+
+  EngineResult resultOf(const nlohmann::json& reply) {
     try {
       if (reply.contains("toolpath")) return EngineResult::planned(toolpathFromJson(reply["toolpath"]));
       if (reply.contains("alarm")) {
         Toolpath t;
-        t.alarm = alarmFromJson(reply["alarm"], "alarm");
+        t.alarm = alarmFromJson(reply["alarm"], "/alarm");
         return EngineResult::planned(std::move(t));
       }
       if (reply.contains("not_applicable")) return EngineResult::notApplicable(reply["not_applicable"].dump());
@@ -73,104 +156,64 @@ class ProcessEngine : public Engine {
     return EngineResult::failed("a reply with none of toolpath, alarm, not_applicable, error");
   }
 
+  // One line within the deadline; the problem in words, or "" on success.
+  std::string readLine(std::string& line, Deadline deadline) {
+    for (;;) {
+      if (const auto nl = buffer_.find('\n', scanned_); nl != std::string::npos) {
+        line = buffer_.substr(0, nl);
+        buffer_.erase(0, nl + 1);
+        scanned_ = 0;
+        return "";
+      }
+      scanned_ = buffer_.size();
+      if (buffer_.size() > options_.maxReplyBytes) {
+        return "a reply longer than " + std::to_string(options_.maxReplyBytes) + " bytes";
+      }
+      switch (process_->read(buffer_, nullptr, deadline)) {
+        case IoResult::Done: break;
+        case IoResult::TimedOut: return "no reply within " + timeout() + " s (the engine hangs)";
+        case IoResult::Closed: return outputClosed();
+      }
+    }
+  }
+
+  // Its stdout is at its end: it ended (crashed), or it closed its output and runs on.
+  std::string outputClosed() {
+    if (const auto status = process_->endedBy(deadlineAfter(kEndGraceSeconds))) {
+      return "the engine process " + status->describe() + " before replying (it crashed)";
+    }
+    return "the engine closed its output (its stdout) but is still running";
+  }
+
+  std::string howItEnded() {
+    const auto status = process_->endedBy(deadlineAfter(kEndGraceSeconds));
+    return status ? "it " + status->describe() : "it closed its stdin but is still running";
+  }
+
+  std::string timeout() const {
+    std::string s = std::to_string(options_.timeoutSeconds);
+    s.erase(s.find_last_not_of('0') + 1);
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+  }
+
   EngineResult restartAfter(const std::string& problem) {
     stop();
     return EngineResult::failed(problem);
   }
 
-  bool start() {
-    int toChild[2], fromChild[2];
-    if (::pipe(toChild) != 0) return false;
-    if (::pipe(fromChild) != 0) {
-      ::close(toChild[0]);
-      ::close(toChild[1]);
-      return false;
-    }
-    pid_ = ::fork();
-    if (pid_ < 0) return false;
-    if (pid_ == 0) {
-      // Its own process group, so a timeout kills the wrapper's children too; and it dies with us, so a
-      // killed run leaves no engine behind.
-      ::setpgid(0, 0);
-      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-      ::dup2(toChild[0], STDIN_FILENO);
-      ::dup2(fromChild[1], STDOUT_FILENO);
-      ::close(toChild[0]);
-      ::close(toChild[1]);
-      ::close(fromChild[0]);
-      ::close(fromChild[1]);
-      ::execl("/bin/sh", "sh", "-c", command_.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    ::close(toChild[0]);
-    ::close(fromChild[1]);
-    toChild_ = toChild[1];
-    fromChild_ = fromChild[0];
-    buffer_.clear();
-    return true;
-  }
+  void stop() { process_.reset(); }
 
-  void stop() {
-    if (toChild_ >= 0) ::close(toChild_);
-    if (fromChild_ >= 0) ::close(fromChild_);
-    toChild_ = fromChild_ = -1;
-    if (pid_ > 0) {
-      ::kill(-pid_, SIGKILL);
-      int status = 0;
-      ::waitpid(pid_, &status, 0);
-    }
-    pid_ = -1;
-  }
-
-  bool writeAll(const std::string& text) {
-    std::size_t done = 0;
-    while (done < text.size()) {
-      const ssize_t n = ::write(toChild_, text.data() + done, text.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return false;
-      done += static_cast<std::size_t>(n);
-    }
-    return true;
-  }
-
-  // One reply line within the timeout; the problem in words, or "" on success.
-  std::string readLine(std::string& line) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options_.timeoutSeconds);
-    for (;;) {
-      if (const auto nl = buffer_.find('\n'); nl != std::string::npos) {
-        line = buffer_.substr(0, nl);
-        buffer_.erase(0, nl + 1);
-        return "";
-      }
-      if (buffer_.size() > options_.maxReplyBytes) {
-        return "a reply longer than " + std::to_string(options_.maxReplyBytes) + " bytes";
-      }
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-      if (left.count() <= 0) return "no reply within " + std::to_string(options_.timeoutSeconds) + " s (the engine hangs)";
-      pollfd p{fromChild_, POLLIN, 0};
-      const int ready = ::poll(&p, 1, static_cast<int>(left.count()));
-      if (ready < 0 && errno == EINTR) continue;
-      if (ready <= 0) continue;
-      char chunk[65536];
-      const ssize_t n = ::read(fromChild_, chunk, sizeof chunk);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        int status = 0;
-        ::waitpid(pid_, &status, 0);
-        pid_ = -1;
-        const std::string how = WIFSIGNALED(status) ? "was killed by signal " + std::to_string(WTERMSIG(status))
-                                                    : "exited with status " + std::to_string(WEXITSTATUS(status));
-        return "the engine process " + how + " before replying (it crashed)";
-      }
-      buffer_.append(chunk, static_cast<std::size_t>(n));
-    }
-  }
+  // How long a process whose output ended may take to exit before it counts as still running.
+  static constexpr double kEndGraceSeconds = 0.5;
 
   std::string command_;
   EngineOptions options_;
-  pid_t pid_ = -1;
-  int toChild_ = -1, fromChild_ = -1;
-  std::string buffer_;
+  std::optional<Subprocess> process_;
+  long requests_ = 0;       // the last request's number
+  long answered_ = 0;       // the last request the running process answered (0: none yet)
+  std::string buffer_;      // what it wrote beyond the last line taken
+  std::size_t scanned_ = 0; // buffer_ holds no newline before this
 };
 
 }  // namespace

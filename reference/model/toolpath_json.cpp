@@ -1,6 +1,7 @@
 #include "reference/model/toolpath_json.h"
 
 #include <cmath>
+#include <optional>
 
 namespace cyclecert {
 
@@ -156,6 +157,24 @@ double finiteNumber(const json& j, const std::string& where) {
   if (!std::isfinite(v)) fail(where, "a finite number");
   return v;
 }
+
+// j[key] when it is there; a value of another type is an error naming where/key and `expected`.
+std::optional<std::string> optionalString(const json& j, const char* key, const std::string& where,
+                                          const std::string& expected) {
+  if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+  if (!j[key].is_string()) fail(where + "/" + key, expected + " (a string), found " + j[key].dump().substr(0, 80));
+  return j[key].get<std::string>();
+}
+
+std::optional<int> optionalInteger(const json& j, const char* key, const std::string& where,
+                                   const std::string& expected) {
+  if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+  const json& v = j[key];
+  if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 1000000000) {
+    fail(where + "/" + key, expected + " (an integer), found " + v.dump().substr(0, 80));
+  }
+  return v.get<int>();
+}
 }  // namespace
 
 Point pointFromJson(const json& j, const std::string& where) {
@@ -174,7 +193,7 @@ Move moveFromJson(const json& j, const std::string& where) {
   if (kind == "rapid") m.kind = MoveKind::Rapid;
   else if (kind == "feed") m.kind = MoveKind::Feed;
   else fail(where + "/kind", "\"rapid\" or \"feed\", found \"" + kind + "\"");
-  const std::string shape = j.value("shape", std::string("line"));
+  const std::string shape = optionalString(j, "shape", where, "\"line\", \"arc_cw\" or \"arc_ccw\"").value_or("line");
   if (shape == "line") m.shape = SegmentKind::Line;
   else if (shape == "arc_cw") m.shape = SegmentKind::ArcCW;
   else if (shape == "arc_ccw") m.shape = SegmentKind::ArcCCW;
@@ -186,8 +205,8 @@ Move moveFromJson(const json& j, const std::string& where) {
     m.center = pointFromJson(j["center"], where + "/center");
   }
   if (j.contains("feed")) m.feed = finiteNumber(j["feed"], where + "/feed");
-  if (j.contains("phase") && j["phase"].is_string()) m.phase = j["phase"];
-  if (j.contains("pass") && j["pass"].is_number_integer()) m.pass = j["pass"];
+  m.phase = optionalString(j, "phase", where, "a phase name such as \"rough\"").value_or("");
+  m.pass = optionalInteger(j, "pass", where, "a pass number ≥ 0").value_or(0);
   if (j.contains("stop")) {
     if (!j["stop"].is_boolean()) fail(where + "/stop", "true or false");
     m.singleBlockStop = j["stop"].get<bool>();
@@ -198,7 +217,10 @@ Move moveFromJson(const json& j, const std::string& where) {
 
 Alarm alarmFromJson(const json& a, const std::string& where) {
   if (!a.is_object() || !a.contains("code") || !a["code"].is_string()) fail(where, "null or {\"code\": …, \"line\": …}");
-  return Alarm{a["code"], a.value("message", std::string()), a.value("line", 0), a.value("when", std::string())};
+  return Alarm{a["code"], optionalString(a, "message", where, "the alarm's message").value_or(""),
+               optionalInteger(a, "line", where, "the program line number ≥ 0").value_or(0),
+               optionalString(a, "when", where, "\"cycle block\", \"before the cycle\" or \"during the cycle\"")
+                   .value_or("")};
 }
 
 Toolpath toolpathFromJson(const json& j) {
@@ -222,7 +244,6 @@ Toolpath toolpathFromJson(const json& j) {
       }
     }
   }
-  if (t.moves.empty() && !t.alarm) fail("/moves", "at least one move (or an alarm)");
   return t;
 }
 

@@ -32,11 +32,13 @@ Point pointFromJson(const nlohmann::json& j, const std::string& where);
 // A whole toolpath as an engine writes it (only "moves" is required; "start" defaults to the first
 // move's position being reached from an unknown point, so give it). Every error names the field as
 // a JSON pointer, e.g. "/moves/3/center: expected the arc's centre at equal distance from its end
-// points (1.2 mm from the start, 1.5 mm from the end)"; a toolpath with no moves and no alarm is an
-// error too.
+// points (1.2 mm from the start, 1.5 mm from the end)". A toolpath with no moves and no alarm is
+// valid: a cycle can have nothing to cut (the reference plans none when the start point is already
+// on the level where the shape ends).
 Toolpath toolpathFromJson(const nlohmann::json& j);
 Move moveFromJson(const nlohmann::json& j, const std::string& where);
-// {"code": "PS0064", "message"?, "line"?, "when"?}; `where` names it in the error.
+// {"code": "PS0064", "message"?, "line"?, "when"?}; `where` names it in the error (as does every
+// field of the wrong type: "/alarm/message: expected the alarm's message (a string), found 3").
 Alarm alarmFromJson(const nlohmann::json& j, const std::string& where);
 
 std::string kindName(MoveKind k);

@@ -7,10 +7,6 @@
 //       BUILD/linuxcnc/usr/bin/rs274 -g -t PRIVATE/tool.tbl PRIVATE/case.ngc
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "harness/engines/subprocess.h"
 
 namespace cyclecert {
 
@@ -154,7 +152,6 @@ LinuxCncEngine::Output LinuxCncEngine::runRs274(const std::string& programText, 
   fs::remove(dir / ".tool.mmap", ec);  // rs274's tool data lives in $HOME/.tool.mmap
   writeFile(ngc, programText);
 
-  // Everything the child needs is built before fork: the child only calls async-signal-safe functions.
   const std::string exe = rs274Path();
   std::vector<std::string> args = {exe, "-g", "-t", tools, ngc};
   std::vector<std::string> env = {"HOME=" + dir.string(), "LD_LIBRARY_PATH=" + libraryPath(root_), "PATH=/usr/bin:/bin",
@@ -164,75 +161,34 @@ LinuxCncEngine::Output LinuxCncEngine::runRs274(const std::string& programText, 
   if (fs::is_directory(fs::path(root_) / "usr/lib/python3.11/encodings", ec)) {
     env.push_back("PYTHONHOME=" + (fs::path(root_) / "usr").string());
   }
-  std::vector<char*> argv, envp;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  for (std::string& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  const std::string cwd = dir.string();
-
-  int outPipe[2], errPipe[2];
-  if (::pipe2(outPipe, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-  if (::pipe2(errPipe, O_CLOEXEC) != 0) {
-    ::close(outPipe[0]);
-    ::close(outPipe[1]);
-    throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-  }
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    for (int fd : {outPipe[0], outPipe[1], errPipe[0], errPipe[1]}) ::close(fd);
-    throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-  }
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_RDONLY);
-    if (null < 0 || ::dup2(null, 0) < 0 || ::dup2(outPipe[1], 1) < 0 || ::dup2(errPipe[1], 2) < 0 ||
-        ::chdir(cwd.c_str()) != 0) {
-      ::_exit(127);
-    }
-    ::execve(exe.c_str(), argv.data(), envp.data());
-    ::_exit(127);
-  }
+  SubprocessSpec spec;
+  spec.argv = std::move(args);
+  spec.environment = std::move(env);
+  spec.workingDirectory = dir.string();
+  spec.stdinPipe = false;  // /dev/null
+  spec.stderrPipe = true;
+  Subprocess rs274(spec);
   ++processes_;
-  ::close(outPipe[1]);
-  ::close(errPipe[1]);
 
-  pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
-  int open = 2;
-  char buf[65536];
-  const auto deadline = t0 + std::chrono::duration<double>(timeoutSeconds);
-  while (open > 0) {
-    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
-    if (left <= 0) {
+  const Deadline deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                     std::chrono::duration<double>(timeoutSeconds));
+  for (;;) {
+    const IoResult r = rs274.read(o.out, &o.err, deadline);
+    if (r == IoResult::Closed) break;
+    if (r == IoResult::TimedOut) {
       o.timedOut = true;
       break;
-    }
-    const int ready = ::poll(fds, 2, static_cast<int>(std::ceil(left * 1000)));
-    if (ready < 0 && errno != EINTR) break;
-    for (int i = 0; i < 2; ++i) {
-      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      const ssize_t n = ::read(fds[i].fd, buf, sizeof buf);
-      if (n > 0) {
-        (i == 0 ? o.out : o.err).append(buf, static_cast<std::size_t>(n));
-      } else if (n == 0 || errno != EINTR) {
-        ::close(fds[i].fd);
-        fds[i].fd = -1;
-        --open;
-      }
     }
     if (o.out.size() + o.err.size() > outputCap) {
       o.overCap = true;
       break;
     }
   }
-  if (o.timedOut || o.overCap) ::kill(pid, SIGKILL);
-  for (const pollfd& f : fds) {
-    if (f.fd >= 0) ::close(f.fd);
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(status)) o.exitCode = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) o.signal = WTERMSIG(status);
+  // Both outputs closed: it is ending (one that lingers past the deadline has timed out).
+  if (!o.timedOut && !o.overCap && !rs274.endedBy(deadline)) o.timedOut = true;
+  const ExitStatus status = rs274.kill();
+  o.exitCode = status.exitCode;
+  o.signal = status.signal;
   o.seconds = secondsSince(t0);
   return o;
 }
