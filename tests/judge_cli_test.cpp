@@ -255,6 +255,12 @@ TEST_F(JudgeCli, BadToolpathsExitWith2NamingTheFieldAndTheMove) {
        [](json& j) { j["alarm"] = {{"code", "PS0064"}, {"line", "7"}}; },
        {"/alarm/line", "an integer"}},
       {"moves-missing", [](json& j) { j.erase("moves"); }, {"/moves", "field missing"}},
+      // A coordinate beyond any machine's travel is refused where it is read, not met later by the
+      // oracles' geometry as "an outline point is not finite" or a chord tolerance naming no move.
+      {"coordinate-huge", [](json& j) { j["moves"][3]["to"]["z"] = 1e300; }, {"/moves/3/to/z", "within ±10,000,000 mm"}},
+      {"centre-huge",
+       [](json& j) { j["moves"][6]["shape"] = "arc_cw"; j["moves"][6]["center"] = point(-2e7, 0); },
+       {"/moves/6/center/x", "within ±10,000,000 mm"}},
   };
   for (const BadToolpath& c : cases) {
     json j = handPath();

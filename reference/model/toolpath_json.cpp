@@ -158,6 +158,19 @@ double finiteNumber(const json& j, const std::string& where) {
   return v;
 }
 
+// A coordinate beyond any controller's travel is not a plan: the largest programmable value is
+// 999999.999 mm (FANUC IS-B, 8 digits) or 99999.9999 inch (2,540,000 mm). Bounding it here keeps
+// the oracles' geometry (arc flattening, regions) within what doubles measure to 1 µm.
+constexpr double kLargestCoordinateMm = 1e7;
+
+double coordinate(const json& j, const std::string& where) {
+  const double v = finiteNumber(j, where);
+  if (std::abs(v) > kLargestCoordinateMm) {
+    fail(where, "a coordinate within ±10,000,000 mm (beyond any machine's travel), found " + j.dump().substr(0, 40));
+  }
+  return v;
+}
+
 // j[key] when it is there; a value of another type is an error naming where/key and `expected`.
 std::optional<std::string> optionalString(const json& j, const char* key, const std::string& where,
                                           const std::string& expected) {
@@ -182,7 +195,7 @@ Point pointFromJson(const json& j, const std::string& where) {
   for (const char* axis : {"x", "z"}) {
     if (!j.contains(axis)) fail(where + "/" + axis, "a number (field missing)");
   }
-  return {finiteNumber(j["z"], where + "/z"), finiteNumber(j["x"], where + "/x")};
+  return {coordinate(j["z"], where + "/z"), coordinate(j["x"], where + "/x")};
 }
 
 Move moveFromJson(const json& j, const std::string& where) {
