@@ -42,8 +42,10 @@ std::string fileKind(mode_t mode) {
   return "not a regular file";
 }
 
-std::string overCap(const std::string& name, std::size_t maxBytes) {
-  return name + ": larger than the " + byteSizeText(maxBytes) + " cyclecert reads from one input file";
+// `size`: "70 MiB", or "" when only known to be over the cap.
+std::string overCap(const std::string& name, const std::string& size, std::size_t maxBytes) {
+  return "cannot read " + name + ": it is " + (size.empty() ? "" : size + ", ") + "larger than the " +
+         byteSizeText(maxBytes) + " cyclecert reads from one input file";
 }
 
 class Descriptor {
@@ -77,8 +79,11 @@ std::string readInputFile(const std::string& path, std::size_t maxBytes) {
                          (S_ISDIR(st.st_mode) ? std::string()
                                               : std::string(" (a FIFO or a device could block or never end)")));
   }
-  if (static_cast<unsigned long long>(st.st_size) > maxBytes) {
-    throw InputFileError(overCap("'" + path + "' (" + byteSizeText(static_cast<unsigned long long>(st.st_size)) + ")", maxBytes));
+  if (const auto size = static_cast<unsigned long long>(st.st_size); size > maxBytes) {
+    // In bytes when rounding would make it look no larger than the cap.
+    const std::string sizeText =
+        byteSizeText(size) == byteSizeText(maxBytes) ? std::to_string(size) + " bytes" : byteSizeText(size);
+    throw InputFileError(overCap("'" + path + "'", sizeText, maxBytes));
   }
   std::string text;
   char buffer[65536];
@@ -88,7 +93,7 @@ std::string readInputFile(const std::string& path, std::size_t maxBytes) {
     if (n < 0) throw InputFileError("cannot read '" + path + "': " + std::strerror(errno));
     if (n == 0) break;
     text.append(buffer, static_cast<std::size_t>(n));
-    if (text.size() > maxBytes) throw InputFileError(overCap("'" + path + "'", maxBytes));  // it grew
+    if (text.size() > maxBytes) throw InputFileError(overCap("'" + path + "'", "", maxBytes));  // it grew
   }
   return text;
 }
@@ -98,7 +103,7 @@ std::string readInputStream(std::istream& in, const std::string& name, std::size
   char buffer[65536];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > maxBytes) throw InputFileError(overCap(name, maxBytes));
+    if (text.size() > maxBytes) throw InputFileError(overCap(name, "", maxBytes));
   }
   if (in.bad()) throw InputFileError("cannot read " + name);
   return text;

@@ -61,9 +61,9 @@ TEST_F(InputFile, RefusesWhatIsNotARegularFileWithTheReason) {
 TEST_F(InputFile, RefusesAFileOverTheCap) {
   EXPECT_EQ(kMaxInputBytes, 64u << 20);
   EXPECT_EQ(refusal(sparseFile("big.nc", kMaxInputBytes + 1)),
-            "'" + path("big.nc") + "' (64 MiB): larger than the 64 MiB cyclecert reads from one input file");
+            "cannot read '" + path("big.nc") + "': it is 67108865 bytes, larger than the 64 MiB cyclecert reads from one input file");
   EXPECT_EQ(refusal(sparseFile("at-cap.nc", 4096), 4096), "");
-  EXPECT_NE(refusal(sparseFile("over.nc", 4097), 4096).find("(4.001 KiB): larger than the 4 KiB"), std::string::npos);
+  EXPECT_NE(refusal(sparseFile("over.nc", 4097), 4096).find("it is 4.001 KiB, larger than the 4 KiB"), std::string::npos);
   std::istringstream stream(std::string(4097, 'x'));
   EXPECT_THROW(readInputStream(stream, "standard input", 4096), InputFileError);
   std::istringstream small("{}");

@@ -14,7 +14,8 @@ namespace cyclecert::cli {
 
 namespace {
 
-const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]] [--timeout S]
+const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]]
+                       [--timeout S]
 
 Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
 failure kept as a spec case under corpus/regressions/, against engine E

@@ -20,7 +20,8 @@ namespace cyclecert::cli {
 namespace {
 
 const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
-                      [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]] [--timeout S]
+                      [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
+                      [--timeout S]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
