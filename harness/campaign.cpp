@@ -44,10 +44,11 @@ std::vector<std::string> mergedFields(const json& a, const json& b) {
 }  // namespace
 
 std::optional<CampaignDifference> resumeDifference(const std::vector<SourcedRecord>& existing, const SourcedRecord& next) {
-  static const std::vector<std::string> fields{"command", "engine", "engine_version", "vs",
-                                               "seed",    "shard",  "spec_suite_hash"};
+  static const std::vector<std::string> sameCommand{"engine", "engine_version", "vs", "seed", "shard", "spec_suite_hash"};
+  static const std::vector<std::string> otherCommand{"engine", "engine_version"};
   for (const SourcedRecord& r : existing) {
-    if (auto d = firstDifference(r, next, fields)) return d;
+    const bool same = text(r.record, "command") == text(next.record, "command");
+    if (auto d = firstDifference(r, next, same ? sameCommand : otherCommand)) return d;
   }
   return std::nullopt;
 }

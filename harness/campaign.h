@@ -25,9 +25,11 @@ struct CampaignDifference {
   std::string firstSource, secondSource;
 };
 
-// Continuing a run: the new record must match each record already in OUT on the command, the
-// engines and their versions, the seed, the shard and the spec suite. Not on --cases: case i of a
-// seed is the same case whatever the number of cases, so a resumed run may extend the campaign.
+// Continuing a run: the new record must match each record of the same command already in OUT on
+// the engines and their versions, the seed, the shard and the spec suite — not on --cases: case i
+// of a seed is the same case whatever the number of cases, so a resumed run may extend the
+// campaign. A fuzz run may resume a check run (or the other way round) of the same engine and
+// version: the two fill different parts of one engine's report.
 std::optional<CampaignDifference> resumeDifference(const std::vector<SourcedRecord>& existing,
                                                    const SourcedRecord& next);
 

@@ -106,8 +106,9 @@ TEST_F(RunIntegrity, ASecondRunIntoALockedOutIsRefusedAndWritesNothing) {
 // Two real runs: the first holds the lock while it runs; killed, it leaves no stale lock.
 TEST_F(RunIntegrity, AConcurrentRunIsRefusedAndAKilledRunLeavesNoStaleLock) {
   const std::string out = path("out");
+  // A minute at most, should the test stop before it kills the run.
   std::vector<std::string> args{CYCLECERT_CLI, "fuzz", "--engine", "reference", "--no-save", "--seed", "3",
-                                "--cases", "100000000", "--out", out};
+                                "--time", "60", "--out", out};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -118,6 +119,12 @@ TEST_F(RunIntegrity, AConcurrentRunIsRefusedAndAKilledRunLeavesNoStaleLock) {
   pid_t first = 0;
   ASSERT_EQ(posix_spawn(&first, CYCLECERT_CLI, &actions, nullptr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&actions);
+  struct KilledAtTheEnd {
+    pid_t pid;
+    ~KilledAtTheEnd() {
+      if (pid > 0 && ::kill(pid, SIGKILL) == 0) ::waitpid(pid, nullptr, 0);
+    }
+  } killed{first};
   // run.json is written once the lock is held; the first result once the run is under way.
   for (int i = 0; i < 400 && completeResults(out + "/results.jsonl") == 0; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -130,8 +137,9 @@ TEST_F(RunIntegrity, AConcurrentRunIsRefusedAndAKilledRunLeavesNoStaleLock) {
       << second.err;
   EXPECT_EQ(json::parse(read(out + "/run.json"))["runs"][0]["seed"], 3);  // still the first run's
 
-  ::kill(first, SIGKILL);
+  ::kill(first, SIGKILL);  // no chance to release anything itself
   ::waitpid(first, nullptr, 0);
+  killed.pid = -1;
   const CliRun third = fuzz("out", "--seed 1 --cases 10");
   EXPECT_EQ(third.exitCode, 0) << third.err;
   EXPECT_EQ(completeResults(out + "/results.jsonl"), 10u);
@@ -298,13 +306,19 @@ TEST_F(RunIntegrity, CheckRunsOfDifferentEnginesOnOneSuiteMerge) {
   EXPECT_EQ(completeResults(path("m/results.jsonl")), 2u);
 }
 
-TEST(Campaign, ACheckRunAndAFuzzRunAreNotComparedAndAResumedRunMayGrow) {
+TEST(Campaign, ACheckRunAndAFuzzRunOfOneEngineGoTogetherAndAResumedRunMayGrow) {
   const json check{{"command", "check"}, {"engine", "reference"}, {"spec_suite_hash", "a"}};
   const json fuzz{{"command", "fuzz"}, {"engine", "reference"}, {"seed", 1}, {"cases", 10}, {"spec_suite_hash", "b"}};
   json longer = fuzz;
   longer["cases"] = 20;
   EXPECT_FALSE(mergeDifference({{{check, "a"}}, {{fuzz, "b"}}}));
   EXPECT_FALSE(resumeDifference({{fuzz, "a"}}, {longer, "b"}));
+  EXPECT_FALSE(resumeDifference({{check, "a"}}, {fuzz, "b"}));  // a fuzz run added to a check run
+  json other = fuzz;
+  other["engine"] = "mutant:retract-angle";
+  const auto engine = resumeDifference({{check, "a"}}, {other, "b"});
+  ASSERT_TRUE(engine);
+  EXPECT_EQ(differenceText(*engine), "engine reference in a, mutant:retract-angle in b");
   // Within one input a resumed run may have grown; across inputs the latest runs must agree.
   EXPECT_FALSE(mergeDifference({{{fuzz, "a"}, {longer, "a"}}, {{longer, "b"}}}));
   const auto d = mergeDifference({{{fuzz, "a"}, {longer, "a"}}, {{fuzz, "b"}}});

@@ -34,7 +34,7 @@ Options:
   --specs DIR    the spec suite: DIR/cases and DIR/rules.json (default: the repository's specs/)
   --out DIR      where results.jsonl, run.json and the report go (default build/check)
   --resume       continue the run in OUT, skipping the cases it has; refused when OUT holds a run
-                 of another engine, engine version or spec suite
+                 of another engine or engine version, or a check of another spec suite
   --mix-campaigns   with --resume: continue even so (the report then mixes the two)
   --timeout S    per-case timeout for engines in another process (default 10)
   --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
