@@ -3,7 +3,7 @@
 // as each result is known, so that a killed run keeps every result written so far. `check`,
 // `fuzz` and `merge` write it; `--resume` reads it back; reports are made from it.
 #include <cstdint>
-#include <fstream>
+#include <stdexcept>
 #include <optional>
 #include <set>
 #include <string>
@@ -32,20 +32,38 @@ struct CaseResult {
 
 std::string resultLine(const CaseResult& r);  // one JSON line, with its newline
 
+// A result that could not be written (disk full, I/O error, file size limit): the run stops. The
+// message names the file, the error and how many results are safely in the file.
+struct ResultsWriteError : std::runtime_error {
+  ResultsWriteError(const std::string& what, std::size_t safe) : std::runtime_error(what), safe(safe) {}
+  std::size_t safe;  // complete results in the file
+};
+
 // The results file of a run in `outDir` (created). Without `resume` it starts empty; with it, the
 // results already there are kept — a last line cut short by a killed run is dropped — and their
-// (engine, case) pairs returned in `done`.
+// (engine, case) pairs returned in `done`. An existing results file that is not a regular file
+// is refused (std::runtime_error).
 class ResultsFile {
  public:
   ResultsFile(const std::string& outDir, bool resume);
+  ~ResultsFile();
+  ResultsFile(const ResultsFile&) = delete;
+  ResultsFile& operator=(const ResultsFile&) = delete;
+
   const std::set<std::pair<std::string, std::string>>& done() const { return done_; }
-  void append(const CaseResult& r);  // written and flushed at once
+  // Written at once (one write(2), no buffer): throws ResultsWriteError when the system refuses it.
+  void append(const CaseResult& r);
+  void appendLine(const std::string& jsonLine);  // a result line as read (without its newline)
+  std::size_t safe() const { return safe_; }     // the results in the file
   const std::string& path() const { return path_; }
 
  private:
+  void write(const std::string& bytes);
+
   std::string path_;
   std::set<std::pair<std::string, std::string>> done_;
-  std::ofstream out_;
+  int fd_ = -1;
+  std::size_t safe_ = 0;
 };
 
 // Every complete line of a results file, with the (engine, case) it is the result of; a torn or

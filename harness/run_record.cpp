@@ -7,6 +7,8 @@
 
 #include "cyclecert_git_revision.h"
 #include "cyclecert_version.h"
+#include "harness/campaign.h"
+#include "harness/input_file.h"
 #include "harness/spec_suite_hash.h"
 
 namespace cyclecert {
@@ -49,16 +51,17 @@ json runRecordJson(const RunRecord& r) {
          {"argv", r.argv}};
   if (!r.vs.empty()) j["vs"] = r.vs;
   if (r.seed) j["seed"] = *r.seed;
+  if (r.cases) j["cases"] = *r.cases;
+  if (!r.shard.empty()) j["shard"] = r.shard;
   return j;
 }
 
 std::vector<json> readRunRecords(const std::string& outDir) {
   const std::string file = outDir + "/run.json";
   if (!std::filesystem::exists(file)) return {};
-  std::ifstream in(file);
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(readInputFile(file));
   } catch (const json::parse_error& e) {
     throw std::runtime_error(file + ": not JSON: " + e.what());
   }
@@ -83,14 +86,38 @@ void writeRunRecords(const std::string& outDir, const std::vector<json>& runs) {
   {
     std::ofstream out(partial, std::ios::trunc);
     out << json{{"runs", runs}}.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
-    if (!out) throw std::runtime_error("cannot write " + partial);
+    out.close();  // the last of the text is written here, and may fail here
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(partial, ignored);
+      throw std::runtime_error("cannot write " + partial + " (disk full?); " + file + " is unchanged");
+    }
   }
   std::filesystem::rename(partial, file);
 }
 
-void recordRun(const std::string& outDir, const RunRecord& r, bool append) {
+namespace {
+
+// A resumed run must continue the campaign the records in OUT are of.
+void checkSameCampaign(const std::string& outDir, const std::vector<json>& runs, const json& next) {
+  std::vector<SourcedRecord> existing;
+  for (const json& run : runs) existing.push_back({run, outDir + "/run.json"});
+  const auto d = resumeDifference(existing, {next, "this run"});
+  if (!d) return;
+  std::string hint = "resume with the same options";
+  if (d->field == "seed" && d->first != "none") hint += " (--seed " + d->first + ")";
+  throw CampaignMismatchError("cannot resume the run in '" + outDir + "': this run is of another campaign: " +
+                              differenceText(*d) + "; " + hint + ", write to another --out, or give " +
+                              kMixCampaignsFlag + " to mix the two in one report knowingly");
+}
+
+}  // namespace
+
+void recordRun(const std::string& outDir, const RunRecord& r, bool append, bool mixCampaigns) {
   std::vector<json> runs = append ? readRunRecords(outDir) : std::vector<json>{};
-  runs.push_back(runRecordJson(r));
+  const json next = runRecordJson(r);
+  if (append && !mixCampaigns) checkSameCampaign(outDir, runs, next);
+  runs.push_back(next);
   writeRunRecords(outDir, runs);
 }
 

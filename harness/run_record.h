@@ -20,6 +20,8 @@ struct RunRecord {
   std::string cyclecertVersion, gitRevision, specSuiteHash;
   std::string started;  // ISO-8601 UTC
   std::optional<std::uint64_t> seed;
+  std::optional<long> cases;  // fuzz: the campaign's --cases (none with --time alone)
+  std::string shard;          // fuzz: "K/N" with --shard, else ""
   std::vector<std::string> argv;
 };
 
@@ -30,15 +32,17 @@ RunRecord startRunRecord(const std::string& command, const Engine& engine, const
 nlohmann::json runRecordJson(const RunRecord& r);
 
 // The records of OUT/run.json; none when the file does not exist. Throws std::runtime_error naming
-// the file when it is not a run file.
+// the file when it is not a run file (or not a regular file, or over input_file.h's cap).
 std::vector<nlohmann::json> readRunRecords(const std::string& outDir);
 
 // Replaces OUT/run.json with these records (written to a temporary file and renamed, so a killed
-// run never leaves half a file).
+// run never leaves half a file; a failed write throws and leaves the old file).
 void writeRunRecords(const std::string& outDir, const std::vector<nlohmann::json>& runs);
 
 // The run's record into OUT/run.json: after the records there with `append` (--resume), else alone.
-void recordRun(const std::string& outDir, const RunRecord& r, bool append);
+// A run appended to records of another campaign (campaign.h) throws CampaignMismatchError naming
+// the field that differs, unless `mixCampaigns`.
+void recordRun(const std::string& outDir, const RunRecord& r, bool append, bool mixCampaigns = false);
 
 std::string utcNowIso8601();  // "2025-01-31T12:34:56Z"
 

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <utility>
 
+#include "harness/input_file.h"
 #include "reference/model/profile.h"
 #include "reference/model/toolpath_json.h"
 
@@ -205,13 +204,7 @@ SpecCase specCaseFrom(json j, const std::string& file) {
   return c;
 }
 
-SpecCase loadSpecCase(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SpecError(path, "(file)", "a readable file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseSpecCase(text.str(), path);
-}
+SpecCase loadSpecCase(const std::string& path) { return parseSpecCase(readInputFile(path), path); }
 
 std::vector<std::string> findSpecCaseFiles(const std::string& dir) {
   std::vector<std::string> files;

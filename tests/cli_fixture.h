@@ -41,9 +41,10 @@ class CliFixture : public ::testing::Test {
     return s.str();
   }
 
-  CliRun run(const std::string& args) const {
+  // `prefix`: shell text run before the command in the same shell (e.g. "ulimit -f 16; exec").
+  CliRun run(const std::string& args, const std::string& prefix = "") const {
     const std::string errFile = path("stderr.txt");
-    const std::string command = std::string(CYCLECERT_CLI) + " " + args + " 2>" + errFile;
+    const std::string command = prefix + " " + std::string(CYCLECERT_CLI) + " " + args + " 2>" + errFile;
     FILE* pipe = ::popen(command.c_str(), "r");
     std::string out;
     char buf[4096];

@@ -2,24 +2,29 @@
 #include <iomanip>
 #include <iostream>
 
+#include "harness/campaign.h"
 #include "harness/check_run.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
 #include "harness/rule_catalogue.h"
+#include "harness/run_lock.h"
 #include "harness/run_record.h"
 
 namespace cyclecert::cli {
 
 namespace {
 
-const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume] [--timeout S]
+const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]]
+                       [--timeout S]
 
 Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
 failure kept as a spec case under corpus/regressions/, against engine E
 (`cyclecert engines`). A case passes when the engine meets its expectation — the toolpath within
 the case's tolerance, or the alarm — and every oracle finds nothing on its toolpath. Each result
 is appended to OUT/results.jsonl (default build/check) as soon as it is known, so a killed run keeps
-every result; --resume skips the cases already there. OUT/run.json records the run (engine and its
+every result; --resume skips the cases already there. One run at a time writes into OUT (it holds
+OUT/run.lock; a second is refused). A result that cannot be written (disk full) stops the run with
+exit 2, saying how many results are safe. OUT/run.json records the run (engine and its
 version, cyclecert's version and git revision, the spec suite's hash, the start, the command line;
 --resume adds a record), and at the end the report is written: OUT/report.json, OUT/junit.xml and
 OUT/index.html (`cyclecert report`).
@@ -28,11 +33,14 @@ Options:
   --engine E     reference | linuxcnc | process:COMMAND | mutant:NAME
   --specs DIR    the spec suite: DIR/cases and DIR/rules.json (default: the repository's specs/)
   --out DIR      where results.jsonl, run.json and the report go (default build/check)
-  --resume       continue the run in OUT, skipping the cases it has
+  --resume       continue the run in OUT, skipping the cases it has; refused when OUT holds a run
+                 of another engine or engine version, or a check of another spec suite
+  --mix-campaigns   with --resume: continue even so (the report then mixes the two)
   --timeout S    per-case timeout for engines in another process (default 10)
   --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
   --no-regressions    run the spec cases only
-Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage.
+Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage,
+unreadable input, OUT in use by another run, another campaign in OUT, or a result not written.
 )HELP";
 
 const char* kEnginesHelp = R"HELP(Usage: cyclecert engines
@@ -47,6 +55,7 @@ static int commandCheck(const std::vector<std::string>& args) {
   std::string engineName;
   CheckOptions options{defaultSpecsDir(), defaultRegressionsDir(), "build/check", false};
   EngineOptions engineOptions;
+  bool mixCampaigns = false;
   const auto positional = parseOptions(
       args,
       {{"--engine", [&](const std::string& v) { engineName = v; }},
@@ -55,14 +64,18 @@ static int commandCheck(const std::vector<std::string>& args) {
        {"--regressions", [&](const std::string& v) { options.regressionsDir = v; }},
        {"--no-regressions", [&] { options.regressionsDir.clear(); }},
        {"--resume", [&] { options.resume = true; }},
+       {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
       "check");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
+  if (mixCampaigns && !options.resume) throw UsageError(std::string(kMixCampaignsFlag) + " goes with --resume");
   const auto engine = makeEngine(engineName, engineOptions);
   std::vector<std::string> argv{"cyclecert", "check"};
   argv.insert(argv.end(), args.begin(), args.end());
-  recordRun(options.outDir, startRunRecord("check", *engine, nullptr, options.specsDir, std::nullopt, argv), options.resume);
+  const RunLock lock(options.outDir, commandLineText(argv));  // held until the report is written
+  recordRun(options.outDir, startRunRecord("check", *engine, nullptr, options.specsDir, std::nullopt, argv), options.resume,
+            mixCampaigns);
   const CheckSummary s = runCheck(*engine, options, std::cerr);
   std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable
             << " not applicable, " << s.engineFailure << " engine failure(s)";

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "harness/input_file.h"
 #include "reference/model/params.h"
 
 namespace cyclecert::cli {
@@ -36,13 +37,7 @@ bool wantsHelp(const std::vector<std::string>& args) {
   return false;
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("cannot read '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string readFile(const std::string& path) { return readInputFile(path); }
 
 void writeFile(const std::string& path, const std::string& text) {
   if (path == "-") {
@@ -50,7 +45,9 @@ void writeFile(const std::string& path, const std::string& text) {
     return;
   }
   std::ofstream out(path, std::ios::binary);
-  if (!out || !(out << text)) throw UsageError("cannot write '" + path + "'");
+  out << text;
+  out.close();  // a full disk shows here, when the buffer is written
+  if (!out) throw UsageError("cannot write '" + path + "'");
 }
 
 double numberArg(const std::string& option, const std::string& text, double min, double max) {

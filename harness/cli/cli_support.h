@@ -34,7 +34,7 @@ std::vector<std::string> parseOptions(const std::vector<std::string>& args, cons
                                       const std::string& command);
 
 bool wantsHelp(const std::vector<std::string>& args);
-std::string readFile(const std::string& path);
+std::string readFile(const std::string& path);  // a regular file up to input_file.h's cap, else exit 2
 void writeFile(const std::string& path, const std::string& text);  // "-" is standard output
 
 // A number option within [min, max]; names the option when the text is not one.

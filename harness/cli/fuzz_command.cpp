@@ -2,16 +2,17 @@
 // `cyclecert merge` (the results of shards joined into one run).
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
 #include <set>
 
+#include "harness/campaign.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/results_file.h"
 #include "harness/rule_catalogue.h"
+#include "harness/run_lock.h"
 #include "harness/run_record.h"
 
 namespace cyclecert::cli {
@@ -19,7 +20,8 @@ namespace cyclecert::cli {
 namespace {
 
 const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
-                      [--out DIR] [--regressions DIR | --no-save] [--resume] [--timeout S]
+                      [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
+                      [--timeout S]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
@@ -29,7 +31,9 @@ with --vs, compares E's result with engine B's. The first failure of each kind (
 it, and written as a spec case to the regressions directory, which `check` runs from then on.
 
 Each result is appended to OUT/results.jsonl as it is known (a killed run keeps every result);
---resume continues a run, skipping the cases already there. OUT/run.json records the run (engines
+--resume continues a run, skipping the cases already there. One run at a time writes into OUT (it
+holds OUT/run.lock; a second is refused). A result that cannot be written (disk full) stops the run
+with exit 2, saying how many results are safe. OUT/run.json records the run (engines
 and versions, git revision, spec suite hash, start, seed, command line), and at the end the report
 is written: OUT/report.json, OUT/junit.xml, OUT/index.html (`cyclecert report`). Shards split one
 campaign: run --shard 1/4 … --shard 4/4 with the same --seed and --cases, then `cyclecert merge`.
@@ -48,18 +52,31 @@ Options:
   --shrink-budget R   engine runs spent shrinking one failure at most (default 400)
   --tolerance T       mm, for the oracles and --vs (default 0.001)
   --max-failures N    stop once N cases have failed
-  --resume            continue the run in OUT
+  --resume            continue the run in OUT (--cases may grow); refused when OUT holds another
+                      campaign (another --engine, --vs, engine version, --seed, --shard or spec suite)
+  --mix-campaigns     with --resume: continue even so (the report then mixes the two)
   --timeout S         per-case timeout for engines in another process (default 10)
-Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage.
+Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,
+another campaign in OUT, or a result not written.
 )HELP";
 
-const char* kMergeHelp = R"HELP(Usage: cyclecert merge --out DIR SHARD_DIR...
+const char* kMergeHelp = R"HELP(Usage: cyclecert merge --out DIR [--mix-campaigns] SHARD_DIR...
 
 Joins the results.jsonl of several runs (the shards of one fuzz campaign, or check runs of
 different engines) into DIR/results.jsonl, and their run.json records into DIR/run.json. A result
 that appears in more than one input (the same engine and case) is kept once; torn lines of killed
 runs are skipped and counted. `cyclecert report DIR` then writes the joined report.
-Exit: 0 merged, 2 bad usage, an input without results.jsonl, or a run.json that cannot be read.
+
+The inputs' run.json records must be of one campaign: fuzz runs the shards of one --engine, --vs,
+engine version, --seed, shard count, spec suite and (their latest runs) --cases; check runs of one
+spec suite (and one version per engine). Otherwise the merge is refused, naming the field that
+differs and the inputs, unless --mix-campaigns. DIR is locked as `check` and `fuzz` lock their OUT.
+
+Options:
+  --out DIR          where the joined results.jsonl and run.json go
+  --mix-campaigns    join runs of different campaigns (the report then mixes them)
+Exit: 0 merged, 2 bad usage, an input without results.jsonl, a run.json that cannot be read, runs
+of different campaigns, DIR in use by another run, or a result not written.
 )HELP";
 
 std::uint64_t randomSeed() {
@@ -82,6 +99,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
   options.regressionsDir = defaultRegressionsDir();
   std::optional<std::uint64_t> seed;
   EngineOptions engineOptions;
+  bool mixCampaigns = false;
   const auto positional = parseOptions(
       args,
       {{"--engine", [&](const std::string& v) { engineName = v; }},
@@ -109,6 +127,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
        {"--max-failures",
         [&](const std::string& v) { options.maxFailures = static_cast<long>(numberArg("--max-failures", v, 1, 1e12)); }},
        {"--resume", [&] { options.resume = true; }},
+       {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
       "fuzz");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
@@ -116,12 +135,17 @@ static int commandFuzz(const std::vector<std::string>& args) {
   options.seed = seed ? *seed : randomSeed();
   const auto engine = makeEngine(engineName, engineOptions);
   const auto vs = vsName.empty() ? nullptr : makeEngine(vsName, engineOptions);
+  if (mixCampaigns && !options.resume) throw UsageError(std::string(kMixCampaignsFlag) + " goes with --resume");
   std::cerr << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": seed " << options.seed;
   if (options.shards > 1) std::cerr << ", shard " << options.shard << "/" << options.shards;
   std::cerr << " (reproduce the run with --seed " << options.seed << ")\n";
   std::vector<std::string> argv{"cyclecert", "fuzz"};
   argv.insert(argv.end(), args.begin(), args.end());
-  recordRun(options.outDir, startRunRecord("fuzz", *engine, vs.get(), defaultSpecsDir(), options.seed, argv), options.resume);
+  const RunLock lock(options.outDir, commandLineText(argv));  // held until the report is written
+  RunRecord record = startRunRecord("fuzz", *engine, vs.get(), defaultSpecsDir(), options.seed, argv);
+  record.cases = options.cases;
+  if (options.shards > 1) record.shard = std::to_string(options.shard) + "/" + std::to_string(options.shards);
+  recordRun(options.outDir, record, options.resume, mixCampaigns);
   const FuzzSummary s = runFuzz(*engine, vs.get(), options, std::cerr);
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
             << s.seconds << " s (" << static_cast<long>(s.run / std::max(s.seconds, 1e-9)) << "/s): " << s.pass
@@ -139,17 +163,27 @@ static int commandFuzz(const std::vector<std::string>& args) {
 
 static int commandMerge(const std::vector<std::string>& args) {
   std::string outDir;
-  const auto inputs = parseOptions(args, {{"--out", [&](const std::string& v) { outDir = v; }}}, "merge");
+  bool mixCampaigns = false;
+  const auto inputs = parseOptions(args,
+                                   {{"--out", [&](const std::string& v) { outDir = v; }},
+                                    {kMixCampaignsFlag, [&] { mixCampaigns = true; }}},
+                                   "merge");
   if (outDir.empty()) throw UsageError("give --out DIR (see `cyclecert merge --help`)");
   if (inputs.empty()) throw UsageError("give the run directories to merge (see `cyclecert merge --help`)");
+  std::vector<std::string> argv{"cyclecert", "merge"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const RunLock lock(outDir, commandLineText(argv));
   std::vector<std::string> merged;
   std::vector<nlohmann::json> runs;
+  std::vector<std::vector<SourcedRecord>> campaigns;  // each input's records
   std::set<std::pair<std::string, std::string>> seen;
   std::size_t duplicates = 0, torn = 0;
   for (const std::string& dir : inputs) {
     const std::string file = dir + "/results.jsonl";
     if (!std::filesystem::is_regular_file(file)) throw UsageError("no results in '" + dir + "' (expected " + file + ")");
+    campaigns.emplace_back();
     for (nlohmann::json& run : readRunRecords(dir)) {
+      campaigns.back().push_back({run, dir + "/run.json"});
       if (std::find(runs.begin(), runs.end(), run) == runs.end()) runs.push_back(std::move(run));  // a dir given twice
     }
     const ResultLines lines = readResultLines(file);
@@ -159,15 +193,18 @@ static int commandMerge(const std::vector<std::string>& args) {
       else ++duplicates;
     }
   }
-  std::filesystem::create_directories(outDir);
-  std::ofstream out(outDir + "/results.jsonl", std::ios::trunc);
-  for (const std::string& line : merged) out << line << "\n";
-  if (!out) throw UsageError("cannot write '" + outDir + "/results.jsonl'");
+  if (const auto d = mergeDifference(campaigns); d && !mixCampaigns) {
+    throw UsageError("cannot merge runs of different campaigns: " + differenceText(*d) +
+                     "; merge the shards of one campaign, or give " + kMixCampaignsFlag +
+                     " to mix them in one report knowingly");
+  }
+  ResultsFile out(outDir, false);
+  for (const std::string& line : merged) out.appendLine(line);
   writeRunRecords(outDir, runs);
   std::cout << "merged " << inputs.size() << " run(s): " << merged.size() << " results";
   if (duplicates) std::cout << ", " << duplicates << " duplicate(s) dropped";
   if (torn) std::cout << ", " << torn << " torn line(s) skipped";
-  std::cout << "; in " << outDir << "/results.jsonl\n";
+  std::cout << "; in " << out.path() << "\n";
   return kExitOk;
 }
 

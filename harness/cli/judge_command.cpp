@@ -1,8 +1,8 @@
 // `cyclecert judge`: a toolpath (any engine's, as JSON) judged with every oracle.
 #include <iostream>
-#include <iterator>
 
 #include "harness/cli/cli_support.h"
+#include "harness/input_file.h"
 #include "harness/judging.h"
 #include "harness/spec_case.h"
 #include "reference/model/toolpath_json.h"
@@ -93,7 +93,7 @@ static int commandJudge(const std::vector<std::string>& args) {
   if (reference) {
     path = planWithReference(request.program);
   } else {
-    const std::string text = toolpathPath == "-" ? std::string(std::istreambuf_iterator<char>(std::cin), {}) : readFile(toolpathPath);
+    const std::string text = toolpathPath == "-" ? readInputStream(std::cin, "standard input") : readFile(toolpathPath);
     try {
       const nlohmann::json j = parseJsonDocument(text, toolpathPath);
       path = toolpathFromJson(j);
