@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "oracles/material/boost_geometry.h"
+#include "oracles/oracles.h"
 #include "reference/model/offset.h"
 #include <cmath>
 
@@ -165,6 +166,18 @@ Crossing withoutOwnSlot(Crossing c, const Toolpath& path, std::size_t rapid, dou
   return kept;
 }
 
+// What the pocket-entry oracle's continuations of rapid `i` cross of the material standing now.
+Crossing pocketEntryCrossing(const MaterialModel& model, const JudgeInput& in, const CycleSpec& c, std::size_t i) {
+  const double tolerance = in.settings.tolerance();
+  Crossing all;
+  for (const Segment& probe : pocketEntryProbes(in, c, i)) {
+    const Crossing x = withoutOwnSlot(model.crossing(probe, tolerance), in.path, i, tolerance);
+    all.length += x.length;
+    all.pieces.insert(all.pieces.end(), x.pieces.begin(), x.pieces.end());
+  }
+  return all;
+}
+
 // The pieces of `region` within `tolerance` of the move.
 BgRegion touching(const BgRegion& region, const Segment& move, double tolerance) {
   boost::geometry::model::linestring<BgPoint> line;
@@ -266,11 +279,14 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
   const double tolerance = in.settings.tolerance();
   r.rapidCrossings.resize(in.path.moves.size());
+  const bool judgesEntries = judgesPocketEntries(*c, in.settings);
+  if (judgesEntries) r.pocketEntryCrossings.resize(in.path.moves.size());
   r.removedThickness.resize(in.path.moves.size());
   for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
+      if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(model, in, *c, i);
     } else if (!onFinishShape(in, *c, move)) {
       r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, in.settings);
     }
