@@ -95,11 +95,27 @@ double highestBetweenEnds(const std::vector<Segment>& path, const DepthFrame& fr
 
 }  // namespace
 
+namespace {
+
+// The shape that bounds the implied stock. Type I's head runs along the depth axis from A's level
+// (G71.T1: block ns moves X only); under compensation the start-up moves its end, A', off A's line
+// (G71.TNRC.ZERO: the cycle runs on the start-up's compensated path), and the stock is taken to begin
+// on the depth axis' line through that end — the start-up block builds the offset vector up on its
+// way there and cuts nothing the cycle has to clear.
+std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& frame, double level) {
+  std::vector<Segment> shape = c.shape;
+  if (!c.typeII && !shape.empty()) shape.front().from = frame.atDepth(shape.front().to, level);
+  return shape;
+}
+
+}  // namespace
+
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
   const DepthFrame frame(away);
   const double level = frame.depth(c.start);
+  const std::vector<Segment> shape = stockBoundingShape(c, frame, level);
   double lo = INFINITY, hi = -INFINITY;
-  for (const Segment& s : c.shape) {
+  for (const Segment& s : shape) {
     for (Point p : {s.from, s.to}) {
       lo = std::min(lo, frame.cut(p));
       hi = std::max(hi, frame.cut(p));
@@ -109,16 +125,16 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
   // A shape that is a graph over the cut axis and stands below the start level between its ends
   // (A stands on it; C may) bounds the stock itself: the shape, up to the level at its end and back
   // along it — the band minus the part, without a boolean.
-  if (isGraphOverCutAxis(c.shape, frame) && highestBetweenEnds(c.shape, frame) < level - kTidyDistance) {
+  if (isGraphOverCutAxis(shape, frame) && highestBetweenEnds(shape, frame) < level - kTidyDistance) {
     std::vector<Point> outline;
-    for (const Segment& s : c.shape) appendFlattened(outline, s, chordTolerance);
-    outline.push_back(frame.atDepth(c.shape.back().to, level));
-    outline.push_back(frame.atDepth(c.shape.front().from, level));
+    for (const Segment& s : shape) appendFlattened(outline, s, chordTolerance);
+    outline.push_back(frame.atDepth(shape.back().to, level));
+    outline.push_back(frame.atDepth(shape.front().from, level));
     return regionFromSimpleOutline(outline);
   }
   const BgRegion band = regionFrom({frame.point(lo, level), frame.point(hi, level), frame.point(hi, level - reach),
                                     frame.point(lo, level - reach)});
-  return without(band, partRegionOf(c.shape, away, reach, chordTolerance));
+  return without(band, partRegionOf(shape, away, reach, chordTolerance));
 }
 
 namespace {

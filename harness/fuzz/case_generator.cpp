@@ -186,24 +186,18 @@ void drawShapeFeed(FuzzCase& c, const std::vector<int>& later) {
 }
 
 // Tool-nose radius compensation (G71.TNRC.CANCEL, G71.CHECK) in three type I cases of ten: G41/G42
-// on the tool's side, a nose radius of 0.2, 0.4 or 0.8 and the tip that points into the cut. Not
-// with an out-of-range draw: the compensated shape may itself be one the checks forbid (PS0041,
-// PS0064, PS0322, PS0329), and where two alarms apply the documents do not say which comes first.
-// Not drawn (yet): type II (G71.TNRC.ZERO asks for pockets to be programmed A→A' outside the work
-// first, which the generator does not write), a G70 after the cycle, and tips that do not point
-// into the cut (the nose centre puts the start-up point behind A): the reference and the oracles
-// disagree there, see the commit message.
-// Off for now: even so, the reference fails complete / rapids-in-air on about 1 compensated case in
-// 1,000 — the simplest is a chamfer from B under G42 (the start-up point lies ahead of A along the
-// cut axis, so block ns is no longer along the depth axis); see the commit message.
-constexpr bool kDrawCompensation = false;
-
+// on the tool's side, a nose radius of 0.2, 0.4 or 0.8 and the tip that points into the cut (a G70
+// after the cycle runs compensated too). Not with an out-of-range draw: the compensated shape may
+// itself be one the checks forbid (PS0041, PS0064, PS0322, PS0329), and where two alarms apply the
+// documents do not say which comes first. Not drawn (yet): type II (G71.TNRC.ZERO asks for pockets
+// to be programmed A→A' outside the work first, which the generator does not write) and tips that
+// do not point into the cut (oracles/README.md, known limitations).
 void drawCompensation(FuzzCase& c, const std::vector<int>& later) {
   const bool outOfRange = c.depthOfCut == 0 || c.headMotion == 2 || c.startAbove < 0 ||
                           std::any_of(c.segments.begin(), c.segments.end(), [&](const FuzzSegment& s) {
                             return s.along < 0 || (!c.typeII && s.up < 0);
                           });
-  if (!kDrawCompensation || later[2] < 7 || outOfRange || c.typeII || c.finish) return;
+  if (later[2] < 7 || outOfRange || c.typeII) return;
   static constexpr int kRadii[] = {20, 40, 80};
   c.noseRadius = kRadii[later[3] % 3];
   c.tip = tipIntoTheCut(c);
