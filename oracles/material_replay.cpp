@@ -182,14 +182,19 @@ Crossing withoutOwnSlot(Crossing c, const Toolpath& path, std::size_t rapid, dou
   return kept;
 }
 
-// What the pocket-entry oracle's continuations of rapid `i` cross of the material standing now.
-Crossing pocketEntryCrossing(const MaterialModel& model, const JudgeInput& in, const CycleSpec& c, std::size_t i) {
+// What the pocket-entry oracle's continuations of rapid `i` cross of the material standing now and
+// of the part (grown by the allowances: an entry point on a pocket's wall lies on it).
+Crossing pocketEntryCrossing(const MaterialReplay& r, const MaterialModel& model, const JudgeInput& in,
+                             std::size_t i) {
   const double tolerance = in.settings.tolerance();
   Crossing all;
-  for (const Segment& probe : pocketEntryProbes(in, c, i)) {
-    const Crossing x = withoutOwnSlot(model.crossing(probe, tolerance), in.path, i, tolerance);
+  const auto add = [&](const Crossing& x) {
     all.length += x.length;
     all.pieces.insert(all.pieces.end(), x.pieces.begin(), x.pieces.end());
+  };
+  for (const Segment& probe : pocketEntryProbes(in, *r.cycle, i)) {
+    add(withoutOwnSlot(model.crossing(probe, tolerance), in.path, i, tolerance));
+    add(r.partCrossing(probe, tolerance, in.settings.chordTolerance));
   }
   return all;
 }
@@ -302,7 +307,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
-      if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(model, in, *c, i);
+      if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(r, model, in, i);
     } else if (!onFinishShape(in, *c, move)) {
       r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, in.settings);
     }

@@ -6,11 +6,12 @@
 // 5134 > the tolerance. Type I's infeeds rapid to the pass level by design (G72.STEP2), and with
 // 5134 = 0 a rapid may end at the entry point.
 //
-// Engine-independently: every rapid that moves deeper along the depth axis — but one down the line
-// of block ns, which moves in block ns's mode (G71.HEAD.G0G1, G72.STEP2) — is continued by the
+// Engine-independently: every rapid that moves deeper along the depth axis to below A's level — but
+// one down the line of block ns, which moves in block ns's mode (G71.HEAD.G0G1, G72.STEP2) — is continued by the
 // clearance along its own direction; the continuation may cross no material still standing at
 // that moment (as rapids-in-air measures it: beyond the tolerance, the slot of an earlier feed
-// excepted). Where the tool then goes, at what feed, is the other oracles' business
+// excepted), nor the part grown by the allowances (as no-gouge measures it: the entry point g of a
+// pass lies on a pocket's wall, so a rapid all the way to it reaches the part within 5134). Where the tool then goes, at what feed, is the other oracles' business
 // (rapids-in-air, feeds).
 //
 // Known limitation: a continuation that runs down the face of a wall parallel to it only touches
@@ -51,7 +52,7 @@ class PocketEntryOracle : public Oracle {
       if (c.length <= 0) continue;
       std::ostringstream m;
       m << "rapid move " << i << " comes down to within the clearance 5134 = " << r->cycle->clearance
-        << " mm of material still standing (" << c.length
+        << " mm of material still standing or of the part (" << c.length
         << " mm of it lie within that distance beyond its end): the rapid must stop that far short and the rest be fed";
       Finding f = finding(*this, i, m.str());
       for (const Segment& piece : c.pieces) f.witness.regions.push_back({piece.from, piece.to});
@@ -72,8 +73,10 @@ std::vector<Segment> pocketEntryProbes(const JudgeInput& in, const CycleSpec& c,
   if (m.kind != MoveKind::Rapid || m.shape != SegmentKind::Line) return {};
   const double tol = in.settings.tolerance();
   const Point from = in.path.from(i), to = m.to;
-  // Deeper along the depth axis: towards B from A.
-  if (c.depthDirection() * (inFrame(c, to).x - inFrame(c, from).x) <= tol) return {};
+  // Deeper along the depth axis (towards B from A), and to below A's level: a rapid that comes back
+  // down to A's level (the return to the start from a retract above it) enters no pocket.
+  const auto deeper = [&](Point p, Point than) { return c.depthDirection() * (inFrame(c, p).x - inFrame(c, than).x) > tol; };
+  if (!deeper(to, from) || !deeper(to, c.start)) return {};
   for (const Segment& head : {c.shape.front(), c.shape.front().shifted(c.allowance)}) {
     if (onLineOf(from, head, tol) && onLineOf(to, head, tol)) return {};
   }

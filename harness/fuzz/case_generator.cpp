@@ -205,14 +205,9 @@ void drawCompensation(FuzzCase& c, const std::vector<int>& later) {
 
 // Type II's pocket clearance (5134, G71.T2.POCKET.EXIT) six times in ten: where the rapid
 // approach into a pocket stops and cutting feed begins.
-// Off for now: with 5134 > 0 the reference fails the retract, complete, rapids-in-air and
-// pocket-entry oracles on about 1 generated type II case in 600 (see the commit message); the
-// draw stays, so that turning it on is one line.
-constexpr bool kDrawClearance = false;
-
 void drawClearance(FuzzCase& c, int choice) {
   static constexpr int kClearances[] = {0, 0, 0, 0, 10, 25, 50, 100, 200, 50};
-  if (c.typeII && kDrawClearance) c.clearance = kClearances[choice];
+  if (c.typeII) c.clearance = kClearances[choice];
 }
 
 FuzzCase caseFrom(Draws d) {
