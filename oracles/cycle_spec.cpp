@@ -211,6 +211,7 @@ class SpecReader {
     c.depthOfCut = params_.get("5132");
     c.retract = params_.get("5133");
     c.directReturn = params_.bit("DTP");
+    c.clearance = params_.get("5134");
     if (const Word* du = b.find(axes.secondInc)) c.allowance.x = physicalLength(du->value, axes.secondDiameter, state_);
     if (const Word* dw = b.find(axes.firstInc)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
     const Word* p = b.find('P');

@@ -29,6 +29,7 @@ struct CycleSpec {
   bool directReturn = false;     // DTP
   bool noRepeatedPath = false;   // NSP: the second A'→B' of type II with pockets is a rapid
   bool headIsRapid = true;       // block ns is G00 (else G01): infeeds are rapids, else feeds (G72.STEP2)
+  double clearance = 0;          // 5134: type II's rapid approach into a pocket stops this short (G71.T2.POCKET.EXIT)
   // The frame: G71 cuts along z (the plane's 1st axis), G72 along x.
   bool cutsAlongZ() const { return code != "G72"; }
   // Sign of the infeed on the depth axis (from A towards B) and of the cut on the cut axis.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "oracles/material/boost_geometry.h"
+#include "oracles/oracles.h"
 #include "reference/model/offset.h"
 #include <cmath>
 
@@ -94,11 +95,27 @@ double highestBetweenEnds(const std::vector<Segment>& path, const DepthFrame& fr
 
 }  // namespace
 
+namespace {
+
+// The shape that bounds the implied stock. Type I's head runs along the depth axis from A's level
+// (G71.T1: block ns moves X only); under compensation the start-up moves its end, A', off A's line
+// (G71.TNRC.ZERO: the cycle runs on the start-up's compensated path), and the stock is taken to begin
+// on the depth axis' line through that end — the start-up block builds the offset vector up on its
+// way there and cuts nothing the cycle has to clear.
+std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& frame, double level) {
+  std::vector<Segment> shape = c.shape;
+  if (!c.typeII && !shape.empty()) shape.front().from = frame.atDepth(shape.front().to, level);
+  return shape;
+}
+
+}  // namespace
+
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
   const DepthFrame frame(away);
   const double level = frame.depth(c.start);
+  const std::vector<Segment> shape = stockBoundingShape(c, frame, level);
   double lo = INFINITY, hi = -INFINITY;
-  for (const Segment& s : c.shape) {
+  for (const Segment& s : shape) {
     for (Point p : {s.from, s.to}) {
       lo = std::min(lo, frame.cut(p));
       hi = std::max(hi, frame.cut(p));
@@ -108,16 +125,16 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
   // A shape that is a graph over the cut axis and stands below the start level between its ends
   // (A stands on it; C may) bounds the stock itself: the shape, up to the level at its end and back
   // along it — the band minus the part, without a boolean.
-  if (isGraphOverCutAxis(c.shape, frame) && highestBetweenEnds(c.shape, frame) < level - kTidyDistance) {
+  if (isGraphOverCutAxis(shape, frame) && highestBetweenEnds(shape, frame) < level - kTidyDistance) {
     std::vector<Point> outline;
-    for (const Segment& s : c.shape) appendFlattened(outline, s, chordTolerance);
-    outline.push_back(frame.atDepth(c.shape.back().to, level));
-    outline.push_back(frame.atDepth(c.shape.front().from, level));
+    for (const Segment& s : shape) appendFlattened(outline, s, chordTolerance);
+    outline.push_back(frame.atDepth(shape.back().to, level));
+    outline.push_back(frame.atDepth(shape.front().from, level));
     return regionFromSimpleOutline(outline);
   }
   const BgRegion band = regionFrom({frame.point(lo, level), frame.point(hi, level), frame.point(hi, level - reach),
                                     frame.point(lo, level - reach)});
-  return without(band, partRegionOf(c.shape, away, reach, chordTolerance));
+  return without(band, partRegionOf(shape, away, reach, chordTolerance));
 }
 
 namespace {
@@ -163,6 +180,23 @@ Crossing withoutOwnSlot(Crossing c, const Toolpath& path, std::size_t rapid, dou
     }
   }
   return kept;
+}
+
+// What the pocket-entry oracle's continuations of rapid `i` cross of the material standing now and
+// of the part (grown by the allowances: an entry point on a pocket's wall lies on it).
+Crossing pocketEntryCrossing(const MaterialReplay& r, const MaterialModel& model, const JudgeInput& in,
+                             std::size_t i) {
+  const double tolerance = in.settings.tolerance();
+  Crossing all;
+  const auto add = [&](const Crossing& x) {
+    all.length += x.length;
+    all.pieces.insert(all.pieces.end(), x.pieces.begin(), x.pieces.end());
+  };
+  for (const Segment& probe : pocketEntryProbes(in, *r.cycle, i)) {
+    add(withoutOwnSlot(model.crossing(probe, tolerance), in.path, i, tolerance));
+    add(r.partCrossing(probe, tolerance, in.settings.chordTolerance));
+  }
+  return all;
 }
 
 // The pieces of `region` within `tolerance` of the move.
@@ -266,11 +300,14 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
   const double tolerance = in.settings.tolerance();
   r.rapidCrossings.resize(in.path.moves.size());
+  const bool judgesEntries = judgesPocketEntries(*c, in.settings);
+  if (judgesEntries) r.pocketEntryCrossings.resize(in.path.moves.size());
   r.removedThickness.resize(in.path.moves.size());
   for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
+      if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(r, model, in, i);
     } else if (!onFinishShape(in, *c, move)) {
       r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, in.settings);
     }

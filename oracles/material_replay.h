@@ -29,6 +29,9 @@ struct MaterialReplay {
   std::optional<RegionBelowGraph> partBelowProfile;
   CrossingRegion partForCrossing;
   std::vector<Crossing> rapidCrossings;                   // per move: material a rapid crosses (empty for feeds)
+  // Per move: material the pocket-entry oracle's continuations of a rapid cross (pocketEntryProbes,
+  // oracles.h); empty unless that oracle judges the cycle.
+  std::vector<Crossing> pocketEntryCrossings;
   // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
   // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).
   std::vector<std::optional<Thickest>> removedThickness;

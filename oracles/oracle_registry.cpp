@@ -15,6 +15,7 @@ std::vector<std::unique_ptr<Oracle>> makeOracles() {
   all.push_back(makeDepthPerPassOracle());
   all.push_back(makePassLevelsOracle());
   all.push_back(makeRetractOracle());
+  all.push_back(makePocketEntryOracle());
   all.push_back(makeReturnsToStartOracle());
   all.push_back(makeFeedsOracle());
   return all;

@@ -16,6 +16,7 @@ std::unique_ptr<Oracle> makeRapidsInAirOracle();
 std::unique_ptr<Oracle> makeCompleteOracle();
 std::unique_ptr<Oracle> makeDepthPerPassOracle();
 std::unique_ptr<Oracle> makePassLevelsOracle();
+std::unique_ptr<Oracle> makePocketEntryOracle();
 
 std::vector<std::unique_ptr<Oracle>> makeOracles();
 
@@ -30,5 +31,10 @@ bool isCutAlongCutAxis(const JudgeInput& in, const CycleSpec& c, std::size_t i, 
 // G70, on the finish shape: its middle lies within tol of either. Such a cut is no roughing pass.
 bool runsOnProfile(const JudgeInput& in, const CycleSpec& c, const std::vector<Segment>& rough, std::size_t i,
                    double tol);
+// pocket-entry (pocket_entry_oracle.cpp): whether it judges the cycle (type II with 5134 above the
+// tolerance), and the continuations of move i that may cross no material — none for a move it
+// does not judge. The material replay measures them.
+bool judgesPocketEntries(const CycleSpec& c, const JudgeSettings& settings);
+std::vector<Segment> pocketEntryProbes(const JudgeInput& in, const CycleSpec& c, std::size_t i);
 
 }  // namespace cyclecert

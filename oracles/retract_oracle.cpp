@@ -65,11 +65,15 @@ class RetractOracle : public Oracle {
       }
     }
 
-    // Type II: after following the shape, the last feed before the tool travels (the next rapid) moves
-    // out along the depth axis by at least e (the follow and the retract may be one move or two).
+    // Where the tool travels on: a rapid, or a feed that moves deeper — the approach into a pocket
+    // fed from the clearance height (5134, G71.T2.POCKET.EXIT) when the clearance reaches that high.
+    bool travels(std::size_t i) const { return in.path.moves[i].kind == MoveKind::Rapid || out(i) < -tol; }
+
+    // Type II: after following the shape, the last feed before the tool travels moves out along the
+    // depth axis by at least e (the follow and the retract may be one move or two).
     void typeIIPassLeaves(std::size_t pass, const Oracle& o, std::vector<Finding>& findings) const {
       std::size_t next = pass + 1;
-      while (next < in.path.moves.size() && in.path.moves[next].kind == MoveKind::Feed) ++next;
+      while (next < in.path.moves.size() && !travels(next)) ++next;
       if (next >= in.path.moves.size()) return;  // no travel after it: nothing to judge
       const std::size_t r = next - 1;
       const bool ok = r > pass && isFeedLine(r) && std::abs(back(r)) <= tol && out(r) >= c.retract - tol;

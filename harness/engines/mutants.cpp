@@ -4,6 +4,7 @@
 // itself stays clean.
 #include <algorithm>
 #include <functional>
+#include <optional>
 
 #include "harness/engines/engines.h"
 #include "harness/reference_plan.h"
@@ -80,6 +81,33 @@ void noFinalReturn(Toolpath& t) {
   while (!t.moves.empty() && t.moves.back().phase == "return") t.moves.pop_back();
 }
 
+// Type II: the approach into a pocket made at rapid all the way to the entry point, without the
+// cutting feed from the clearance height (5134) that G71.T2.POCKET.EXIT asks for.
+void pocketEntriesAtRapid(Toolpath& t) {
+  for (Move& m : t.moves) {
+    if (m.kind != MoveKind::Feed || !cites(m, "G71.T2.POCKET.EXIT")) continue;
+    m.kind = MoveKind::Rapid;
+    m.feed.reset();
+  }
+}
+
+// The F that running the first cycle's shape program ns…nf leaves modal (its last F word, as
+// written), if it has one.
+std::optional<double> shapeProgramFeed(const std::string& text) {
+  const Program p = parseProgram(text, "mutant");
+  for (const Block& b : p.blocks) {
+    if (!(b.hasG(710) || b.hasG(720)) || !b.has('P') || !b.has('Q')) continue;
+    const auto ns = p.findSequence(static_cast<long>(b.find('P')->value));
+    const auto nf = p.findSequence(static_cast<long>(b.find('Q')->value));
+    std::optional<double> feed;
+    for (std::size_t i = ns.value_or(0); ns && nf && i <= *nf && i < p.blocks.size(); ++i) {
+      if (const Word* f = p.blocks[i].find('F')) feed = f->value;
+    }
+    return feed;
+  }
+  return std::nullopt;
+}
+
 // The program faults: the allowances' signs flipped in the block with P and Q.
 std::string allowancesFlipped(const std::string& text) {
   Program p = parseProgram(text, "mutant");
@@ -87,6 +115,17 @@ std::string allowancesFlipped(const std::string& text) {
     if (!(b.hasG(710) || b.hasG(720)) || !b.has('P')) continue;
     for (Word& w : b.words) {
       if (w.letter == 'U' || w.letter == 'W') w = makeWord(w.letter, -w.value);
+    }
+  }
+  return writeProgram(p);
+}
+
+// The program fault: G41 and G42 exchanged, so that compensation offsets the shape to the other side.
+std::string compensationSidesSwapped(const std::string& text) {
+  Program p = parseProgram(text, "mutant");
+  for (Block& b : p.blocks) {
+    for (Word& w : b.words) {
+      if (w.letter == 'G' && (w.value == 41 || w.value == 42)) w = makeWord('G', w.value == 41 ? 42 : 41);
     }
   }
   return writeProgram(p);
@@ -101,6 +140,17 @@ EngineResult planned(const SpecCase& c, const std::function<void(Toolpath&)>& ch
   Toolpath t = planSpecCase(c);
   if (change && !t.alarm) change(t);
   return EngineResult::planned(std::move(t));
+}
+
+// The roughing cycle's cutting moves (its passes and semi-finish, not G70's) at the F of its shape
+// program, which G71.FST / G72.FST say the cycle ignores.
+EngineResult roughedAtShapeFeed(const SpecCase& c) {
+  const std::optional<double> feed = shapeProgramFeed(c.program);
+  return planned(c, [&](Toolpath& t) {
+    for (Move& m : t.moves) {
+      if (feed && m.kind == MoveKind::Feed && (m.phase == "pass" || m.phase == "semi-finish")) m.feed = *feed;
+    }
+  });
 }
 
 const std::vector<Fault>& faults() {
@@ -146,6 +196,15 @@ const std::vector<Fault>& faults() {
          return EngineResult::planned(std::move(t));
        }},
       {"start-not-returned", "does not return to the cycle start point at the end", [](SpecCase c) { return planned(c, noFinalReturn); }},
+      {"shape-feed-in-roughing", "roughs at the F given inside ns…nf instead of the cycle's",
+       [](SpecCase c) { return roughedAtShapeFeed(c); }},
+      {"tnrc-sides-swapped", "offsets the shape to the wrong side under compensation (G41 ⇄ G42)",
+       [](SpecCase c) {
+         c.program = compensationSidesSwapped(c.program);
+         return planned(c);
+       }},
+      {"pocket-entry-rapid", "enters type II pockets at rapid, without the feed from the clearance height (5134)",
+       [](SpecCase c) { return planned(c, pocketEntriesAtRapid); }},
   };
   return all;
 }

@@ -86,6 +86,9 @@ struct Draws {
   std::vector<FuzzSegment> segments;
   std::vector<int> downs;   // type II: which segments go down
   int depthOfCut, retract, allowanceDepth, allowanceCut, above, along, b;  // hundredths
+  // 6 more choices 0…9, drawn after the rest (so that adding them left the other draws as they
+  // were): an F in the shape and where, compensation, its nose radius and tip, 5134.
+  std::vector<int> later;
 };
 
 void chooseCycle(FuzzCase& c, const std::vector<int>& choice) {
@@ -173,14 +176,52 @@ void drawMachineParameters(FuzzCase& c, const std::vector<int>& choice) {
   c.rf2 = c.typeII && choice[14] % 4 == 1;
 }
 
+// An F word inside ns…nf three times in ten, on block ns or on one of the segments: roughing
+// ignores it (G71.FST, G72.FST), G70 runs at it from that block on (G70.EX).
+void drawShapeFeed(FuzzCase& c, const std::vector<int>& later) {
+  if (later[0] < 7) return;
+  static constexpr int kFeeds[] = {10, 5, 30};  // never the cycle's F0.2
+  c.shapeFeed = kFeeds[later[0] - 7];
+  c.shapeFeedAt = later[1] % static_cast<int>(c.segments.size() + 1);
+}
+
+// Tool-nose radius compensation (G71.TNRC.CANCEL, G71.CHECK) in three type I cases of ten: G41/G42
+// on the tool's side, a nose radius of 0.2, 0.4 or 0.8 and the tip that points into the cut (a G70
+// after the cycle runs compensated too). Not with an out-of-range draw: the compensated shape may
+// itself be one the checks forbid (PS0041, PS0064, PS0322, PS0329), and where two alarms apply the
+// documents do not say which comes first. Not drawn (yet): type II (G71.TNRC.ZERO asks for pockets
+// to be programmed A→A' outside the work first, which the generator does not write) and tips that
+// do not point into the cut (oracles/README.md, known limitations).
+void drawCompensation(FuzzCase& c, const std::vector<int>& later) {
+  const bool outOfRange = c.depthOfCut == 0 || c.headMotion == 2 || c.startAbove < 0 ||
+                          std::any_of(c.segments.begin(), c.segments.end(), [&](const FuzzSegment& s) {
+                            return s.along < 0 || (!c.typeII && s.up < 0);
+                          });
+  if (later[2] < 7 || outOfRange || c.typeII) return;
+  static constexpr int kRadii[] = {20, 40, 80};
+  c.noseRadius = kRadii[later[3] % 3];
+  c.tip = tipIntoTheCut(c);
+}
+
+// Type II's pocket clearance (5134, G71.T2.POCKET.EXIT) six times in ten: where the rapid
+// approach into a pocket stops and cutting feed begins.
+void drawClearance(FuzzCase& c, int choice) {
+  static constexpr int kClearances[] = {0, 0, 0, 0, 10, 25, 50, 100, 200, 50};
+  if (c.typeII) c.clearance = kClearances[choice];
+}
+
 FuzzCase caseFrom(Draws d) {
   d.choice.resize(16, 0);
+  d.later.resize(6, 0);
   FuzzCase c;
   chooseCycle(c, d.choice);
   drawCycleParameters(c, d);
   drawShape(c, d);
   placeStart(c, d);
   drawMachineParameters(c, d.choice);
+  drawShapeFeed(c, d.later);
+  drawCompensation(c, d.later);
+  drawClearance(c, d.later[5]);
   return c;
 }
 
@@ -189,8 +230,9 @@ FuzzCase caseFrom(Draws d) {
 rc::Gen<FuzzCase> genFuzzCase() {
   return rc::gen::apply(
       [](std::vector<int> choice, std::vector<FuzzSegment> segments, std::vector<int> downs, int dd, int e, int du,
-         int dw, int above, int along, int b) {
-        return caseFrom({std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b});
+         int dw, int above, int along, int b, std::vector<int> later) {
+        return caseFrom(
+            {std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b, std::move(later)});
       },
       rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
       // Segments: 8 at most are kept (drawShape), after one of the first 10 may be split in two.
@@ -202,7 +244,33 @@ rc::Gen<FuzzCase> genFuzzCase() {
       rc::gen::inRange(1, 60),     // Δw
       rc::gen::inRange(1, 500),    // A above C
       rc::gen::inRange(0, 400),    // A's cut coordinate
-      rc::gen::inRange(0, 3000));  // B's depth coordinate
+      rc::gen::inRange(0, 3000),   // B's depth coordinate
+      rc::gen::container<std::vector<int>>(6, rc::gen::inRange(0, 10)));  // Draws::later
+}
+
+// Frame directions as the machine sees them: G71 keeps the axes (each may be mirrored), G72
+// exchanges them.
+namespace {
+struct MachineSigns {
+  int cutZ, cutX, depthZ, depthX;  // the frame's +z and +x in machine Z and X (−1, 0, +1)
+};
+MachineSigns machineSigns(const FuzzCase& c) {
+  const int cut = c.mirrorCut ? -1 : 1, depth = c.mirrorDepth ? -1 : 1;
+  return c.cycle == 71 ? MachineSigns{cut, 0, 0, depth} : MachineSigns{0, cut, depth, 0};
+}
+}  // namespace
+
+int compensationCode(const FuzzCase& c) {
+  // Seen from +Y, travelling −z with the tool at +x is the right (offset.h's worked example): G42.
+  const int reversals = (c.cycle == 72) + c.mirrorCut + c.mirrorDepth;
+  return reversals % 2 == 0 ? 42 : 41;
+}
+
+int tipIntoTheCut(const FuzzCase& c) {
+  // The frame's (−z, −x) in the machine's Z and X, then the chart: 1 (+Z,+X), 2 (−Z,+X), 3 (−Z,−X), 4 (+Z,−X).
+  const MachineSigns m = machineSigns(c);
+  const int z = -m.cutZ - m.depthZ, x = -m.cutX - m.depthX;
+  return x > 0 ? (z > 0 ? 1 : 2) : (z > 0 ? 4 : 3);
 }
 
 namespace {
@@ -266,6 +334,9 @@ std::string fuzzProgram(const FuzzCase& c) {
   std::string p;  // appended to: a fifth cheaper than through an ostringstream
   p.reserve(512);
   p += "G00 " + place.words(startAlong, startDepth) + ";\n";
+  // G71.TNRC.PLACE: compensation is commanded before the cycle, cancelled after it (and its G70).
+  if (c.noseRadius > 0) p += "G" + std::to_string(compensationCode(c)) + ";\n";
+  const std::string shapeFeed = " F" + mm(c.shapeFeed);
   const std::string g = c.cycle == 71 ? "G71" : "G72";
   p += g + (c.cycle == 71 ? " U" : " W") + mm(c.depthOfCut) + " R" + mm(c.retract) + ";\n";
   p += g + " P10 Q20 " + place.allowanceWords() + " F0.2;\n";
@@ -275,17 +346,20 @@ std::string fuzzProgram(const FuzzCase& c) {
   const std::string depthWord = c.cycle == 71 ? bWords.substr(0, bWords.find(' ')) : bWords.substr(bWords.find(' ') + 1);
   p += "N10 G0" + std::to_string(c.headMotion) + " " + depthWord + (c.typeII ? (c.cycle == 71 ? " W0" : " U0") : "");
   if (c.headMotion == 2) p += " R1";
+  if (c.shapeFeedAt == 0) p += shapeFeed;
   p += ";\n";
   for (std::size_t i = 0; i < c.segments.size(); ++i) {
     const FuzzSegment& s = c.segments[i];
     if (i + 1 == c.segments.size()) p += "N20 ";
     if (s.kind == FuzzSegment::Line) p += "G01 " + place.words(points[i].first, points[i].second);
     else p += place.arcCode(s.kind) + " " + place.words(points[i].first, points[i].second) + " R" + mm(s.along);
+    if (c.shapeFeedAt == static_cast<int>(i) + 1) p += shapeFeed;
     p += ";\n";
   }
   // G70 returns to A in one rapid (G70.EX): where a peak stands between C and A at A's height that
   // rapid crosses the part — the programmer's collision on any controller, so not generated.
   if (c.finish && points.back().second == top) p += "G70 P10 Q20;\n";
+  if (c.noseRadius > 0) p += "G40;\n";
   p += "M30;\n";
   return p;
 }
@@ -297,6 +371,7 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
   if (c.r16) params["R16"] = 1;
   if (c.nsp) params["NSP"] = 1;
   if (c.rf2) params["RF2"] = 1;
+  if (c.clearance > 0) params["5134"] = c.clearance / 100.0;
   nlohmann::json j{
       {"id", c.profile + "/g" + std::to_string(c.cycle) + "/fuzz-" + tag},
       {"title", "fuzz case " + tag + ": " + describeFuzzCase(c)},
@@ -306,6 +381,7 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
       {"program", fuzzProgram(c)},
       {"expect", {{"oracles", "pass"}}},
       {"derivation", "generated by cyclecert fuzz; no expected toolpath: every oracle judges what the engine does"}};
+  if (c.noseRadius > 0) j["tool"] = {{"nose_radius", c.noseRadius / 100.0}, {"tip", c.tip}};
   return specCaseFrom(std::move(j), "fuzz:" + tag);
 }
 
@@ -316,6 +392,9 @@ std::string describeFuzzCase(const FuzzCase& c) {
   for (const auto& [set, name] : {std::pair{c.rf1, "RF1"}, {c.dtp, "DTP"}, {c.r16, "R16"}, {c.nsp, "NSP"}, {c.rf2, "RF2"}}) {
     if (set) s << ", " << name << "=1";
   }
+  if (c.clearance > 0) s << ", 5134=" << mm(c.clearance);
+  if (c.shapeFeedAt >= 0) s << ", F" << mm(c.shapeFeed) << " in the shape";
+  if (c.noseRadius > 0) s << ", G" << compensationCode(c) << " nose radius " << mm(c.noseRadius) << " tip " << c.tip;
   return s.str();
 }
 

@@ -13,9 +13,13 @@
 // a collinear run); type II pockets; parameters Δd, e, Δu, Δw valid or on their boundary (no
 // allowance, A exactly on C's level) and, one at a time, out of range (Δd = 0, a head block in
 // G02, A below C's level with Δu, a line turning back along either axis); machine parameters RF1,
-// DTP (and, for type II, R16, NSP, RF2); the profiles fanuc-0i-f, fanuc-0i-c and gsk. Lengths are
-// whole hundredths of a mm, so the program text is exact. Combinations whose collisions the
-// documents themselves cause are not drawn (see caseFrom() and fuzzProgram()).
+// DTP (and, for type II, R16, NSP, RF2 and the pocket clearance 5134); the profiles fanuc-0i-f,
+// fanuc-0i-c and gsk; an F word inside ns…nf, which roughing ignores (G71.FST, G72.FST) and G70
+// honours; tool-nose radius compensation — G41/G42 before the cycle on the side the tool stands for
+// the quadrant, with a nose radius and the tip that points into the cut (or the nose centre), G40
+// after the cycles. Lengths are whole hundredths of a mm, so the program text is exact.
+// Combinations whose collisions the documents themselves cause are not drawn (see caseFrom() and
+// fuzzProgram()).
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -48,7 +52,20 @@ struct FuzzCase {
   int allowanceDepth = 0, allowanceCut = 0;  // along the frame's depth and cut axes (radius, hundredths)
   bool rf1 = false, dtp = false, r16 = false, nsp = false, rf2 = false;
   bool finish = false;        // a G70 P Q follows the cycle
+  // An F word inside ns…nf: on block ns (0) or on segment k − 1 (k ≥ 1); none for −1.
+  int shapeFeedAt = -1;
+  int shapeFeed = 0;          // hundredths of mm/rev, never the cycle's F0.2
+  int noseRadius = 0;         // hundredths; 0: no compensation (G40 throughout)
+  int tip = 0;                // imaginary tip direction 0…9 (reference/model/offset.h)
+  int clearance = 0;          // parameter 5134, hundredths (type II; 0: the default)
 };
+
+// G41 or G42: the side of the shape the tool stands on in the case's quadrant (the frame's G42,
+// turned over once by each mirror and by G72's exchange of the axes).
+int compensationCode(const FuzzCase& c);
+// The imaginary tip that points into the cut in the case's quadrant: from the nose centre towards
+// the part (−x of the frame) and along the cut (−z of the frame), as the machine's tip chart names it.
+int tipIntoTheCut(const FuzzCase& c);
 
 // The generator the fuzzer draws from.
 rc::Gen<FuzzCase> genFuzzCase();
