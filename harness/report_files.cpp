@@ -30,6 +30,7 @@ std::vector<ReportRule> reportRules(const std::string& specsDir) {
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::trunc);
   out << text;
+  out.close();  // a full disk shows at the last flush: checked after it
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include "harness/input_file.h"
 
 namespace cyclecert {
 
@@ -13,11 +14,10 @@ bool RuleCatalogue::contains(const std::string& id) const {
 }
 
 RuleCatalogue loadRuleCatalogue(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read the rule catalogue");
+  const std::string text = readInputFile(path);  // a directory or FIFO named as the catalogue is refused
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(path + ": invalid JSON: " + e.what());
   }

@@ -17,7 +17,7 @@ const char* kJudgeHelp = R"HELP(Usage: cyclecert judge CASE.json TOOLPATH.json [
 
 Judges a toolpath with every oracle, from the program's finish shape, allowances and stock alone
 (never from the reference planner): no-gouge, rapids-in-air, complete, depth-per-pass, pass-levels,
-retract, returns-to-start, feeds, alarm. TOOLPATH.json is the canonical toolpath JSON (see `cyclecert plan
+retract, pocket-entry, returns-to-start, feeds, alarm. TOOLPATH.json is the canonical toolpath JSON (see `cyclecert plan
 --help`; "-" reads standard input); --reference judges the reference engine's own plan.
 
 Options:

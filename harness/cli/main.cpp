@@ -1,5 +1,6 @@
 // cyclecert — the command line: dispatches to one file per command (cli_support.h lists them).
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,12 @@ int run(const std::vector<std::string>& argv) {
   throw UsageError("unknown command '" + command + "' (try `cyclecert --help`)");
 }
 
+std::string commandLine(int argc, char** argv) {
+  std::string line;
+  for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
+  return line;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,6 +91,11 @@ int main(int argc, char** argv) {
   } catch (const NotSupported& e) {
     std::cerr << "cyclecert: not supported yet: " << e.what() << "\n";
     return kExitNotSupported;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "cyclecert " << commandLine(argc, argv)
+              << ": out of memory (std::bad_alloc). The inputs are limited (64 MiB a file, the planner's passes and "
+                 "moves: README \"Limits\"), so this is a defect of cyclecert: please report it with the command line\n";
+    return kExitUsage;
   } catch (const std::exception& e) {  // unknown profile or parameter, bad spec case, I/O
     std::cerr << "cyclecert: " << e.what() << "\n";
     return kExitUsage;
