@@ -102,17 +102,16 @@ std::string countText(double n) {
 // PROG.CAP.PASSES: refuses a cycle whose passes (depth / Δd) or moves would exceed the caps.
 void checkPlanSize(const CycleCall& call, const std::string& code, double depth, double dd, double movesPerPass) {
   const double passes = depth / dd;
+  if (passes <= kMostRoughingPasses && passes * movesPerPass <= kMostCycleMoves) return;
   std::ostringstream why;
   why << std::setprecision(6) << " (Δd " << dd << " mm over " << depth << " mm)";
   if (passes > kMostRoughingPasses) {
     throw NotSupported(call.block().line, code + " would make " + countText(passes) + " roughing passes" + why.str() +
                                               "; cyclecert plans at most " + countText(kMostRoughingPasses));
   }
-  if (passes * movesPerPass > kMostCycleMoves) {
-    throw NotSupported(call.block().line, code + " would make up to " + countText(passes * movesPerPass) +
-                                              " moves" + why.str() + "; cyclecert plans at most " +
-                                              countText(kMostCycleMoves) + " per cycle");
-  }
+  throw NotSupported(call.block().line, code + " would make up to " + countText(passes * movesPerPass) + " moves" +
+                                            why.str() + "; cyclecert plans at most " + countText(kMostCycleMoves) +
+                                            " per cycle");
 }
 
 // How deep the shape reaches below its start along the depth direction (the cycle frame's x).

@@ -104,7 +104,8 @@ class ProgramRunner {
       applyModalCode(g10);
       if (g10 == 700 || g10 == 710 || g10 == 720) cycle = g10;
     }
-    checkWords(b, cycle != 0);
+    const AxisWordsMean meaning = axisWordsMeaning(b);
+    checkWords(b, cycle != 0, meaning);
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
     }
@@ -113,7 +114,6 @@ class ProgramRunner {
       if (m->value == 30 || m->value == 2) ended_ = true;
       if (m->value == 98) path_.warnings.push_back({b.line, "subprogram calls are not followed by the reference"});
     }
-    const AxisWordsMean meaning = axisWordsMeaning(b);
     if (meaning == AxisWordsMean::Data) warnNotApplied(b);
     if (!hasAxisWord(b)) return i + 1;
     switch (meaning) {
@@ -130,14 +130,13 @@ class ProgramRunner {
 
   // PROG.RANGE, PROG.ADDRESS: the words as the controller reads them. A cycle block's own
   // addresses are read by its planner (G72.RANGE); its range alarm is dated "cycle block".
-  void checkWords(const Block& b, bool cycleBlock) {
+  void checkWords(const Block& b, bool cycleBlock, AxisWordsMean meaning) {
     try {
       checkWordRanges(b, state_.inch);
     } catch (CycleAlarm& a) {
       if (cycleBlock) a.setWhen("cycle block");
       throw;
     }
-    const AxisWordsMean meaning = axisWordsMeaning(b);
     if (meaning == AxisWordsMean::Data) return;  // G10 and G65 give every address a meaning of their own
     checkNoThreadLead(b);
     if (!cycleBlock && hasAxisWord(b) && meaning == AxisWordsMean::Motion) {

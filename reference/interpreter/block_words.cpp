@@ -3,8 +3,8 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-#include <string_view>
 
+#include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {
@@ -16,7 +16,15 @@ namespace {
 constexpr double kLargestMetric = 999999.999;
 constexpr double kLargestInch = 99999.9999;
 
-bool isDimensionOrFeed(char letter) { return std::string_view("XYZUVWIJKRF").find(letter) != std::string_view::npos; }
+bool isDimensionOrFeed(char letter) {
+  switch (letter) {
+    case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W':
+    case 'I': case 'J': case 'K': case 'R': case 'F':
+      return true;
+    default:
+      return false;
+  }
+}
 
 std::string at(const Word& w) { return w.text + " at column " + std::to_string(w.column); }
 
@@ -94,9 +102,7 @@ void checkMotionBlockAddresses(const Block& b, int motion, const ModalState& s) 
 void checkShapeBlockWords(const Block& b, const ModalState& s) {
   checkWordRanges(b, s.inch);
   checkNoThreadLead(b);
-  bool movesAlongThePlane = false;
-  for (const char letter : {'X', 'Y', 'Z', 'U', 'V', 'W'}) movesAlongThePlane = movesAlongThePlane || b.has(letter);
-  if (movesAlongThePlane) checkMotionBlockAddresses(b, s.motion, s);
+  if (hasAxisWord(b)) checkMotionBlockAddresses(b, s.motion, s);
 }
 
 }  // namespace cyclecert
