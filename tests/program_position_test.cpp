@@ -53,7 +53,7 @@ TEST(ProgramPosition, G80IsAG0iTFCodeAndItsBlockMoves) {
 }
 
 TEST(ProgramPosition, DrillingCyclesAreNotSupportedNotUnknownCodes) {
-  for (const char* g : {"G83", "G84", "G85", "G87", "G88", "G89", "G32"}) {
+  for (const char* g : {"G83", "G84", "G85", "G87", "G88", "G89", "G32", "G29", "G52"}) {
     EXPECT_THROW(plan(std::string("G00 X40 Z2;\n") + g + " Z-10 F0.1;\n"), NotSupported) << g;
   }
 }

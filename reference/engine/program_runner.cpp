@@ -30,7 +30,8 @@ const std::map<int, std::string>& unappliedGCodes() {
 // without them.
 const std::map<int, std::string>& unplannedCodes() {
   static const std::map<int, std::string> codes = {
-      {320, "G32 threading"},
+      {290, "G29 return from reference position"}, {320, "G32 threading"},
+      {520, "G52 local coordinate system setting"},
       {730, "G73 pattern repeating cycle"}, {740, "G74 end-face peck drilling cycle"},
       {741, "G74.1 axial groove cycle"},    {750, "G75 outer diameter grooving cycle"},
       {760, "G76 threading cycle"},         {830, "G83 face drilling cycle"},
