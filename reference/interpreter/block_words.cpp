@@ -32,14 +32,14 @@ std::string at(const Word& w) { return w.text + " at column " + std::to_string(w
   throw CycleAlarm(alarm::kImproperAddress, w.line, at(w) + ": " + why);
 }
 
-// The word stands right after the previous one's number, with nothing between ("X1e308").
+// The word stands right after a dimension or feed word's number, with nothing between ("X1e308").
 bool gluedToPreviousNumber(const Block& b, const Word& w) {
   const Word* previous = nullptr;
   for (const Word& x : b.words) {
     if (&x == &w) break;
     previous = &x;
   }
-  return previous && previous->line == w.line &&
+  return previous && isDimensionOrFeed(previous->letter) && previous->line == w.line &&
          previous->column + static_cast<int>(previous->text.size()) == w.column;
 }
 
