@@ -3,6 +3,7 @@
 #include "reference/cycles/cycles.h"
 #include "reference/cycles/shape_program.h"
 #include "reference/interpreter/block_motion.h"
+#include "reference/interpreter/block_words.h"
 #include "reference/model/alarms.h"
 #include "reference/model/offset.h"
 
@@ -52,6 +53,7 @@ std::vector<FinishMotion> readFinishMotions(const CycleCall& call, std::size_t n
     const Block& block = call.program.blocks[i];
     checkUsableInShape(block, call.profile.toleratesTnrcInShape || call.params.bit("NT2"));
     s.motion = motionCode(block, s.motion);
+    checkShapeBlockWords(block, s);  // PROG.RANGE, PROG.ADDRESS
     if (const Word* f = block.find('F')) s.feed = f->value * s.unitScale();  // G70.EX: F inside ns…nf applies
     if (call.params.bit("NT2")) {
       if (block.hasG(410) || block.hasG(420)) {

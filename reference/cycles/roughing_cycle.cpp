@@ -5,7 +5,11 @@
 #include "reference/model/alarms.h"
 #include "reference/cycles/type2_roughing.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 
 namespace cyclecert {
 
@@ -89,6 +93,37 @@ std::vector<Move> movesInPlane(std::vector<Move> moves, const RoughingFrame& f) 
   return moves;
 }
 
+std::string countText(double n) {
+  std::string digits = std::to_string(std::llround(n));
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<std::size_t>(i), ",");
+  return digits;
+}
+
+// PROG.CAP.PASSES: refuses a cycle whose passes (depth / Δd) or moves would exceed the caps.
+void checkPlanSize(const CycleCall& call, const std::string& code, double depth, double dd, double movesPerPass) {
+  const double passes = depth / dd;
+  if (passes <= kMostRoughingPasses && passes * movesPerPass <= kMostCycleMoves) return;
+  std::ostringstream why;
+  why << std::setprecision(6) << " (Δd " << dd << " mm over " << depth << " mm)";
+  if (passes > kMostRoughingPasses) {
+    throw NotSupported(call.block().line, code + " would make " + countText(passes) + " roughing passes" + why.str() +
+                                              "; cyclecert plans at most " + countText(kMostRoughingPasses));
+  }
+  throw NotSupported(call.block().line, code + " would make up to " + countText(passes * movesPerPass) + " moves" +
+                                            why.str() + "; cyclecert plans at most " + countText(kMostCycleMoves) +
+                                            " per cycle");
+}
+
+// How deep the shape reaches below its start along the depth direction (the cycle frame's x).
+double deepestBelowStart(const std::vector<Segment>& shape, Point start, int depthDirection) {
+  double deepest = 0;
+  for (const Segment& s : shape) {
+    const Extent e = extent(s);
+    deepest = std::max({deepest, depthDirection * (e.xMin - start.x), depthDirection * (e.xMax - start.x)});
+  }
+  return deepest;
+}
+
 CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb, std::vector<Move> moves) {
   CycleOutcome out;
   out.moves = std::move(moves);
@@ -115,6 +150,8 @@ CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const S
   cycle.retract = call.params.get("5133");
   cycle.semiFinish = !call.params.bit("RF1");
   cycle.directReturn = call.params.bit("DTP");
+  // Type I: four moves a pass (infeed, cut, retract, back).
+  checkPlanSize(call, frame.code, std::abs(cycle.headEnd.x - cycle.start.x), cycle.depthOfCut, 4);
   // G71.T1.MONO, G71.CHECK: checked on the finish shape before any move.
   checkType1Monotonic(cycle, frame.cutAxis, frame.depthAxis);
   return outcome(call, shape, sb, movesInPlane(planType1(cycle), frame));
@@ -136,6 +173,9 @@ CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const 
   cycle.followAlongCut = call.params.bit("R16") || call.params.bit("NSP");  // G71.NSP: NSP implies R16
   cycle.noRepeatedPath = call.params.bit("NSP");
   cycle.levelByLevel = call.profile.pocketsLevelByLevel;
+  // Type II: a cut at a level may follow every segment of the shape, plus its travel and leave.
+  checkPlanSize(call, frame.code, deepestBelowStart(cycle.shape, cycle.start, cycle.depthDirection()),
+                cycle.depthOfCut, static_cast<double>(cycle.shape.size()) + 8);
   // G71.T2.MONO: only the cut axis must be monotonic.
   checkMonotonicAlongCut(cycle.shape, cycle.cutDirection(), frame.cutAxis);
   CycleOutcome out = outcome(call, shape, sb, movesInPlane(planType2(cycle), frame));

@@ -59,6 +59,13 @@ CycleOutcome withShapeAlarmTiming(const CycleCall& call, Plan plan) {
   }
 }
 
+// PROG.CAP.PASSES: the planner's bound, checked before planning. A real G71/G72 makes tens to
+// hundreds of passes; a Δd of 0.001 mm over a 500 mm deep shape would make 500,000 and take
+// gigabytes. Above kMostRoughingPasses passes, or kMostCycleMoves moves at most (passes × the
+// shape's segments, type II), the cycle is NotSupported with the count.
+inline constexpr double kMostRoughingPasses = 10'000;
+inline constexpr double kMostCycleMoves = 250'000;
+
 // Δd from parameter 5132 (programmed values overwrite it): PS0062 if not positive.
 double depthOfCut(const CycleCall& call, const std::string& code);
 

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "reference/interpreter/block_motion.h"
+#include "reference/interpreter/block_words.h"
 #include "reference/model/alarms.h"
 #include "reference/model/offset.h"
 
@@ -92,6 +93,7 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
     // G71.TNRC.NT1: with NT1 = 1 compensation codes in a roughing shape are ignored without alarm.
     checkUsableInShape(b, call.profile.toleratesTnrcInShape || call.params.bit("NT1"));
     s.motion = motionCode(b, s.motion);
+    checkShapeBlockWords(b, s);  // PROG.RANGE, PROG.ADDRESS
     if (!hasAxisWord(b)) continue;
     const auto seg = motionSegment(b, s.motion, s);
     s.position = targetPosition(b, s);

@@ -5,41 +5,71 @@
 
 #include "reference/cycles/cycles.h"
 #include "reference/interpreter/block_motion.h"
+#include "reference/interpreter/block_words.h"
+#include "reference/interpreter/known_position.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {
 
 namespace {
 
-// G codes of a FANUC lathe (system A) that the reference knows but does not model: it warns and
-// leaves the position where it was.
-const std::map<int, std::string>& unmodelledGCodes() {
+// PROG.CAP.MOVES: a program's toolpath holds at most this many moves (a move takes some 2 kB with
+// its rule IDs); each cycle is bounded before it is planned (reference/cycles/roughing_cycle.h).
+constexpr std::size_t kMostMovesPerProgram = 1'000'000;
+
+// G codes of a FANUC lathe (system A) that the reference reads but whose effect it does not apply:
+// it warns.
+const std::map<int, std::string>& unappliedGCodes() {
   static const std::map<int, std::string> codes = {
-      {280, "G28 reference position return"}, {500, "G50 coordinate system setting"}, {320, "G32 threading"},
-      {650, "G65 macro call"}, {530, "G53 machine coordinate system"}, {540, "G54 work coordinate system"},
-      {100, "G10 data setting"}, {270, "G27 reference position check"}, {300, "G30 2nd reference return"},
+      {100, "G10 data setting"}, {650, "G65 macro call"},
   };
   return codes;
 }
 
-// Canned cycles the reference cannot plan yet: the program is reported as not supported, never
-// planned without them.
-const std::map<int, std::string>& unplannedCycles() {
+// Codes the reference cannot plan yet: the program is reported as not supported, never planned
+// without them.
+const std::map<int, std::string>& unplannedCodes() {
   static const std::map<int, std::string> codes = {
+      {290, "G29 return from reference position"}, {320, "G32 threading"},
+      {520, "G52 local coordinate system setting"},
       {730, "G73 pattern repeating cycle"}, {740, "G74 end-face peck drilling cycle"},
       {741, "G74.1 axial groove cycle"},    {750, "G75 outer diameter grooving cycle"},
-      {760, "G76 threading cycle"},         {900, "G90 outer diameter cutting cycle"},
+      {760, "G76 threading cycle"},         {830, "G83 face drilling cycle"},
+      {840, "G84 face tapping cycle"},      {850, "G85 face boring cycle"},
+      {870, "G87 side drilling cycle"},     {880, "G88 side tapping cycle"},
+      {890, "G89 side boring cycle"},       {900, "G90 outer diameter cutting cycle"},
       {920, "G92 threading cycle"},         {940, "G94 end-face turning cycle"},
   };
   return codes;
 }
 
-// Codes the runner applies itself (motion, plane, units, compensation, speed/feed modes, dwell)
-// and the cycles it plans.
-const std::set<int>& modelledGCodes() {
-  static const std::set<int> codes = {0, 10, 20, 30, 40, 170, 180, 190, 200, 210, 400, 410, 420,
-                                      960, 970, 980, 990, 700, 710, 720};
+// Codes the runner applies itself (PROG.GCODES): motion (group 01), dwell, planes, units, the
+// reference position codes and coordinate systems (G27, G28, G30, G50, G53, G54–G59), compensation,
+// G80 (group 10: it cancels a drilling cycle, which the reference never has in force), speed and
+// feed modes, and the cycles it plans.
+const std::set<int>& appliedGCodes() {
+  static const std::set<int> codes = {0,   10,  20,  30,  40,  170, 180, 190, 200, 210, 270, 280, 300,
+                                      400, 410, 420, 500, 530, 540, 550, 560, 570, 580, 590, 700, 710,
+                                      720, 800, 960, 970, 980, 990};
   return codes;
+}
+
+// The non-modal (group 00) command of a block that decides what its axis words mean.
+enum class AxisWordsMean { Motion, Dwell, ReferenceReturn, ReferenceCheck, MachineCoordinates, CoordinateSetting, Data };
+
+AxisWordsMean axisWordsMeaning(const Block& b) {
+  for (const Word* g : b.all('G')) {
+    switch (gCode10(g->value)) {
+      case 40: return AxisWordsMean::Dwell;
+      case 270: return AxisWordsMean::ReferenceCheck;
+      case 280: case 300: return AxisWordsMean::ReferenceReturn;
+      case 530: return AxisWordsMean::MachineCoordinates;
+      case 500: return AxisWordsMean::CoordinateSetting;
+      case 100: case 650: return AxisWordsMean::Data;
+      default: break;
+    }
+  }
+  return AxisWordsMean::Motion;
 }
 
 class ProgramRunner {
@@ -66,31 +96,53 @@ class ProgramRunner {
     int cycle = 0;
     for (const Word* g : b.all('G')) {
       const int g10 = gCode10(g->value);
-      if (const auto it = unplannedCycles().find(g10); it != unplannedCycles().end()) {
+      if (const auto it = unplannedCodes().find(g10); it != unplannedCodes().end()) {
         throw NotSupported(b.line, it->second + " is not planned by the reference yet");
       }
-      if (!modelledGCodes().count(g10) && !unmodelledGCodes().count(g10)) {
+      if (!appliedGCodes().count(g10) && !unappliedGCodes().count(g10)) {
         throw CycleAlarm(alarm::kImproperGCode, b.line, g->text + " is not a G code of this controller");
       }
       applyModalCode(g10);
       if (g10 == 700 || g10 == 710 || g10 == 720) cycle = g10;
     }
+    const AxisWordsMean meaning = axisWordsMeaning(b);
+    checkWords(b, cycle != 0, meaning);
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
     }
     if (cycle) return executeCycle(i, cycle);
-    for (const Word* g : b.all('G')) {
-      if (auto it = unmodelledGCodes().find(gCode10(g->value)); it != unmodelledGCodes().end()) {
-        path_.warnings.push_back({b.line, it->second + " is not modelled by the reference; position unchanged"});
-        return i + 1;
-      }
-    }
     for (const Word* m : b.all('M')) {
       if (m->value == 30 || m->value == 2) ended_ = true;
       if (m->value == 98) path_.warnings.push_back({b.line, "subprogram calls are not followed by the reference"});
     }
-    executeMotion(b);
+    if (meaning == AxisWordsMean::Data) warnNotApplied(b);
+    if (!hasAxisWord(b)) return i + 1;
+    switch (meaning) {
+      case AxisWordsMean::Motion: executeMotion(b, state_.motion); break;
+      case AxisWordsMean::Dwell: break;  // G04 X/U: the dwell time
+      case AxisWordsMean::ReferenceCheck: executeMotion(b, 0); break;  // G27: positioning, then the check
+      case AxisWordsMean::ReferenceReturn: returnToReferencePosition(b); break;
+      case AxisWordsMean::MachineCoordinates: forgetCommandedAxes(b, "G53"); break;
+      case AxisWordsMean::CoordinateSetting: setCoordinateSystem(b); break;
+      case AxisWordsMean::Data: break;  // G10's values, G65's arguments
+    }
     return i + 1;
+  }
+
+  // PROG.RANGE, PROG.ADDRESS: the words as the controller reads them. A cycle block's own
+  // addresses are read by its planner (G72.RANGE); its range alarm is dated "cycle block".
+  void checkWords(const Block& b, bool cycleBlock, AxisWordsMean meaning) {
+    try {
+      checkWordRanges(b, state_.inch);
+    } catch (CycleAlarm& a) {
+      if (cycleBlock) a.setWhen("cycle block");
+      throw;
+    }
+    if (meaning == AxisWordsMean::Data) return;  // G10 and G65 give every address a meaning of their own
+    checkNoThreadLead(b);
+    if (!cycleBlock && hasAxisWord(b) && meaning == AxisWordsMean::Motion) {
+      checkMotionBlockAddresses(b, state_.motion, state_);
+    }
   }
 
   void applyModalCode(int g10) {
@@ -99,6 +151,7 @@ class ProgramRunner {
     if (g10 == 200) state_.inch = true;
     if (g10 == 210) state_.inch = false;
     if (g10 == 400 || g10 == 410 || g10 == 420) state_.tnrc = g10 / 10;
+    if (g10 >= 540 && g10 <= 590 && g10 % 10 == 0) state_.workCoordinates = g10 / 10;
   }
 
   std::size_t executeCycle(std::size_t i, int cycle) {
@@ -114,6 +167,7 @@ class ProgramRunner {
       cycle == 710 ? applyG71FirstBlock(call) : applyG72FirstBlock(call);
       return i + 1;
     }
+    requireKnownPlanePosition(b, "G" + std::to_string(cycle / 10) + " starts from it");
     if (state_.tnrc != 40 && options_.tool.noseRadius <= 0) {
       path_.warnings.push_back({b.line, "G4" + std::to_string(state_.tnrc % 10) +
                                             " is active but the tool's nose radius is 0: the shape is not offset "
@@ -121,6 +175,10 @@ class ProgramRunner {
     }
     if (!started_) startPath();
     CycleOutcome out = cycle == 700 ? planG70(call) : cycle == 710 ? planG71(call) : planG72(call);
+    if (path_.moves.size() + out.moves.size() > kMostMovesPerProgram) {
+      throw NotSupported(b.line, "the program would make more than " + std::to_string(kMostMovesPerProgram) +
+                                     " moves; cyclecert plans at most that many per program");
+    }
     CycleRecord record{"G" + std::to_string(cycle / 10), b.line, state_.planePoint(), path_.moves.size(),
                        out.moves.size(), std::move(out.shape), out.allowance, out.compensated};
     path_.cycles.push_back(record);
@@ -148,13 +206,55 @@ class ProgramRunner {
     path_.plane = state_.axes().name();
   }
 
-  // A positioning or cutting block outside the cycles: once the path has started, it is a move.
-  void executeMotion(const Block& b) {
-    if (!hasAxisWord(b)) return;
+  // PROG.POSITION: a cycle, an arc, an incremental word or a move the toolpath shows needs the
+  // position it starts from.
+  void requireKnownPlanePosition(const Block& b, const std::string& why) const {
+    const PlaneAxes axes = state_.axes();
+    for (char axis : {axes.first, axes.second}) {
+      if (known_.known(axis)) continue;
+      throw NotSupported(b.line, known_.describe(axis) + " (" + why + "); position the tool with G00 " +
+                                     axes.second + ".. " + axes.first + ".. before it");
+    }
+  }
+
+  bool planePositionKnown() const {
+    const PlaneAxes axes = state_.axes();
+    return known_.known(axes.first) && known_.known(axes.second);
+  }
+
+  // The first axis that the block moves incrementally from an unknown position, or 0.
+  char incrementalWordOnUnknownAxis(const Block& b) const {
+    for (const char axis : {'X', 'Y', 'Z'}) {
+      if (!known_.known(axis) && b.has(incrementalAddress(axis))) return axis;
+    }
+    return 0;
+  }
+  bool hasIncrementalWordOnUnknownAxis(const Block& b) const { return incrementalWordOnUnknownAxis(b) != 0; }
+
+  void requireKnownForIncrementalWords(const Block& b) const {
+    if (const char axis = incrementalWordOnUnknownAxis(b)) {
+      throw NotSupported(b.line, known_.describe(axis) + " (" + incrementalAddress(axis) +
+                                     " moves from it); position the tool with an absolute " + axis + " word");
+    }
+  }
+
+  static char incrementalAddress(char axis) { return axis == 'X' ? 'U' : axis == 'Y' ? 'V' : 'W'; }
+
+  void learnAbsoluteAxes(const Block& b) {
+    for (const char axis : {'X', 'Y', 'Z'}) {
+      if (b.has(axis)) known_.learn(axis);
+    }
+  }
+
+  // A positioning or cutting block outside the cycles (PROG.MODAL.MOTION: with any other modal
+  // codes in the block, G54–G59 and G80 included): once the path has started, it is a move.
+  void executeMotion(const Block& b, int motion) {
+    requireKnownForIncrementalWords(b);
+    if (started_ || motion == 2 || motion == 3) requireKnownPlanePosition(b, "the move at this line starts from it");
     if (started_) {
-      if (const auto seg = motionSegment(b, state_.motion, state_)) {
+      if (const auto seg = motionSegment(b, motion, state_)) {
         Move m;
-        m.kind = state_.motion == 0 ? MoveKind::Rapid : MoveKind::Feed;
+        m.kind = motion == 0 ? MoveKind::Rapid : MoveKind::Feed;
         m.shape = seg->kind;
         m.to = seg->to;
         if (seg->isArc()) m.center = seg->center;
@@ -164,6 +264,39 @@ class ProgramRunner {
       }
     }
     state_.position = targetPosition(b, state_);
+    learnAbsoluteAxes(b);
+  }
+
+  // G28/G30: by rapid through the intermediate point (the block's words) to a reference position,
+  // whose work coordinates cyclecert does not know (PROG.POSITION).
+  void returnToReferencePosition(const Block& b) {
+    const std::string code = b.hasG(280) ? "G28" : "G30";
+    if (started_ && planePositionKnown() && !hasIncrementalWordOnUnknownAxis(b)) executeMotion(b, 0);
+    forgetCommandedAxes(b, code);
+  }
+
+  void forgetCommandedAxes(const Block& b, const std::string& code) {
+    for (const char axis : {'X', 'Y', 'Z'}) {
+      if (b.has(axis) || b.has(incrementalAddress(axis))) known_.forget(axis, {b.line, code});
+    }
+    if (started_) {
+      path_.warnings.push_back({b.line, code + ": the tool goes to a position whose work coordinates cyclecert does "
+                                               "not model; the toolpath does not show that move"});
+    }
+  }
+
+  // G50 X Z: the current position takes the block's coordinates, without motion; U W shift them.
+  void setCoordinateSystem(const Block& b) {
+    state_.position = targetPosition(b, state_);
+    learnAbsoluteAxes(b);
+  }
+
+  void warnNotApplied(const Block& b) {
+    for (const Word* g : b.all('G')) {
+      if (const auto it = unappliedGCodes().find(gCode10(g->value)); it != unappliedGCodes().end()) {
+        path_.warnings.push_back({b.line, it->second + " is not applied by the reference; position unchanged"});
+      }
+    }
   }
 
   const Program& program_;
@@ -171,6 +304,7 @@ class ProgramRunner {
   MachineParams params_;
   RunOptions options_;
   ModalState state_;
+  KnownPosition known_;
   Toolpath path_;
   bool started_ = false;
   bool ended_ = false;

@@ -15,6 +15,9 @@ namespace cyclecert {
 // a letter without a number, a number without a letter, a second decimal point, a number of more
 // than 15 significant digits or spelled "nan"/"inf", a character such as '#', '[' or '=' (so
 // SINUMERIK's R105=1 and CR=8 are rejected, not misread), an unclosed comment, a bad N or O.
+// A number has no exponent, as on the controller: "X1e308" is read as X1 followed by the word
+// E308, which the runner refuses where E means nothing (PS0009, PROG.ADDRESS); ranges are the
+// runner's too (PS0003, PROG.RANGE).
 Program parseProgram(std::string_view text, const std::string& file);
 
 }  // namespace cyclecert

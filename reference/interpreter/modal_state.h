@@ -18,6 +18,7 @@ struct ModalState {
   int plane = 18;        // G18 at power-on on a lathe
   bool inch = false;     // G20
   int tnrc = 40;         // G40/G41/G42
+  int workCoordinates = 54;  // group 14: G54…G59 (their offsets are modelled as zero: PROG.WCS)
   double feed = 0;       // modal F, in mm/min or mm/rev
 
   PlaneAxes axes() const { return planeAxes(plane); }
