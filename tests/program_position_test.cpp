@@ -109,15 +109,29 @@ TEST(ProgramPosition, IncrementalMotionFromAnUnknownPositionIsAClearError) {
   EXPECT_NE(why.find("unknown after G28 at line 1"), std::string::npos) << why;
 }
 
-TEST(ProgramPosition, AMoveOfTheToolpathFromTheReferencePositionIsAClearError) {
+TEST(ProgramPosition, AfterG28ThePositioningIsDrawnFromTheIntermediatePoint) {
   const std::string program = "G00 X40 Z2;\n" + std::string(kCycle) + "G28 U0 W0;\n";
   // Ending there is fine: the return to the reference position is not shown, and a warning says so.
   const Toolpath t = plan(program + "M30;\n");
   ASSERT_FALSE(t.alarm);
   ASSERT_FALSE(t.warnings.empty());
   EXPECT_NE(t.warnings.back().message.find("G28"), std::string::npos);
-  // Moving on from there cannot be drawn.
-  EXPECT_NE(notSupportedMessage(program + "G00 X50 Z50;\n").find("unknown after G28 at line 7"), std::string::npos);
+  // The two-tool program: G28, the next tool, its positioning, G70. The positioning is drawn as a
+  // rapid from the intermediate point (U0 W0: A itself, x 20 z 2) to (x 25, z 3); G70 starts there.
+  const Toolpath two = plan(program + "T0202;\nG00 X50 Z3;\nG70 P10 Q20;\nM30;\n");
+  ASSERT_FALSE(two.alarm);
+  ASSERT_EQ(two.cycles.size(), 2u);
+  const Move& positioning = two.moves[two.cycles[1].firstMove - 1];
+  EXPECT_EQ(positioning.kind, MoveKind::Rapid);
+  EXPECT_TRUE(nearlyEqual(two.from(two.cycles[1].firstMove - 1), {2, 20}));
+  EXPECT_TRUE(nearlyEqual(positioning.to, {3, 25}));
+  EXPECT_TRUE(nearlyEqual(two.cycles[1].start, {3, 25}));
+  // Only straight absolute positioning is drawn so: an arc or an incremental move from there, or a
+  // cycle before both axes are positioned again, is still a clear error.
+  EXPECT_NE(notSupportedMessage(program + "G02 X50 Z-5 R10;\n").find("unknown after G28 at line 7"), std::string::npos);
+  EXPECT_NE(notSupportedMessage(program + "G00 U10 W2;\n").find("unknown after G28 at line 7"), std::string::npos);
+  EXPECT_NE(notSupportedMessage(program + "G00 X50;\nG70 P10 Q20;\n").find("position of Z unknown after G28 at line 7"),
+            std::string::npos);
 }
 
 TEST(ProgramPosition, G28IntermediatePointIsARapid) {

@@ -217,6 +217,20 @@ class ProgramRunner {
     }
   }
 
+  // After G28/G30 once the toolpath has started, the straight positioning blocks that follow are
+  // drawn from the intermediate point, the last position the toolpath shows (PROG.POSITION): the
+  // way to the reference position and back is not drawn (the block's warning says so), so the
+  // common two-tool program (G71 …; G28 U0 W0; T0202; G00 X.. Z..; G70 …) is planned, not refused.
+  bool returningFromReferencePosition() const {
+    const PlaneAxes axes = state_.axes();
+    for (char axis : {axes.first, axes.second}) {
+      if (known_.known(axis)) continue;
+      const std::string& code = known_.whyUnknown(axis).command;
+      if (code != "G28" && code != "G30") return false;
+    }
+    return true;
+  }
+
   bool planePositionKnown() const {
     const PlaneAxes axes = state_.axes();
     return known_.known(axes.first) && known_.known(axes.second);
@@ -250,7 +264,9 @@ class ProgramRunner {
   // codes in the block, G54–G59 and G80 included): once the path has started, it is a move.
   void executeMotion(const Block& b, int motion) {
     requireKnownForIncrementalWords(b);
-    if (started_ || motion == 2 || motion == 3) requireKnownPlanePosition(b, "the move at this line starts from it");
+    if (motion == 2 || motion == 3 || (started_ && !returningFromReferencePosition())) {
+      requireKnownPlanePosition(b, "the move at this line starts from it");
+    }
     if (started_) {
       if (const auto seg = motionSegment(b, motion, state_)) {
         Move m;
@@ -281,7 +297,8 @@ class ProgramRunner {
     }
     if (started_) {
       path_.warnings.push_back({b.line, code + ": the tool goes to a position whose work coordinates cyclecert does "
-                                               "not model; the toolpath does not show that move"});
+                                               "not model; the toolpath does not show that move, and draws the positioning that follows from "
+                                               "the intermediate point"});
     }
   }
 
