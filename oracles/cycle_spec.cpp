@@ -118,8 +118,11 @@ class SpecReader {
         i = readCycle(i, g71 ? "G71" : "G72");
         continue;
       } else if (!g70 && hasAxisWord(b)) {
-        if (!out_.cycles.empty()) out_.motionAfterCycles = true;
-        state_.position = targetPosition(b, state_);
+        const AxisWordsMean meaning = axisWordsMeaning(b);
+        const bool moves = meaning == AxisWordsMean::Motion || meaning == AxisWordsMean::ReferenceCheck ||
+                           meaning == AxisWordsMean::ReferenceReturn;
+        if (moves && !out_.cycles.empty()) out_.motionAfterCycles = true;
+        state_.position = positionAfterBlock(b, state_);
       }
       ++i;
     }

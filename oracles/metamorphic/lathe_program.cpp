@@ -44,7 +44,7 @@ class Reader {
 
   LatheProgram read() {
     for (std::size_t i = 0; i < program_.blocks.size(); ++i) classify(i);
-    ModalState state;  // power-on: G00, G18, metric, at the origin — as the reference's runner
+    ModalState state;  // power-on: G00, G18, metric; the relations transform programs that position the tool first
     std::size_t i = 0;
     while (i < program_.blocks.size()) {
       out_.blocks[i].before = state;

@@ -54,24 +54,6 @@ const std::set<int>& appliedGCodes() {
   return codes;
 }
 
-// The non-modal (group 00) command of a block that decides what its axis words mean.
-enum class AxisWordsMean { Motion, Dwell, ReferenceReturn, ReferenceCheck, MachineCoordinates, CoordinateSetting, Data };
-
-AxisWordsMean axisWordsMeaning(const Block& b) {
-  for (const Word* g : b.all('G')) {
-    switch (gCode10(g->value)) {
-      case 40: return AxisWordsMean::Dwell;
-      case 270: return AxisWordsMean::ReferenceCheck;
-      case 280: case 300: return AxisWordsMean::ReferenceReturn;
-      case 530: return AxisWordsMean::MachineCoordinates;
-      case 500: return AxisWordsMean::CoordinateSetting;
-      case 100: case 650: return AxisWordsMean::Data;
-      default: break;
-    }
-  }
-  return AxisWordsMean::Motion;
-}
-
 class ProgramRunner {
  public:
   ProgramRunner(const Program& program, const Profile& profile, const MachineParams& params, const RunOptions& options)

@@ -36,6 +36,34 @@ AxisPosition targetPosition(const Block& b, const ModalState& s) {
   return p;
 }
 
+AxisWordsMean axisWordsMeaning(const Block& b) {
+  for (const Word* g : b.all('G')) {
+    switch (gCode10(g->value)) {
+      case 40: return AxisWordsMean::Dwell;
+      case 270: return AxisWordsMean::ReferenceCheck;
+      case 280: case 300: return AxisWordsMean::ReferenceReturn;
+      case 530: return AxisWordsMean::MachineCoordinates;
+      case 500: return AxisWordsMean::CoordinateSetting;
+      case 100: case 650: return AxisWordsMean::Data;
+      default: break;
+    }
+  }
+  return AxisWordsMean::Motion;
+}
+
+AxisPosition positionAfterBlock(const Block& b, const ModalState& s) {
+  switch (axisWordsMeaning(b)) {
+    case AxisWordsMean::Motion:
+    case AxisWordsMean::ReferenceCheck:
+    case AxisWordsMean::ReferenceReturn:
+    case AxisWordsMean::CoordinateSetting: return targetPosition(b, s);
+    case AxisWordsMean::Dwell:
+    case AxisWordsMean::MachineCoordinates:
+    case AxisWordsMean::Data: break;
+  }
+  return s.position;
+}
+
 std::optional<Segment> motionSegment(const Block& b, int motion, const ModalState& s) {
   const PlaneAxes axes = s.axes();
   const AxisPosition target = targetPosition(b, s);

@@ -17,6 +17,18 @@ bool hasAxisWord(const Block& b);
 // The position after the block's axis words (unchanged axes keep their value).
 AxisPosition targetPosition(const Block& b, const ModalState& s);
 
+// What a block's axis words mean, decided by its group 00 command (PROG.POSITION, PROG.GCODES):
+// a move (no such command, or G27's positioning), G04's dwell time, G28/G30's intermediate point,
+// G53's machine coordinates, G50's coordinate setting, or G10/G65 data.
+enum class AxisWordsMean { Motion, Dwell, ReferenceReturn, ReferenceCheck, MachineCoordinates, CoordinateSetting, Data };
+AxisWordsMean axisWordsMeaning(const Block& b);
+
+// Where the block leaves the tool in work coordinates as far as the program tells: the target of a
+// move or of G27's positioning, G28/G30's intermediate point (the reference position beyond it
+// is not modelled), the coordinates G50 sets; unchanged by a dwell, G53 or data. The program
+// runner and the oracles' reading of a program both follow a block with this.
+AxisPosition positionAfterBlock(const Block& b, const ModalState& s);
+
 // A motion block as a plane segment from the current position; nothing when the block does not
 // move in the plane. Throws CycleAlarm PS0023/PS0020 for an impossible arc.
 std::optional<Segment> motionSegment(const Block& b, int motion, const ModalState& s);
