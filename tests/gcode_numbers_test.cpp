@@ -6,18 +6,14 @@
 #include "harness/reference_plan.h"
 #include "reference/gcode/parser.h"
 #include "reference/model/alarms.h"
+#include "tests/small_g71_program.h"
 
 namespace cyclecert {
 namespace {
 
-Toolpath plan(const std::string& program) { return planWithReference({program, "num.nc", "fanuc-0i-f", {}, {}}); }
+Toolpath plan(const std::string& program) { return planFanucProgram(program, "num.nc"); }
 
-const char* kCycle =
-    "G71 U2 R0.5;\n"
-    "G71 P10 Q20 U0.4 W0.1 F0.2;\n"
-    "N10 G00 X20;\n"
-    "G01 Z-10;\n"
-    "N20 X40 Z-20;\n";
+const char* const kCycle = kSmallG71Cycle;
 
 void expectAlarm(const Toolpath& t, const std::string& code, int line, const std::string& inMessage) {
   ASSERT_TRUE(t.alarm) << "no alarm, expected " << code;

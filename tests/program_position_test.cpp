@@ -6,19 +6,15 @@
 
 #include "harness/reference_plan.h"
 #include "reference/model/alarms.h"
+#include "tests/small_g71_program.h"
 
 namespace cyclecert {
 namespace {
 
-Toolpath plan(const std::string& program) { return planWithReference({program, "pos.nc", "fanuc-0i-f", {}, {}}); }
+Toolpath plan(const std::string& program) { return planFanucProgram(program, "pos.nc"); }
 
 // A = (x 20, z 2) once positioned; U+ allowance: a start anywhere below x 20 is PS0322.
-const char* kCycle =
-    "G71 U2 R0.5;\n"
-    "G71 P10 Q20 U0.4 W0.1 F0.2;\n"
-    "N10 G00 X20;\n"
-    "G01 Z-10;\n"
-    "N20 X40 Z-20;\n";
+const char* const kCycle = kSmallG71Cycle;
 
 std::string notSupportedMessage(const std::string& program) {
   try {
