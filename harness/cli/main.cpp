@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     std::cerr << "cyclecert " << commandLine(argc, argv)
               << ": out of memory (std::bad_alloc). The inputs are limited (64 MiB a file, the planner's passes and "
-                 "moves: README \"Limits\"), so this is a defect of cyclecert: please report it with the command line\n";
+                 "moves: README \"What the reference reads, and its limits\"), so this is a defect of cyclecert: please report it with the command line\n";
     return kExitUsage;
   } catch (const std::exception& e) {  // unknown profile or parameter, bad spec case, I/O
     std::cerr << "cyclecert: " << e.what() << "\n";
