@@ -36,8 +36,9 @@ std::optional<CampaignDifference> firstDifference(const SourcedRecord& a, const 
 // The fields two records to be joined must agree on (mergeDifference in campaign.h).
 std::vector<std::string> mergedFields(const json& a, const json& b) {
   if (text(a, "command") != text(b, "command")) return {};
-  if (text(a, "command") == "fuzz") return {"engine", "engine_version", "vs", "seed", "shards", "spec_suite_hash"};
+  // Runs of different engines fill different engines' parts of one report, which compares them.
   if (text(a, "engine") != text(b, "engine")) return {"spec_suite_hash"};
+  if (text(a, "command") == "fuzz") return {"engine_version", "vs", "seed", "shards", "spec_suite_hash"};
   return {"engine_version", "spec_suite_hash"};
 }
 
@@ -68,8 +69,11 @@ std::optional<CampaignDifference> mergeDifference(const std::vector<std::vector<
       if (auto d = firstDifference(all[j], all[i], mergedFields(all[j].record, all[i].record))) return d;
     }
   }
-  for (std::size_t i = 1; i < latestFuzz.size(); ++i) {
-    if (auto d = firstDifference(latestFuzz[0], latestFuzz[i], {"cases"})) return d;
+  for (std::size_t i = 0; i < latestFuzz.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (text(latestFuzz[j].record, "engine") != text(latestFuzz[i].record, "engine")) continue;
+      if (auto d = firstDifference(latestFuzz[j], latestFuzz[i], {"cases"})) return d;
+    }
   }
   return std::nullopt;
 }

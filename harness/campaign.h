@@ -33,10 +33,12 @@ struct CampaignDifference {
 std::optional<CampaignDifference> resumeDifference(const std::vector<SourcedRecord>& existing,
                                                    const SourcedRecord& next);
 
-// Joining runs, given each input's records in order: fuzz runs must be shards of one campaign
-// (same engine and version, vs, seed, number of shards, spec suite, and the inputs' latest runs the
-// same --cases); check runs (of any engines) must share the spec suite, and runs of one engine its
-// version. A check run and a fuzz run fill different parts of a report and are not compared.
+// Joining runs, given each input's records in order: one engine's fuzz runs must be shards of one
+// campaign (same engine version, vs, seed, number of shards, spec suite, and the inputs' latest
+// runs the same --cases); one engine's check runs its version and the spec suite. Runs of different
+// engines (make run's report: check and fuzz of reference and linuxcnc) must share the spec suite
+// only: they fill different engines' parts of one report, which compares them. A check run and a
+// fuzz run fill different parts of a report and are not compared.
 std::optional<CampaignDifference> mergeDifference(const std::vector<std::vector<SourcedRecord>>& inputs);
 
 // "seed 7 in A/run.json, 8 in B/run.json".
