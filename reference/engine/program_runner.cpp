@@ -13,9 +13,8 @@ namespace cyclecert {
 
 namespace {
 
-// PROG.CAP.MOVES: a program's toolpath holds at most this many moves (a move takes some 2 kB with
-// its rule IDs); each cycle is bounded before it is planned (reference/cycles/roughing_cycle.h).
-constexpr std::size_t kMostMovesPerProgram = 1'000'000;
+// PROG.CAP.MOVES: a program's toolpath holds at most kMostMovesPerToolpath moves (toolpath.h).
+constexpr std::size_t kMostMovesPerProgram = kMostMovesPerToolpath;
 
 // G codes of a FANUC lathe (system A) that the reference reads but whose effect it does not apply:
 // it warns.

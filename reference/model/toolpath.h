@@ -1,6 +1,7 @@
 #pragma once
 // The canonical result of any engine: moves in physical coordinates (mm, x = radius, plane mapped
 // onto ZX), or an alarm. The reference annotates each move with its phase and the rule IDs behind it.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,11 @@ struct CycleRecord {
   Point allowance;             // the rough profile is `shape` shifted by this (Δw, Δu/2)
   bool compensated = false;    // `shape` is the imaginary tool-nose path under G41/G42
 };
+
+// PROG.CAP.MOVES: the most moves a toolpath holds — the reference's plan of a program (each cycle
+// is bounded before it is planned: reference/cycles/roughing_cycle.h) and any engine's toolpath
+// the harness reads (toolpath_json.h); a move takes some 2 kB with its rule IDs.
+inline constexpr std::size_t kMostMovesPerToolpath = 1'000'000;
 
 struct Toolpath {
   std::string profile;

@@ -244,6 +244,10 @@ Toolpath toolpathFromJson(const json& j) {
   if (j.contains("alarm") && !j["alarm"].is_null()) t.alarm = alarmFromJson(j["alarm"], "/alarm");
   if (!j.contains("moves")) fail("/moves", "an array of moves (field missing)");
   if (!j["moves"].is_array()) fail("/moves", "an array of moves");
+  if (j["moves"].size() > kMostMovesPerToolpath) {
+    fail("/moves", "at most " + std::to_string(kMostMovesPerToolpath) + " moves (a real cycle makes hundreds), found " +
+                       std::to_string(j["moves"].size()));
+  }
   if (j.contains("start")) t.start = pointFromJson(j["start"], "/start");
   for (std::size_t i = 0; i < j["moves"].size(); ++i) {
     const std::string where = "/moves/" + std::to_string(i);
