@@ -164,17 +164,19 @@ class SpecReader {
   void checkFinishingCompensation(const Block& b) {
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
-    const auto ns = p ? program_.findSequence(static_cast<long>(p->value)) : std::nullopt;
-    const auto nf = q ? program_.findSequence(static_cast<long>(q->value)) : std::nullopt;
-    if (!ns || !nf || *nf < *ns) return;
+    // Plain indices, kNotFound when absent (GCC 12 misreads optionals here, as in readCycle).
+    constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
+    const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
+    const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
+    if (ns == kNotFound || nf == kNotFound || nf < ns) return;
     const auto isTnrc = [](const Block& x) { return x.hasG(400) || x.hasG(410) || x.hasG(420); };
     bool inside = false;
-    for (std::size_t i = *ns; i <= *nf; ++i) inside = inside || isTnrc(program_.blocks[i]);
+    for (std::size_t i = ns; i <= nf; ++i) inside = inside || isTnrc(program_.blocks[i]);
     if (!inside || profile_.toleratesTnrcInShape) return;
-    const Block& end = program_.blocks[*nf];
+    const Block& end = program_.blocks[nf];
     std::optional<Alarm> bad;
     if (!params_.bit("NT2")) {
-      for (std::size_t i = *ns; i <= *nf && !bad; ++i) {
+      for (std::size_t i = ns; i <= nf && !bad; ++i) {
         if (isTnrc(program_.blocks[i])) bad = forbidden("PS0325", program_.blocks[i].line, "compensation inside the G70 shape");
       }
     } else if (state_.tnrc != 40) {
