@@ -164,17 +164,19 @@ class SpecReader {
   void checkFinishingCompensation(const Block& b) {
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
-    const auto ns = p ? program_.findSequence(static_cast<long>(p->value)) : std::nullopt;
-    const auto nf = q ? program_.findSequence(static_cast<long>(q->value)) : std::nullopt;
-    if (!ns || !nf || *nf < *ns) return;
+    // Plain indices, kNotFound when absent (GCC 12 misreads optionals here, as in readCycle).
+    constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
+    const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
+    const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
+    if (ns == kNotFound || nf == kNotFound || nf < ns) return;
     const auto isTnrc = [](const Block& x) { return x.hasG(400) || x.hasG(410) || x.hasG(420); };
     bool inside = false;
-    for (std::size_t i = *ns; i <= *nf; ++i) inside = inside || isTnrc(program_.blocks[i]);
+    for (std::size_t i = ns; i <= nf; ++i) inside = inside || isTnrc(program_.blocks[i]);
     if (!inside || profile_.toleratesTnrcInShape) return;
-    const Block& end = program_.blocks[*nf];
+    const Block& end = program_.blocks[nf];
     std::optional<Alarm> bad;
     if (!params_.bit("NT2")) {
-      for (std::size_t i = *ns; i <= *nf && !bad; ++i) {
+      for (std::size_t i = ns; i <= nf && !bad; ++i) {
         if (isTnrc(program_.blocks[i])) bad = forbidden("PS0325", program_.blocks[i].line, "compensation inside the G70 shape");
       }
     } else if (state_.tnrc != 40) {
@@ -203,6 +205,29 @@ class SpecReader {
     if (const Word* e = b.find('R'); e && e->value >= 0) params_.set("5133", e->value * state_.unitScale());
   }
 
+  // G71.FS10.*: the block with P and Q in the Series 10/11 format (FCV = 1) gives Δd with D, in
+  // least input increments, and it stays in parameter 5132; with FCV = 0 a D there is PS0009.
+  std::optional<Alarm> readSeries10Depth(const Block& b, CycleSpec& c) {
+    const Word* d = b.find('D');
+    if (!params_.bit("FCV")) {
+      if (d) return forbidden("PS0009", b.line, "D in the P/Q block needs the Series 10/11 format (FCV = 1)");
+      return std::nullopt;
+    }
+    for (char letter : {'I', 'K'}) {
+      if (const Word* w = b.find(letter); w && w->value != 0) {
+        throw std::runtime_error("line " + std::to_string(b.line) + ": " + w->text +
+                                 ": the oracles do not read I/K of the Series 10/11 format");
+      }
+    }
+    if (!d) return std::nullopt;
+    if (d->hasDecimalPoint) return forbidden("PS0007", b.line, "D of the Series 10/11 format has a decimal point");
+    if (d->value <= 0) return forbidden("PS0062", b.line, "D is not positive");
+    if (d->value > 999'999'999) return forbidden("PS0003", b.line, "D has more than 9 digits");
+    c.depthOfCut = d->value * (state_.inch ? 0.0001 * 25.4 : 0.001);
+    params_.set("5132", c.depthOfCut);
+    return std::nullopt;
+  }
+
   std::size_t readCycle(std::size_t index, const std::string& code) {
     const Block& b = program_.blocks[index];
     const PlaneAxes axes = state_.axes();
@@ -229,6 +254,8 @@ class SpecReader {
       c.forbiddenBy = bad;
     } else if (!p || !q) {
       c.forbiddenBy = forbidden("PS0061", b.line, "P or Q missing");
+    } else if (auto bad = readSeries10Depth(b, c)) {
+      c.forbiddenBy = bad;
     } else if (ns == kNotFound || nf == kNotFound || nf < ns) {
       c.forbiddenBy = forbidden("PS0063", b.line, "block P or Q not found");
     } else if (c.depthOfCut <= 0) {

@@ -3,6 +3,7 @@
 #include "reference/gcode/address_ranges.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
+#include "reference/cycles/series10_format.h"
 #include "reference/cycles/type2_roughing.h"
 
 #include <algorithm>
@@ -49,6 +50,8 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
     checkCycleAddress(*dw, CycleAddress::Allowance, call.modal.inch);
     s.allowanceFirst = physicalLength(dw->value, axes.firstDiameter, call.modal);
   }
+  // G71.FS10.FMT: the one-block Series 10/11 format's D (FCV = 1), or its refusal (FCV = 0).
+  readSeries10Words(call, format.code);
   // G71.FST: the F of the cycle blocks, or the modal F before them (the runner keeps it).
   s.feed = call.modal.feed;
   if (s.feed <= 0) {
