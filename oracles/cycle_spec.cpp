@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "reference/gcode/address_ranges.h"
+#include "reference/interpreter/block_groups.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
@@ -27,6 +28,20 @@ Point toFrame(const CycleSpec& c, Point p) { return c.cutsAlongZ() ? p : transpo
 void applyModal(const Block& b, ModalState& s) {
   applyModalGCodes(b, s);
   if (const Word* f = b.find('F')) s.feed = f->value * s.unitScale();
+}
+
+// PROG.GROUP.UNKNOWN, PROG.GROUP.COMP: applies the block's modal codes and returns the alarm its G
+// codes raise, as the runner does (reference/interpreter/block_groups.h), or nothing.
+std::optional<Alarm> readBlockGroups(const Block& b, ModalState& s) {
+  if (const Word* g = firstUnknownGCode(b)) return improperGCode(b, *g).alarm();
+  const ModalState before = s;
+  applyModal(b, s);
+  try {
+    checkCompensationChange(b, before, s);
+  } catch (const CycleAlarm& a) {
+    return a.alarm();
+  }
+  return std::nullopt;
 }
 
 Alarm forbidden(std::string code, int line, std::string why) { return Alarm{std::move(code), std::move(why), line, ""}; }
@@ -102,7 +117,7 @@ class SpecReader {
     std::size_t i = 0;
     while (i < program_.blocks.size()) {
       const Block& b = program_.blocks[i];
-      applyModal(b, state_);
+      if ((out_.blockAlarm = readBlockGroups(b, state_))) break;
       const bool g70 = b.hasG(700), g71 = b.hasG(710), g72 = b.hasG(720);
       if ((g70 || g71 || g72) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
       if (g70) {
@@ -351,6 +366,7 @@ std::optional<Alarm> ProgramSpec::firstAlarm() const {
     if (c.forbiddenBy) consider(*c.forbiddenBy);
   }
   for (const Alarm& a : finishingAlarms) consider(a);
+  if (blockAlarm) consider(*blockAlarm);
   return first;
 }
 

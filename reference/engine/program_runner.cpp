@@ -2,6 +2,7 @@
 
 
 #include "reference/cycles/cycles.h"
+#include "reference/interpreter/block_groups.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/interpreter/block_words.h"
 #include "reference/interpreter/g_codes.h"
@@ -15,13 +16,6 @@ namespace {
 // PROG.CAP.MOVES: a program's toolpath holds at most this many moves (a move takes some 2 kB with
 // its rule IDs); each cycle is bounded before it is planned (reference/cycles/roughing_cycle.h).
 constexpr std::size_t kMostMovesPerProgram = 1'000'000;
-
-// PROG.GCODES: a hint for a code that other G code systems have and system A does not.
-std::string notInSystemAHint(int g10) {
-  if (g10 == 910) return " (G code system A has no G90/G91: U and W are the incremental addresses)";
-  if (g10 == 330) return " (a FANUC lathe threads with G32)";
-  return "";
-}
 
 class ProgramRunner {
  public:
@@ -50,17 +44,14 @@ class ProgramRunner {
     for (const Word* g : b.all('G')) {
       const int g10 = gCode10(g->value);
       const GCode* code = findGCode(g10);
-      if (!code) {
-        throw CycleAlarm(alarm::kImproperGCode, b.line,
-                         g->text + " is not a G code of this controller" + notInSystemAHint(g10));
-      }
+      if (!code) throw improperGCode(b, *g);
       if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(*code, b));
       if (code->group == GGroup::Units) unitsCommanded_ = true;
       applyModalGCode(g10, state_);
       if (g10 == 700 || g10 == 710 || g10 == 720) cycle = g10;
     }
     const AxisWordsMean meaning = axisWordsMeaning(b);
-    checkCompensationChange(b, before, meaning);
+    checkCompensationChange(b, before, state_);
     checkWords(b, cycle != 0, meaning);
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
@@ -111,25 +102,6 @@ class ProgramRunner {
       why += " (in G code system A, G92 is the threading cycle; the maximum spindle speed clamp is G50 S)";
     }
     return why;
-  }
-
-  // PROG.GROUP.COMP: G41/G42 start-up or G40 cancel in a block that moves along an arc is PS0034;
-  // a plane change while compensation stays in force is PS0037.
-  void checkCompensationChange(const Block& b, const ModalState& before, AxisWordsMean meaning) const {
-    const bool compBefore = before.tnrc != 40, compAfter = state_.tnrc != 40;
-    if (compBefore && compAfter && before.plane != state_.plane) {
-      throw CycleAlarm(alarm::kPlaneChangeInComp, b.line,
-                       "G" + std::to_string(state_.plane) + " while G" + std::to_string(before.tnrc) +
-                           " is in force; cancel the compensation with G40 before changing the plane");
-    }
-    const bool arcMove = (state_.motion == 2 || state_.motion == 3) && meaning == AxisWordsMean::Motion && hasAxisWord(b);
-    if (compBefore != compAfter && arcMove) {
-      throw CycleAlarm(alarm::kArcInCompStartOrCancel, b.line,
-                       std::string(compAfter ? "compensation start-up (G" + std::to_string(state_.tnrc) + ")"
-                                             : "compensation cancel (G40)") +
-                           " in a G0" + std::to_string(state_.motion) +
-                           " block; start or cancel it in a G00/G01 block");
-    }
   }
 
   // PROG.UNITS: a program that moves without G20/G21 before its first move is read in the
