@@ -1,6 +1,5 @@
 #include "reference/engine/program_runner.h"
 
-
 #include "reference/cycles/cycles.h"
 #include "reference/interpreter/block_groups.h"
 #include "reference/interpreter/block_motion.h"
