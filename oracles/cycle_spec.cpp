@@ -8,7 +8,9 @@
 #include <stdexcept>
 
 #include "reference/gcode/address_ranges.h"
+#include "reference/interpreter/block_groups.h"
 #include "reference/interpreter/block_motion.h"
+#include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
 #include "reference/model/offset.h"
 
@@ -21,17 +23,25 @@ int signOf(double v) { return v > kEps ? 1 : (v < -kEps ? -1 : 0); }
 
 Point toFrame(const CycleSpec& c, Point p) { return c.cutsAlongZ() ? p : transposed(p); }
 
-// Applies the modal G codes of a block that change how later words are read.
+// Applies the modal G codes of a block that change how later words are read, with the runner's
+// table (PROG.GROUP.LAST: the last code of a group is the one in force).
 void applyModal(const Block& b, ModalState& s) {
-  for (const Word* g : b.all('G')) {
-    const int g10 = gCode10(g->value);
-    if (g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30) s.motion = g10 / 10;
-    if (g10 == 170 || g10 == 180 || g10 == 190) s.plane = g10 / 10;
-    if (g10 == 200) s.inch = true;
-    if (g10 == 210) s.inch = false;
-    if (g10 == 400 || g10 == 410 || g10 == 420) s.tnrc = g10 / 10;
-  }
+  applyModalGCodes(b, s);
   if (const Word* f = b.find('F')) s.feed = f->value * s.unitScale();
+}
+
+// PROG.GROUP.UNKNOWN, PROG.GROUP.COMP: applies the block's modal codes and returns the alarm its G
+// codes raise, as the runner does (reference/interpreter/block_groups.h), or nothing.
+std::optional<Alarm> readBlockGroups(const Block& b, ModalState& s) {
+  if (const Word* g = firstUnknownGCode(b)) return improperGCode(b, *g).alarm();
+  const ModalState before = s;
+  applyModal(b, s);
+  try {
+    checkCompensationChange(b, before, s);
+  } catch (const CycleAlarm& a) {
+    return a.alarm();
+  }
+  return std::nullopt;
 }
 
 Alarm forbidden(std::string code, int line, std::string why) { return Alarm{std::move(code), std::move(why), line, ""}; }
@@ -99,13 +109,15 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
 class SpecReader {
  public:
   SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool)
-      : program_(program), profile_(profile), params_(params), tool_(tool) {}
+      : program_(program), profile_(profile), params_(params), tool_(tool) {
+    state_.inch = profile.inchByDefault;  // PROG.UNITS
+  }
 
   ProgramSpec read() {
     std::size_t i = 0;
     while (i < program_.blocks.size()) {
       const Block& b = program_.blocks[i];
-      applyModal(b, state_);
+      if ((out_.blockAlarm = readBlockGroups(b, state_))) break;
       const bool g70 = b.hasG(700), g71 = b.hasG(710), g72 = b.hasG(720);
       if ((g70 || g71 || g72) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
       if (g70) {
@@ -381,6 +393,7 @@ std::optional<Alarm> ProgramSpec::firstAlarm() const {
     if (c.forbiddenBy) consider(*c.forbiddenBy);
   }
   for (const Alarm& a : finishingAlarms) consider(a);
+  if (blockAlarm) consider(*blockAlarm);
   return first;
 }
 

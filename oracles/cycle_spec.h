@@ -49,6 +49,7 @@ struct ProgramSpec {
   std::optional<int> firstCycleBlockLine;  // the first G70/G71/G72 block
   std::vector<Alarm> finishingAlarms;      // G70 blocks the rules forbid (G71.TNRC.NT2)
   std::optional<Alarm> mdiAlarm;           // the program runs in MDI mode (G72.MDI)
+  std::optional<Alarm> blockAlarm;         // a block's G codes alone are refused (PROG.GROUP.*); reading stops there
 
   // The program's one roughing cycle when it has exactly one that the rules allow (what the
   // geometric oracles judge), else nullptr.

@@ -147,7 +147,7 @@ TEST(Interpreter, CyclesInMdiModeArePS0067) {
 }
 
 TEST(Interpreter, CompensationBeforeTheCycleIsWarnedAbout) {
-  const Toolpath t = plan("G42;\n" + std::string(kShaft));
+  const Toolpath t = plan("G21 G42;\n" + std::string(kShaft));  // G21: no units warning first
   ASSERT_FALSE(t.alarm);
   ASSERT_FALSE(t.warnings.empty());
   EXPECT_NE(t.warnings[0].message.find("G42 is active but the tool's nose radius is 0"), std::string::npos);

@@ -1,11 +1,10 @@
 #include "reference/engine/program_runner.h"
 
-#include <map>
-#include <set>
-
 #include "reference/cycles/cycles.h"
+#include "reference/interpreter/block_groups.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/interpreter/block_words.h"
+#include "reference/interpreter/g_codes.h"
 #include "reference/interpreter/known_position.h"
 #include "reference/model/alarms.h"
 
@@ -16,48 +15,12 @@ namespace {
 // PROG.CAP.MOVES: a program's toolpath holds at most kMostMovesPerToolpath moves (toolpath.h).
 constexpr std::size_t kMostMovesPerProgram = kMostMovesPerToolpath;
 
-// G codes of a FANUC lathe (system A) that the reference reads but whose effect it does not apply:
-// it warns.
-const std::map<int, std::string>& unappliedGCodes() {
-  static const std::map<int, std::string> codes = {
-      {100, "G10 data setting"}, {650, "G65 macro call"},
-  };
-  return codes;
-}
-
-// Codes the reference cannot plan yet: the program is reported as not supported, never planned
-// without them.
-const std::map<int, std::string>& unplannedCodes() {
-  static const std::map<int, std::string> codes = {
-      {290, "G29 return from reference position"}, {320, "G32 threading"},
-      {520, "G52 local coordinate system setting"},
-      {730, "G73 pattern repeating cycle"}, {740, "G74 end-face peck drilling cycle"},
-      {741, "G74.1 axial groove cycle"},    {750, "G75 outer diameter grooving cycle"},
-      {760, "G76 threading cycle"},         {830, "G83 face drilling cycle"},
-      {840, "G84 face tapping cycle"},      {850, "G85 face boring cycle"},
-      {870, "G87 side drilling cycle"},     {880, "G88 side tapping cycle"},
-      {890, "G89 side boring cycle"},       {900, "G90 outer diameter cutting cycle"},
-      {920, "G92 threading cycle"},         {940, "G94 end-face turning cycle"},
-  };
-  return codes;
-}
-
-// Codes the runner applies itself (PROG.GCODES): motion (group 01), dwell, planes, units, the
-// reference position codes and coordinate systems (G27, G28, G30, G50, G53, G54–G59), compensation,
-// G80 (group 10: it cancels a drilling cycle, which the reference never has in force), speed and
-// feed modes, and the cycles it plans.
-const std::set<int>& appliedGCodes() {
-  static const std::set<int> codes = {0,   10,  20,  30,  40,  170, 180, 190, 200, 210, 270, 280, 300,
-                                      400, 410, 420, 500, 530, 540, 550, 560, 570, 580, 590, 700, 710,
-                                      720, 800, 960, 970, 980, 990};
-  return codes;
-}
-
 class ProgramRunner {
  public:
   ProgramRunner(const Program& program, const Profile& profile, const MachineParams& params, const RunOptions& options)
       : program_(program), profile_(profile), params_(params), options_(options) {
     path_.profile = profile.name;
+    state_.inch = profile.inchByDefault;  // PROG.UNITS
   }
 
   Toolpath run() {
@@ -74,24 +37,27 @@ class ProgramRunner {
   // Executes block i and returns the index of the next block.
   std::size_t execute(std::size_t i) {
     const Block& b = program_.blocks[i];
+    const ModalState before = state_;
     int cycle = 0;
     for (const Word* g : b.all('G')) {
       const int g10 = gCode10(g->value);
-      if (const auto it = unplannedCodes().find(g10); it != unplannedCodes().end()) {
-        throw NotSupported(b.line, it->second + " is not planned by the reference yet");
-      }
-      if (!appliedGCodes().count(g10) && !unappliedGCodes().count(g10)) {
-        throw CycleAlarm(alarm::kImproperGCode, b.line, g->text + " is not a G code of this controller");
-      }
-      applyModalCode(g10);
+      const GCode* code = findGCode(g10);
+      if (!code) throw improperGCode(b, *g);
+      if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(*code, b));
+      if (code->group == GGroup::Units) unitsCommanded_ = true;
+      applyModalGCode(g10, state_);
       if (g10 == 700 || g10 == 710 || g10 == 720) cycle = g10;
     }
     const AxisWordsMean meaning = axisWordsMeaning(b);
+    checkCompensationChange(b, before, state_);
     checkWords(b, cycle != 0, meaning);
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
     }
-    if (cycle) return executeCycle(i, cycle);
+    if (cycle) {
+      warnAssumedUnits(b);
+      return executeCycle(i, cycle);
+    }
     for (const Word* m : b.all('M')) {
       if (m->value == 30 || m->value == 2) ended_ = true;
       if (m->value == 98) path_.warnings.push_back({b.line, "subprogram calls are not followed by the reference"});
@@ -99,7 +65,7 @@ class ProgramRunner {
     if (meaning == AxisWordsMean::Data) warnNotApplied(b);
     if (!hasAxisWord(b)) return i + 1;
     switch (meaning) {
-      case AxisWordsMean::Motion: executeMotion(b, state_.motion); break;
+      case AxisWordsMean::Motion: warnAssumedUnits(b); executeMotion(b, state_.motion); break;
       case AxisWordsMean::Dwell: break;  // G04 X/U: the dwell time
       case AxisWordsMean::ReferenceCheck: executeMotion(b, 0); break;  // G27: positioning, then the check
       case AxisWordsMean::ReferenceReturn: returnToReferencePosition(b); break;
@@ -126,13 +92,25 @@ class ProgramRunner {
     }
   }
 
-  void applyModalCode(int g10) {
-    if (g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30) state_.motion = g10 / 10;
-    if (g10 == 170 || g10 == 180 || g10 == 190) state_.plane = g10 / 10;
-    if (g10 == 200) state_.inch = true;
-    if (g10 == 210) state_.inch = false;
-    if (g10 == 400 || g10 == 410 || g10 == 420) state_.tnrc = g10 / 10;
-    if (g10 >= 540 && g10 <= 590 && g10 % 10 == 0) state_.workCoordinates = g10 / 10;
+  // The reason a code is reported as not supported. In system A, G92 is the threading cycle: a
+  // G92 block with an S word and no axis word is most likely system B/C's spindle speed clamp.
+  static std::string notPlannedReason(const GCode& code, const Block& b) {
+    std::string why = std::string(code.name) + " is not planned by the reference yet";
+    if (code.g10 == 920 && b.has('S') && !hasAxisWord(b)) {
+      why += " (in G code system A, G92 is the threading cycle; the maximum spindle speed clamp is G50 S)";
+    }
+    return why;
+  }
+
+  // PROG.UNITS: a program that moves without G20/G21 before its first move is read in the
+  // profile's default units; the toolpath says so once, naming the way to change it.
+  void warnAssumedUnits(const Block& b) {
+    if (unitsCommanded_ || unitsWarned_) return;
+    unitsWarned_ = true;
+    path_.warnings.push_back(
+        {b.line, "no G20/G21 before the first move: the program is read in " + profile_.defaultUnitsName() + ", the " +
+                     profile_.name + " profile's default; add " + (profile_.inchByDefault ? "G21 for millimetres" : "G20 for inch") +
+                     " (or " + (profile_.inchByDefault ? "G20" : "G21") + " to state the default) at the start of the program"});
   }
 
   std::size_t executeCycle(std::size_t i, int cycle) {
@@ -291,8 +269,8 @@ class ProgramRunner {
 
   void warnNotApplied(const Block& b) {
     for (const Word* g : b.all('G')) {
-      if (const auto it = unappliedGCodes().find(gCode10(g->value)); it != unappliedGCodes().end()) {
-        path_.warnings.push_back({b.line, it->second + " is not applied by the reference; position unchanged"});
+      if (const GCode* code = findGCode(gCode10(g->value)); code && code->support == GSupport::NotApplied) {
+        path_.warnings.push_back({b.line, std::string(code->name) + " is not applied by the reference; position unchanged"});
       }
     }
   }
@@ -306,6 +284,8 @@ class ProgramRunner {
   Toolpath path_;
   bool started_ = false;
   bool ended_ = false;
+  bool unitsCommanded_ = false;  // a G20 or G21 has been read
+  bool unitsWarned_ = false;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {
@@ -37,18 +38,16 @@ AxisPosition targetPosition(const Block& b, const ModalState& s) {
 }
 
 AxisWordsMean axisWordsMeaning(const Block& b) {
-  for (const Word* g : b.all('G')) {
-    switch (gCode10(g->value)) {
-      case 40: return AxisWordsMean::Dwell;
-      case 270: return AxisWordsMean::ReferenceCheck;
-      case 280: case 300: return AxisWordsMean::ReferenceReturn;
-      case 530: return AxisWordsMean::MachineCoordinates;
-      case 500: return AxisWordsMean::CoordinateSetting;
-      case 100: case 650: return AxisWordsMean::Data;
-      default: break;
-    }
+  // PROG.GROUP.LAST: of several group 00 codes in one block, the last one is in effect.
+  switch (oneShotCode(b)) {
+    case 40: return AxisWordsMean::Dwell;
+    case 270: return AxisWordsMean::ReferenceCheck;
+    case 280: case 300: return AxisWordsMean::ReferenceReturn;
+    case 530: return AxisWordsMean::MachineCoordinates;
+    case 500: return AxisWordsMean::CoordinateSetting;
+    case 100: case 650: return AxisWordsMean::Data;
+    default: return AxisWordsMean::Motion;
   }
-  return AxisWordsMean::Motion;
 }
 
 AxisPosition positionAfterBlock(const Block& b, const ModalState& s) {

@@ -17,7 +17,8 @@ bool hasAxisWord(const Block& b);
 // The position after the block's axis words (unchanged axes keep their value).
 AxisPosition targetPosition(const Block& b, const ModalState& s);
 
-// What a block's axis words mean, decided by its group 00 command (PROG.POSITION, PROG.GCODES):
+// What a block's axis words mean, decided by its group 00 command, the last one written when there
+// are several (PROG.POSITION, PROG.GCODES, PROG.GROUP.LAST):
 // a move (no such command, or G27's positioning), G04's dwell time, G28/G30's intermediate point,
 // G53's machine coordinates, G50's coordinate setting, or G10/G65 data.
 enum class AxisWordsMean { Motion, Dwell, ReferenceReturn, ReferenceCheck, MachineCoordinates, CoordinateSetting, Data };

@@ -12,6 +12,8 @@ std::string alarmTitle(std::string_view code) {
       {alarm::kImproperGCode, "IMPROPER G-CODE"},
       {alarm::kFeedZero, "FEED ZERO (COMMAND)"},
       {alarm::kInterference, "INTERFERENCE IN TOOL NOSE RADIUS COMPENSATION"},
+      {alarm::kArcInCompStartOrCancel, "NO CIRC ALLOWED IN ST-UP/EXT BLK"},
+      {alarm::kPlaneChangeInComp, "CAN NOT CHANGE PLANE IN G41/G42"},
       {alarm::kRadiusTolerance, "OVER TOLERANCE OF RADIUS"},
       {alarm::kIllegalRadius, "ILLEGAL RADIUS COMMAND"},
       {alarm::kPQMissing, "P OR Q COMMAND IS NOT IN THE MULTIPLE REPETITIVE CYCLES BLOCK"},

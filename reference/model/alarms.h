@@ -17,6 +17,8 @@ inline constexpr std::string_view kImproperAddress = "PS0009";   // an address t
 inline constexpr std::string_view kImproperGCode = "PS0010";     // G code the controller does not have
 inline constexpr std::string_view kInterference = "PS0041";      // nose radius does not fit the shape (TNRC)
 inline constexpr std::string_view kFeedZero = "PS0011";          // cutting feed with F = 0
+inline constexpr std::string_view kArcInCompStartOrCancel = "PS0034";  // G41/G42 start-up or G40 cancel in G02/G03
+inline constexpr std::string_view kPlaneChangeInComp = "PS0037";  // G17/G18/G19 while G41/G42 is in force
 inline constexpr std::string_view kRadiusTolerance = "PS0020";   // I/K arc end not on the circle
 inline constexpr std::string_view kIllegalRadius = "PS0023";     // R arc impossible / arc without R, I, K
 inline constexpr std::string_view kPQMissing = "PS0061";         // P or Q missing in the cycle block

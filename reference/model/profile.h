@@ -20,6 +20,11 @@ struct Profile {
   // G71.T2.ORDER: 0i-F roughs a pocket to its bottom before the next (depth first); 0i-C cuts
   // every pocket at one level before going deeper.
   bool pocketsLevelByLevel = false;
+  // PROG.UNITS: the input unit of a program that commands neither G20 nor G21 (the power-on
+  // state of group 06, parameter INI (0000#2) on FANUC). Every current profile is metric.
+  bool inchByDefault = false;
+  // "millimetres" or "inches": the default unit's name, for the warning that assumes it.
+  std::string defaultUnitsName() const { return inchByDefault ? "inches" : "millimetres"; }
 };
 
 const Profile* findProfile(std::string_view name);
