@@ -112,7 +112,7 @@ class SpecReader {
         readFinishingFeeds(b);
         checkFinishingCompensation(b);
       }
-      if ((g71 || g72) && !b.has('P') && !b.has('Q')) {
+      if ((g71 || g72) && !b.has('P') && !b.has('Q') && !(g71 && huazhong())) {
         readFirstBlock(b, g71);
       } else if (g71 || g72) {
         i = readCycle(i, g71 ? "G71" : "G72");
@@ -144,12 +144,12 @@ class SpecReader {
   }
 
   // G72.RANGE: the P/Q block's words against the address table.
-  std::optional<Alarm> rangeAlarm(const Block& b, const PlaneAxes& axes) const {
+  std::optional<Alarm> rangeAlarm(const Block& b, char allowanceFirst, char allowanceSecond) const {
     try {
       for (char letter : {'P', 'Q'}) {
         if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::SequenceNumber, state_.inch);
       }
-      for (char letter : {axes.firstInc, axes.secondInc}) {
+      for (char letter : {allowanceFirst, allowanceSecond}) {
         if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::Allowance, state_.inch);
       }
     } catch (const CycleAlarm& a) {
@@ -228,9 +228,30 @@ class SpecReader {
     return std::nullopt;
   }
 
+  // HNC.G71.FMT: the Huazhong G71 is one block G71 U(Δd) R(r) P Q X(Δx) Z(Δz) F S T.
+  bool huazhong() const { return profile_.roughingFormat == RoughingBlockFormat::HuazhongOneBlock; }
+
+  // HNC.G71.FMT: U (Δd) and R (r) of the Huazhong block; kept like FANUC's modal 5132/5133.
+  std::optional<Alarm> readHuazhongDepth(const Block& b) {
+    try {
+      if (const Word* dd = b.find('U')) checkCycleAddress(*dd, CycleAddress::DepthOfCut, state_.inch);
+      if (const Word* r = b.find('R')) checkCycleAddress(*r, CycleAddress::Retract, state_.inch);
+    } catch (const CycleAlarm& a) {
+      return a.alarm();
+    }
+    if (const Word* dd = b.find('U')) params_.set("5132", dd->value * state_.unitScale());
+    if (const Word* r = b.find('R')) params_.set("5133", r->value * state_.unitScale());
+    return std::nullopt;
+  }
+
   std::size_t readCycle(std::size_t index, const std::string& code) {
     const Block& b = program_.blocks[index];
     const PlaneAxes axes = state_.axes();
+    // HNC.G71.FMT: X = Δx (diameter) and Z = Δz allowances instead of U and W; Δd and r in the block.
+    const bool oneBlock = huazhong() && code == "G71";
+    const char allowanceFirst = oneBlock ? 'Z' : axes.firstInc, allowanceSecond = oneBlock ? 'X' : axes.secondInc;
+    std::optional<Alarm> huazhongAlarm;
+    if (oneBlock && (b.has('P') || b.has('Q'))) huazhongAlarm = readHuazhongDepth(b);
     CycleSpec c;
     c.code = code;
     c.line = b.line;
@@ -240,17 +261,19 @@ class SpecReader {
     c.retract = params_.get("5133");
     c.directReturn = params_.bit("DTP");
     c.clearance = params_.get("5134");
-    if (const Word* du = b.find(axes.secondInc)) c.allowance.x = physicalLength(du->value, axes.secondDiameter, state_);
-    if (const Word* dw = b.find(axes.firstInc)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
+    if (const Word* du = b.find(allowanceSecond)) c.allowance.x = physicalLength(du->value, axes.secondDiameter, state_);
+    if (const Word* dw = b.find(allowanceFirst)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
     // Block indices of P and Q, or kNotFound (plain indices: GCC 12 misreads optionals here).
     constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
     const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
     const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
-    if (firstBlockAlarm_) {
+    if (firstBlockAlarm_ && !oneBlock) {
       c.forbiddenBy = firstBlockAlarm_;
-    } else if (auto bad = rangeAlarm(b, axes)) {
+    } else if (huazhongAlarm) {
+      c.forbiddenBy = huazhongAlarm;
+    } else if (auto bad = rangeAlarm(b, allowanceFirst, allowanceSecond)) {
       c.forbiddenBy = bad;
     } else if (!p || !q) {
       c.forbiddenBy = forbidden("PS0061", b.line, "P or Q missing");
@@ -269,6 +292,7 @@ class SpecReader {
     }
     readShape(c, ns, nf);
     out_.cycles.push_back(std::move(c));
+    if (oneBlock) return index + 1;  // HNC.G71.FST: ns…nf run again as the finishing pass
     return ns == index + 1 ? nf + 1 : index + 1;  // G72.NSNF.FOLLOW
   }
 

@@ -9,6 +9,12 @@
 
 namespace cyclecert {
 
+// How a G71 block gives the cycle's values. FANUC: two blocks `G71 U(Δd) R(e);` and `G71 P Q U(Δu)
+// W(Δw) F S T;` (G71.FMT.ZX; one block with FCV = 1, G71.FS10.FMT). Huazhong: one block
+// `G71 U(Δd) R(r) P(ns) Q(nf) X(Δx) Z(Δz) F S T`, after which execution goes on with the block
+// after G71, so ns…nf run again as the finishing pass (HNC.G71.FMT, HNC.G71.FST).
+enum class RoughingBlockFormat { FanucTwoBlocks, HuazhongOneBlock };
+
 struct Profile {
   std::string name;         // "fanuc-0i-f", "gsk"
   std::string description;
@@ -20,6 +26,7 @@ struct Profile {
   // G71.T2.ORDER: 0i-F roughs a pocket to its bottom before the next (depth first); 0i-C cuts
   // every pocket at one level before going deeper.
   bool pocketsLevelByLevel = false;
+  RoughingBlockFormat roughingFormat = RoughingBlockFormat::FanucTwoBlocks;
 };
 
 const Profile* findProfile(std::string_view name);
