@@ -55,7 +55,7 @@ std::optional<Alarm> checkShapeCommands(const Block& b, bool compensationAllowed
 // The documented shape checks, written from the rules (G71.HEAD.G0G1, G71.HEAD.NOX, G71.T1.MONO,
 // G71.T2.MONO, G72.T1.MONO, G71.LIMIT.HEIGHT, G71.T1.ALARM with 5145/5146), in the cycle frame.
 std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool headHasDepthWord,
-                                const MachineParams& p) {
+                                const MachineParams& p, bool limitHeight) {
   if (!head.hasG(0) && !head.hasG(10)) return forbidden("PS0065", head.line, "block ns has no G00/G01");
   const Point a = toFrame(c, c.start);
   const Point b = toFrame(c, c.shape.front().to);
@@ -86,7 +86,7 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
     }
   }
   // G71.LIMIT.HEIGHT: U(+) nothing above the start point, U(−) nothing below it.
-  if (c.cutsAlongZ() && c.allowance.x != 0) {
+  if (limitHeight && c.cutsAlongZ() && c.allowance.x != 0) {
     for (const Segment& s : c.shape) {
       const Extent e = extent(s);
       const bool above = c.allowance.x > 0 ? e.xMax > c.start.x + kEps : e.xMin < c.start.x - kEps;
@@ -329,7 +329,8 @@ class SpecReader {
     c.semiFinish = !params_.bit(c.typeII ? "RF2" : "RF1");
     c.noRepeatedPath = params_.bit("NSP");
     compensate(c);
-    if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_);
+    if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_,
+                                           !huazhong());  // seed 003 has no LIMIT.HEIGHT (its example 2 ends below A)
   }
 
   // G71.TNRC.CANCEL / G71.CHECK: under G41/G42 the cycle works on the imaginary tool-nose path.

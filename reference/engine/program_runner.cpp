@@ -77,6 +77,8 @@ class ProgramRunner {
     int cycle = 0;
     for (const Word* g : b.all('G')) {
       const int g10 = gCode10(g->value);
+      if (profile_.g9xAreProgrammingModes && (g10 == 900 || g10 == 940 || g10 == 950)) continue;  // absolute, feed modes
+      if (profile_.g9xAreProgrammingModes && g10 == 910) throw NotSupported(b.line, "G91 incremental mode is not modelled");
       if (const auto it = unplannedCodes().find(g10); it != unplannedCodes().end()) {
         throw NotSupported(b.line, it->second + " is not planned by the reference yet");
       }

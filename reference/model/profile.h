@@ -27,6 +27,9 @@ struct Profile {
   // every pocket at one level before going deeper.
   bool pocketsLevelByLevel = false;
   RoughingBlockFormat roughingFormat = RoughingBlockFormat::FanucTwoBlocks;
+  // Huazhong (seed 003's example 1, `N1 G94 G90`): G90 is absolute programming and G94/G95 feed per
+  // minute/revolution, not FANUC system A's turning cycles. G91 (incremental) is not modelled.
+  bool g9xAreProgrammingModes = false;
 };
 
 const Profile* findProfile(std::string_view name);

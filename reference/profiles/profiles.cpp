@@ -39,6 +39,7 @@ Profile hnc() {
   p.description = "Huazhong (HNC) lathe of seed 003: one-block G71 U(Δd) R(r) P Q X(Δx) Z(Δz), ns…nf run again as finishing";
   p.seed = "003_22785bbc34f78b07.txt";
   p.roughingFormat = RoughingBlockFormat::HuazhongOneBlock;
+  p.g9xAreProgrammingModes = true;
   return p;
 }
 }  // namespace
