@@ -65,7 +65,7 @@ std::optional<Alarm> checkShapeCommands(const Block& b, bool compensationAllowed
 // The documented shape checks, written from the rules (G71.HEAD.G0G1, G71.HEAD.NOX, G71.T1.MONO,
 // G71.T2.MONO, G72.T1.MONO, G71.LIMIT.HEIGHT, G71.T1.ALARM with 5145/5146), in the cycle frame.
 std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool headHasDepthWord,
-                                const MachineParams& p) {
+                                const MachineParams& p, bool limitHeight) {
   if (!head.hasG(0) && !head.hasG(10)) return forbidden("PS0065", head.line, "block ns has no G00/G01");
   const Point a = toFrame(c, c.start);
   const Point b = toFrame(c, c.shape.front().to);
@@ -96,7 +96,7 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
     }
   }
   // G71.LIMIT.HEIGHT: U(+) nothing above the start point, U(−) nothing below it.
-  if (c.cutsAlongZ() && c.allowance.x != 0) {
+  if (limitHeight && c.cutsAlongZ() && c.allowance.x != 0) {
     for (const Segment& s : c.shape) {
       const Extent e = extent(s);
       const bool above = c.allowance.x > 0 ? e.xMax > c.start.x + kEps : e.xMin < c.start.x - kEps;
@@ -108,8 +108,9 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
 
 class SpecReader {
  public:
-  SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool)
-      : program_(program), profile_(profile), params_(params), tool_(tool) {
+  SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool,
+             bool mdi)
+      : program_(program), profile_(profile), params_(params), tool_(tool), mdi_(mdi) {
     state_.inch = profile.inchByDefault;  // PROG.UNITS
   }
 
@@ -124,7 +125,7 @@ class SpecReader {
         readFinishingFeeds(b);
         checkFinishingCompensation(b);
       }
-      if ((g71 || g72) && !b.has('P') && !b.has('Q')) {
+      if ((g71 || g72) && !b.has('P') && !b.has('Q') && !(g71 && huazhong())) {
         readFirstBlock(b, g71);
       } else if (g71 || g72) {
         i = readCycle(i, g71 ? "G71" : "G72");
@@ -156,12 +157,12 @@ class SpecReader {
   }
 
   // G72.RANGE: the P/Q block's words against the address table.
-  std::optional<Alarm> rangeAlarm(const Block& b, const PlaneAxes& axes) const {
+  std::optional<Alarm> rangeAlarm(const Block& b, char allowanceFirst, char allowanceSecond) const {
     try {
       for (char letter : {'P', 'Q'}) {
         if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::SequenceNumber, state_.inch);
       }
-      for (char letter : {axes.firstInc, axes.secondInc}) {
+      for (char letter : {allowanceFirst, allowanceSecond}) {
         if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::Allowance, state_.inch);
       }
     } catch (const CycleAlarm& a) {
@@ -240,9 +241,40 @@ class SpecReader {
     return std::nullopt;
   }
 
+  // HNC.G71.FMT: the Huazhong G71 is one block G71 U(Δd) R(r) P Q X(Δx) Z(Δz) F S T.
+  bool huazhong() const { return profile_.roughingFormat == RoughingBlockFormat::HuazhongOneBlock; }
+
+  // HNC.G71.FMT: U (Δd) and R (r) of the Huazhong block; kept like FANUC's modal 5132/5133.
+  std::optional<Alarm> readHuazhongDepth(const Block& b) {
+    try {
+      if (const Word* dd = b.find('U')) checkCycleAddress(*dd, CycleAddress::DepthOfCut, state_.inch);
+      if (const Word* r = b.find('R')) checkCycleAddress(*r, CycleAddress::Retract, state_.inch);
+    } catch (const CycleAlarm& a) {
+      return a.alarm();
+    }
+    if (const Word* dd = b.find('U')) params_.set("5132", dd->value * state_.unitScale());
+    if (const Word* r = b.find('R')) params_.set("5133", r->value * state_.unitScale());
+    return std::nullopt;
+  }
+
+  // HNC.G71.FST: after a Huazhong G71 the blocks ns…nf run again as the finishing path; the oracles
+  // do not yet tell that run from the roughing (they would report its cuts into the allowance and
+  // its moves as retracts). Until they do, a Huazhong cycle that is planned is not judged — never
+  // judged wrongly; its alarms are.
+  [[noreturn]] static void refuseToJudgeHuazhongRun(const Block& b) {
+    throw NotSupported(b.line, "the oracles do not judge the Huazhong G71 yet (its finishing run of ns…nf after the "
+                               "cycle, HNC.G71.FST, is not modelled); spec cases compare its toolpath with the "
+                               "hand-derived one");
+  }
+
   std::size_t readCycle(std::size_t index, const std::string& code) {
     const Block& b = program_.blocks[index];
     const PlaneAxes axes = state_.axes();
+    // HNC.G71.FMT: X = Δx (diameter) and Z = Δz allowances instead of U and W; Δd and r in the block.
+    const bool oneBlock = huazhong() && code == "G71";
+    const char allowanceFirst = oneBlock ? 'Z' : axes.firstInc, allowanceSecond = oneBlock ? 'X' : axes.secondInc;
+    std::optional<Alarm> huazhongAlarm;
+    if (oneBlock && (b.has('P') || b.has('Q'))) huazhongAlarm = readHuazhongDepth(b);
     CycleSpec c;
     c.code = code;
     c.line = b.line;
@@ -252,17 +284,19 @@ class SpecReader {
     c.retract = params_.get("5133");
     c.directReturn = params_.bit("DTP");
     c.clearance = params_.get("5134");
-    if (const Word* du = b.find(axes.secondInc)) c.allowance.x = physicalLength(du->value, axes.secondDiameter, state_);
-    if (const Word* dw = b.find(axes.firstInc)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
+    if (const Word* du = b.find(allowanceSecond)) c.allowance.x = physicalLength(du->value, axes.secondDiameter, state_);
+    if (const Word* dw = b.find(allowanceFirst)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
     // Block indices of P and Q, or kNotFound (plain indices: GCC 12 misreads optionals here).
     constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
     const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
     const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
-    if (firstBlockAlarm_) {
+    if (firstBlockAlarm_ && !oneBlock) {
       c.forbiddenBy = firstBlockAlarm_;
-    } else if (auto bad = rangeAlarm(b, axes)) {
+    } else if (huazhongAlarm) {
+      c.forbiddenBy = huazhongAlarm;
+    } else if (auto bad = rangeAlarm(b, allowanceFirst, allowanceSecond)) {
       c.forbiddenBy = bad;
     } else if (!p || !q) {
       c.forbiddenBy = forbidden("PS0061", b.line, "P or Q missing");
@@ -275,12 +309,14 @@ class SpecReader {
     } else if (c.feed <= 0) {
       c.forbiddenBy = forbidden("PS0011", b.line, "no cutting feed");
     }
+    if (oneBlock && !c.forbiddenBy && !mdi_) refuseToJudgeHuazhongRun(b);  // in MDI: PS0067, judged
     if (c.forbiddenBy) {
       out_.cycles.push_back(std::move(c));
       return index + 1;
     }
     readShape(c, ns, nf);
     out_.cycles.push_back(std::move(c));
+    if (oneBlock) return index + 1;  // HNC.G71.FST: ns…nf run again as the finishing pass
     return ns == index + 1 ? nf + 1 : index + 1;  // G72.NSNF.FOLLOW
   }
 
@@ -317,7 +353,8 @@ class SpecReader {
     c.semiFinish = !params_.bit(c.typeII ? "RF2" : "RF1");
     c.noRepeatedPath = params_.bit("NSP");
     compensate(c);
-    if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_);
+    if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_,
+                                           !huazhong());  // seed 003 has no LIMIT.HEIGHT (its example 2 ends below A)
   }
 
   // G71.TNRC.CANCEL / G71.CHECK: under G41/G42 the cycle works on the imaginary tool-nose path.
@@ -341,6 +378,7 @@ class SpecReader {
   const Profile& profile_;
   MachineParams params_;
   const ToolOffset& tool_;
+  bool mdi_;  // the program runs in MDI mode: its cycles alarm (G72.MDI) and are judged so
   ModalState state_;
   ProgramSpec out_;
   std::optional<Alarm> firstBlockAlarm_;  // a first cycle block outside the range table
@@ -371,7 +409,7 @@ std::vector<Segment> CycleSpec::roughProfile() const {
 
 ProgramSpec readProgramSpec(const Program& program, const Profile& profile, const MachineParams& params,
                             const ToolOffset& tool, bool mdi) {
-  SpecReader reader(program, profile, params, tool);
+  SpecReader reader(program, profile, params, tool, mdi);
   ProgramSpec spec = reader.read();
   for (const Alarm& a : reader.finishingAlarms_) spec.finishingAlarms.push_back(a);
   // G72.MDI: the cycles cannot run in MDI mode; the first cycle block alarms.

@@ -194,7 +194,7 @@ TEST(Interpreter, MalformedProgramIsAParseErrorWithLocation) {
 TEST(Interpreter, ProfileComesFromTheHeaderComment) {
   EXPECT_EQ(profileFromHeader("(source: seed 001)\n(profile: gsk)\nG00 X1;"), "gsk");
   EXPECT_EQ(profileFromHeader("G00 X1;"), "");
-  EXPECT_THROW(plan(kShaft, "hnc"), UnknownProfile);
+  EXPECT_THROW(plan(kShaft, "heidenhain"), UnknownProfile);
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ TEST(Profiles, GskReturnsStraightAndFanucConventionally) {
   ASSERT_NE(findProfile("fanuc-0i-f"), nullptr);
   EXPECT_TRUE(findProfile("gsk")->defaults.bit("DTP"));
   EXPECT_FALSE(findProfile("fanuc-0i-f")->defaults.bit("DTP"));
-  EXPECT_EQ(findProfile("hnc"), nullptr);
+  EXPECT_EQ(findProfile("heidenhain"), nullptr);
 }
 
 }  // namespace

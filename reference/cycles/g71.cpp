@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "reference/cycles/cycles.h"
+#include "reference/cycles/huazhong_format.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/model/alarms.h"
 
@@ -52,11 +53,33 @@ void checkLimitHeight(const ShapeProgram& shape, double du) {
   }
 }
 
+// HNC.G71.*: the Huazhong one-block G71 (seed 003), planned as type I. Execution resumes after the
+// G71 block, so ns…nf run again as the finishing pass.
+CycleOutcome planHuazhongG71(const CycleCall& call) {
+  const SecondBlock sb = readHuazhongG71Block(call);
+  CycleOutcome out = withShapeAlarmTiming(call, [&] {
+    refuseSubprogramsInHuazhongShape(call, sb);
+    ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
+    selectsTypeII(call, shape);  // HNC.G71.HEAD: A→A' must move X (the FANUC checks and alarms)
+    checkHuazhongHead(call, shape);
+    compensateShape(call, shape);
+    // No G71.LIMIT.HEIGHT: seed 003 states none, and its example 2 (X-0.6, start X6) ends at X4,
+    // below the start point.
+    return planTypeI(call, shape, sb, g71Frame(call));
+  });
+  out.resumeAt = huazhongResumeIndex(call);
+  return out;
+}
+
 }  // namespace
 
-void applyG71FirstBlock(const CycleCall& call) { applyFirstBlock(call, g71Format(call)); }
+void applyG71FirstBlock(const CycleCall& call) {
+  if (readsHuazhongG71(call)) refuseHuazhongG71WithoutPQ(call);
+  applyFirstBlock(call, g71Format(call));
+}
 
 CycleOutcome planG71(const CycleCall& call) {
+  if (readsHuazhongG71(call)) return planHuazhongG71(call);
   const SecondBlock sb = readSecondBlock(call, g71Format(call));
   return withShapeAlarmTiming(call, [&] {
     ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);

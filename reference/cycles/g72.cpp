@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "reference/cycles/cycles.h"
+#include "reference/cycles/huazhong_format.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/model/alarms.h"
 
@@ -40,9 +41,13 @@ bool selectsTypeII(const CycleCall& call, const ShapeProgram& shape) {
 
 }  // namespace
 
-void applyG72FirstBlock(const CycleCall& call) { applyFirstBlock(call, g72Format(call)); }
+void applyG72FirstBlock(const CycleCall& call) {
+  refuseG72UnderHuazhong(call);
+  applyFirstBlock(call, g72Format(call));
+}
 
 CycleOutcome planG72(const CycleCall& call) {
+  refuseG72UnderHuazhong(call);
   const SecondBlock sb = readSecondBlock(call, g72Format(call));
   return withShapeAlarmTiming(call, [&] {
     ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);

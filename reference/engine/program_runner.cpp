@@ -41,6 +41,8 @@ class ProgramRunner {
     int cycle = 0;
     for (const Word* g : b.all('G')) {
       const int g10 = gCode10(g->value);
+      if (profile_.g9xAreProgrammingModes && (g10 == 900 || g10 == 940 || g10 == 950)) continue;  // absolute, feed modes
+      if (profile_.g9xAreProgrammingModes && g10 == 910) throw NotSupported(b.line, "G91 incremental mode is not modelled");
       const GCode* code = findGCode(g10);
       if (!code) throw improperGCode(b, *g);
       if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(*code, b));

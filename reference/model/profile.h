@@ -9,6 +9,12 @@
 
 namespace cyclecert {
 
+// How a G71 block gives the cycle's values. FANUC: two blocks `G71 U(Δd) R(e);` and `G71 P Q U(Δu)
+// W(Δw) F S T;` (G71.FMT.ZX; one block with FCV = 1, G71.FS10.FMT). Huazhong: one block
+// `G71 U(Δd) R(r) P(ns) Q(nf) X(Δx) Z(Δz) F S T`, after which execution goes on with the block
+// after G71, so ns…nf run again as the finishing pass (HNC.G71.FMT, HNC.G71.FST).
+enum class RoughingBlockFormat { FanucTwoBlocks, HuazhongOneBlock };
+
 struct Profile {
   std::string name;         // "fanuc-0i-f", "gsk"
   std::string description;
@@ -25,6 +31,10 @@ struct Profile {
   bool inchByDefault = false;
   // "millimetres" or "inches": the default unit's name, for the warning that assumes it.
   std::string defaultUnitsName() const { return inchByDefault ? "inches" : "millimetres"; }
+  RoughingBlockFormat roughingFormat = RoughingBlockFormat::FanucTwoBlocks;
+  // Huazhong (seed 003's example 1, `N1 G94 G90`): G90 is absolute programming and G94/G95 feed per
+  // minute/revolution, not FANUC system A's turning cycles. G91 (incremental) is not modelled.
+  bool g9xAreProgrammingModes = false;
 };
 
 const Profile* findProfile(std::string_view name);

@@ -30,10 +30,22 @@ Profile gsk() {
   p.toleratesTnrcInShape = true;
   return p;
 }
+
+// Seed 003: Huazhong (HNC) lathe, G71 in one block (HNC.G71.*). Its parameters and alarm codes
+// are not in the seed: the FANUC 0i-F defaults and codes stand in for them (interpretation).
+Profile hnc() {
+  Profile p;
+  p.name = "hnc";
+  p.description = "Huazhong (HNC) lathe of seed 003: one-block G71 U(Δd) R(r) P Q X(Δx) Z(Δz), ns…nf run again as finishing";
+  p.seed = "003_22785bbc34f78b07.txt";
+  p.roughingFormat = RoughingBlockFormat::HuazhongOneBlock;
+  p.g9xAreProgrammingModes = true;
+  return p;
+}
 }  // namespace
 
 const std::vector<Profile>& allProfiles() {
-  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk()};
+  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk(), hnc()};
   return profiles;
 }
 
