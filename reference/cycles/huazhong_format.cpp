@@ -10,12 +10,6 @@ namespace cyclecert {
 
 namespace {
 
-CycleAlarm cycleBlockAlarm(std::string_view code, int line, const std::string& why) {
-  CycleAlarm a(code, line, why);
-  a.setWhen("cycle block");
-  return a;
-}
-
 void requireZxPlane(const CycleCall& call) {
   if (call.modal.plane == 18) return;
   throw NotSupported(call.block().line, "the Huazhong G71 of seed 003 is given in the ZX plane (G18) only; G" +

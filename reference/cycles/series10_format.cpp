@@ -9,12 +9,6 @@ namespace cyclecert {
 
 namespace {
 
-CycleAlarm cycleBlockAlarm(std::string_view code, int line, const std::string& why) {
-  CycleAlarm a(code, line, why);
-  a.setWhen("cycle block");
-  return a;
-}
-
 std::string wordAt(const Word& w) { return w.text + " at column " + std::to_string(w.column); }
 
 // G71.FS10.FCV0: with FCV = 0 (Series 0 format) D has no meaning in the block with P and Q.

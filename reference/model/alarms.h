@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "reference/model/toolpath.h"
 
@@ -56,6 +57,13 @@ class CycleAlarm : public std::exception {
  private:
   Alarm alarm_;
 };
+
+// An alarm the controller raises on reading a cycle's own block (when: "cycle block").
+inline CycleAlarm cycleBlockAlarm(std::string_view code, int line, std::string detail) {
+  CycleAlarm a(code, line, std::move(detail));
+  a.setWhen("cycle block");
+  return a;
+}
 
 // Thrown where a program needs a capability the reference does not have yet (e.g. type II).
 class NotSupported : public std::runtime_error {
