@@ -94,12 +94,28 @@ class ProgramRunner {
     }
   }
 
+  // What a system A cycle code means in G code system B/C, where the programs real shops write in
+  // that system use it every few blocks (issue 14: system B/C itself is not read yet).
+  static const char* systemBCMeaning(int g10) {
+    switch (g10) {
+      case 900: return "absolute programming";
+      case 920: return "the coordinate system setting (system A's G50)";
+      case 940: return "feed per minute (system A's G98)";
+      default: return nullptr;
+    }
+  }
+
   // The reason a code is reported as not supported. In system A, G92 is the threading cycle: a
   // G92 block with an S word and no axis word is most likely system B/C's spindle speed clamp.
   static std::string notPlannedReason(const GCode& code, const Block& b) {
     std::string why = std::string(code.name) + " is not planned by the reference yet";
     if (code.g10 == 920 && b.has('S') && !hasAxisWord(b)) {
       why += " (in G code system A, G92 is the threading cycle; the maximum spindle speed clamp is G50 S)";
+    } else if (const char* meaning = systemBCMeaning(code.g10)) {
+      why += std::string(" (this is G code system A, where it is that cycle; in G code system B or C — FANUC parameter "
+                         "3401#6 GSB, #7 GSC — it is ") + meaning +
+             ", which cyclecert does not read yet: in system A write absolute X/Z, incremental U/W, G98/G99 for the "
+             "feed unit, G50 for the coordinate system)";
     }
     return why;
   }
