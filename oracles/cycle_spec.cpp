@@ -131,10 +131,7 @@ class SpecReader {
         i = readCycle(i, g71 ? "G71" : "G72");
         continue;
       } else if (!g70 && hasAxisWord(b)) {
-        const AxisWordsMean meaning = axisWordsMeaning(b);
-        const bool moves = meaning == AxisWordsMean::Motion || meaning == AxisWordsMean::ReferenceCheck ||
-                           meaning == AxisWordsMean::ReferenceReturn;
-        if (moves && !out_.cycles.empty()) out_.motionAfterCycles = true;
+        if (axisWordsMoveTheTool(axisWordsMeaning(b)) && !out_.cycles.empty()) out_.motionAfterCycles = true;
         state_.position = positionAfterBlock(b, state_);
       }
       ++i;
@@ -154,6 +151,13 @@ class SpecReader {
     for (std::size_t i = *ns; i <= *nf && i < program_.blocks.size(); ++i) {
       if (const Word* f = program_.blocks[i].find('F')) out_.finishingFeeds.push_back(f->value * state_.unitScale());
     }
+  }
+
+  // The index of the block a P or Q word names, or kNotFound (absent word or sequence number).
+  // Plain indices: GCC 12 misreads optionals in the callers' comparisons.
+  static constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
+  std::size_t blockOfSequence(const Word* w) const {
+    return w ? program_.findSequence(static_cast<long>(w->value)).value_or(kNotFound) : kNotFound;
   }
 
   // G72.RANGE: the P/Q block's words against the address table.
@@ -177,10 +181,7 @@ class SpecReader {
   void checkFinishingCompensation(const Block& b) {
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
-    // Plain indices, kNotFound when absent (GCC 12 misreads optionals here, as in readCycle).
-    constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
-    const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
-    const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
+    const std::size_t ns = blockOfSequence(p), nf = blockOfSequence(q);
     if (ns == kNotFound || nf == kNotFound || nf < ns) return;
     const auto isTnrc = [](const Block& x) { return x.hasG(400) || x.hasG(410) || x.hasG(420); };
     bool inside = false;
@@ -288,10 +289,7 @@ class SpecReader {
     if (const Word* dw = b.find(allowanceFirst)) c.allowance.z = physicalLength(dw->value, axes.firstDiameter, state_);
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
-    // Block indices of P and Q, or kNotFound (plain indices: GCC 12 misreads optionals here).
-    constexpr std::size_t kNotFound = static_cast<std::size_t>(-1);
-    const std::size_t ns = p ? program_.findSequence(static_cast<long>(p->value)).value_or(kNotFound) : kNotFound;
-    const std::size_t nf = q ? program_.findSequence(static_cast<long>(q->value)).value_or(kNotFound) : kNotFound;
+    const std::size_t ns = blockOfSequence(p), nf = blockOfSequence(q);
     if (firstBlockAlarm_ && !oneBlock) {
       c.forbiddenBy = firstBlockAlarm_;
     } else if (huazhongAlarm) {

@@ -12,9 +12,6 @@ namespace cyclecert {
 
 namespace {
 
-// PROG.CAP.MOVES: a program's toolpath holds at most kMostMovesPerToolpath moves (toolpath.h).
-constexpr std::size_t kMostMovesPerProgram = kMostMovesPerToolpath;
-
 class ProgramRunner {
  public:
   ProgramRunner(const Program& program, const Profile& profile, const MachineParams& params, const RunOptions& options)
@@ -71,7 +68,7 @@ class ProgramRunner {
       case AxisWordsMean::Dwell: break;  // G04 X/U: the dwell time
       case AxisWordsMean::ReferenceCheck: executeMotion(b, 0); break;  // G27: positioning, then the check
       case AxisWordsMean::ReferenceReturn: returnToReferencePosition(b); break;
-      case AxisWordsMean::MachineCoordinates: forgetCommandedAxes(b, "G53"); break;
+      case AxisWordsMean::MachineCoordinates: moveInMachineCoordinates(b); break;
       case AxisWordsMean::CoordinateSetting: setCoordinateSystem(b); break;
       case AxisWordsMean::Data: break;  // G10's values, G65's arguments
     }
@@ -152,8 +149,8 @@ class ProgramRunner {
     }
     if (!started_) startPath();
     CycleOutcome out = cycle == 700 ? planG70(call) : cycle == 710 ? planG71(call) : planG72(call);
-    if (path_.moves.size() + out.moves.size() > kMostMovesPerProgram) {
-      throw NotSupported(b.line, "the program would make more than " + std::to_string(kMostMovesPerProgram) +
+    if (path_.moves.size() + out.moves.size() > kMostMovesPerToolpath) {  // PROG.CAP.MOVES
+      throw NotSupported(b.line, "the program would make more than " + std::to_string(kMostMovesPerToolpath) +
                                      " moves; cyclecert plans at most that many per program");
     }
     CycleRecord record{"G" + std::to_string(cycle / 10), b.line, state_.planePoint(), path_.moves.size(),
@@ -202,8 +199,7 @@ class ProgramRunner {
     const PlaneAxes axes = state_.axes();
     for (char axis : {axes.first, axes.second}) {
       if (known_.known(axis)) continue;
-      const std::string& code = known_.whyUnknown(axis).command;
-      if (code != "G28" && code != "G30") return false;
+      if (!known_.whyUnknown(axis).viaIntermediatePoint) return false;
     }
     return true;
   }
@@ -265,17 +261,26 @@ class ProgramRunner {
   void returnToReferencePosition(const Block& b) {
     const std::string code = b.hasG(280) ? "G28" : "G30";
     if (started_ && planePositionKnown() && !hasIncrementalWordOnUnknownAxis(b)) executeMotion(b, 0);
-    forgetCommandedAxes(b, code);
-  }
-
-  void forgetCommandedAxes(const Block& b, const std::string& code) {
-    for (const char axis : {'X', 'Y', 'Z'}) {
-      if (b.has(axis) || b.has(incrementalAddress(axis))) known_.forget(axis, {b.line, code});
-    }
+    forgetCommandedAxes(b, {b.line, code, true});
     if (started_) {
       path_.warnings.push_back({b.line, code + ": the tool goes to a position whose work coordinates cyclecert does "
-                                               "not model; the toolpath does not show that move, and draws the positioning that follows from "
-                                               "the intermediate point"});
+                                               "not model; the toolpath does not show that move, and draws the "
+                                               "positioning that follows from the intermediate point"});
+    }
+  }
+
+  // G53: a move in machine coordinates, whose work coordinates cyclecert does not know.
+  void moveInMachineCoordinates(const Block& b) {
+    forgetCommandedAxes(b, {b.line, "G53", false});
+    if (started_) {
+      path_.warnings.push_back({b.line, "G53: the tool goes to a position whose work coordinates cyclecert does not "
+                                        "model; the toolpath does not show that move"});
+    }
+  }
+
+  void forgetCommandedAxes(const Block& b, const KnownPosition::Why& why) {
+    for (const char axis : {'X', 'Y', 'Z'}) {
+      if (b.has(axis) || b.has(incrementalAddress(axis))) known_.forget(axis, why);
     }
   }
 

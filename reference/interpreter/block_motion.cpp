@@ -50,17 +50,15 @@ AxisWordsMean axisWordsMeaning(const Block& b) {
   }
 }
 
+bool axisWordsMoveTheTool(AxisWordsMean meaning) {
+  return meaning == AxisWordsMean::Motion || meaning == AxisWordsMean::ReferenceCheck ||
+         meaning == AxisWordsMean::ReferenceReturn;
+}
+
 AxisPosition positionAfterBlock(const Block& b, const ModalState& s) {
-  switch (axisWordsMeaning(b)) {
-    case AxisWordsMean::Motion:
-    case AxisWordsMean::ReferenceCheck:
-    case AxisWordsMean::ReferenceReturn:
-    case AxisWordsMean::CoordinateSetting: return targetPosition(b, s);
-    case AxisWordsMean::Dwell:
-    case AxisWordsMean::MachineCoordinates:
-    case AxisWordsMean::Data: break;
-  }
-  return s.position;
+  const AxisWordsMean meaning = axisWordsMeaning(b);
+  if (axisWordsMoveTheTool(meaning) || meaning == AxisWordsMean::CoordinateSetting) return targetPosition(b, s);
+  return s.position;  // a dwell, G53's machine coordinates, G10/G65 data
 }
 
 std::optional<Segment> motionSegment(const Block& b, int motion, const ModalState& s) {

@@ -23,6 +23,9 @@ AxisPosition targetPosition(const Block& b, const ModalState& s);
 // G53's machine coordinates, G50's coordinate setting, or G10/G65 data.
 enum class AxisWordsMean { Motion, Dwell, ReferenceReturn, ReferenceCheck, MachineCoordinates, CoordinateSetting, Data };
 AxisWordsMean axisWordsMeaning(const Block& b);
+// The meanings by which the tool moves: a move, G27's positioning, G28/G30's way through the
+// intermediate point.
+bool axisWordsMoveTheTool(AxisWordsMean meaning);
 
 // Where the block leaves the tool in work coordinates as far as the program tells: the target of a
 // move or of G27's positioning, G28/G30's intermediate point (the reference position beyond it

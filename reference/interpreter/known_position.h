@@ -13,6 +13,7 @@ class KnownPosition {
   struct Why {
     int line = 0;          // the block that lost the position, 0 at the start of the program
     std::string command;   // "G28", "G53", … (empty at the start)
+    bool viaIntermediatePoint = false;  // G28/G30: the tool left from the intermediate point
   };
 
   bool known(char axis) const { return !slot(axis).unknown; }
