@@ -16,15 +16,6 @@ Toolpath plan(const std::string& program) { return planFanucProgram(program, "po
 // A = (x 20, z 2) once positioned; U+ allowance: a start anywhere below x 20 is PS0322.
 const char* const kCycle = kSmallG71Cycle;
 
-std::string notSupportedMessage(const std::string& program) {
-  try {
-    plan(program);
-  } catch (const NotSupported& e) {
-    return e.what();
-  }
-  return "(no NotSupported)";
-}
-
 TEST(ProgramPosition, WorkCoordinateSystemAndMotionInOneBlockMove) {
   for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59"}) {
     const Toolpath t = plan(std::string(g) + " G00 X40. Z2.;\n" + kCycle);
