@@ -131,8 +131,7 @@ class SpecReader {
         i = readCycle(i, g71 ? "G71" : "G72");
         continue;
       } else if (!g70 && hasAxisWord(b)) {
-        if (axisWordsMoveTheTool(axisWordsMeaning(b)) && !out_.cycles.empty()) out_.motionAfterCycles = true;
-        state_.position = positionAfterBlock(b, state_);
+        readMotionOutsideCycles(b);
       }
       ++i;
     }
@@ -140,6 +139,21 @@ class SpecReader {
   }
 
  private:
+  // PROG.WHOLE: a block that moves the tool from a known position outside the cycles is a move of
+  // the toolpath, before or after them.
+  void readMotionOutsideCycles(const Block& b) {
+    const AxisWordsMean meaning = axisWordsMeaning(b);
+    if (axisWordsMoveTheTool(meaning)) {
+      if (!out_.cycles.empty()) {
+        out_.motionAfterCycles = true;
+      } else if (known_.known(state_.axes().first) && known_.known(state_.axes().second)) {
+        out_.motionBeforeCycles = true;
+      }
+    }
+    followKnownAxes(known_, b, meaning);
+    state_.position = positionAfterBlock(b, state_);
+  }
+
   // G70.EX: the F words of the finishing shape apply in G70.
   void readFinishingFeeds(const Block& b) {
     out_.hasFinishingCycle = true;
@@ -378,6 +392,7 @@ class SpecReader {
   const ToolOffset& tool_;
   bool mdi_;  // the program runs in MDI mode: its cycles alarm (G72.MDI) and are judged so
   ModalState state_;
+  KnownPosition known_;  // PROG.POSITION: the axes whose work coordinates the program has given
   ProgramSpec out_;
   std::optional<Alarm> firstBlockAlarm_;  // a first cycle block outside the range table
 

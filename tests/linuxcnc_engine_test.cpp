@@ -41,6 +41,16 @@ std::string notApplicable(const SpecCase& c) {
   return t.notApplicable;
 }
 
+// PROG.WHOLE: the reference draws the approach from the first positioning on; the translation starts
+// at A, so a program that moves from a known position before its cycle is not applicable, while
+// one whose only positioning is the move to A (in one block or two) still translates.
+TEST(LinuxCncTranslate, MotionBeforeTheCycleIsNotApplicable) {
+  EXPECT_NE(notApplicable(makeCase("approach", std::string("G00 X100 Z100;\n") + kStepped)).find("motion before the cycle"),
+            std::string::npos);
+  EXPECT_FALSE(translated(makeCase("x-then-z", std::string("G00 X36;\nZ2;\n") + (kStepped + 12))).empty());
+  EXPECT_FALSE(translated(makeCase("after-g28", std::string("G28 U0 W0;\n") + kStepped)).empty());
+}
+
 std::string buildDir() {
   if (const char* dir = std::getenv("CYCLECERT_BUILD_DIR")) return dir;
   return std::filesystem::path(CYCLECERT_CLI).parent_path().string();

@@ -45,6 +45,33 @@ TEST(ProgramPosition, DrillingCyclesAreNotSupportedNotUnknownCodes) {
   }
 }
 
+// PROG.WHOLE: the path starts at the first known position; every later move is drawn.
+TEST(ProgramPosition, TheApproachBeforeTheFirstCycleIsDrawn) {
+  const Toolpath t = plan("G00 X100. Z100.;\nG00 X40. Z2.;\n" + std::string(kCycle));
+  ASSERT_FALSE(t.alarm) << t.alarm->code << " " << t.alarm->message;
+  EXPECT_TRUE(nearlyEqual(t.start, {100, 50}));
+  ASSERT_FALSE(t.moves.empty());
+  EXPECT_EQ(t.moves.front().phase, "program");
+  EXPECT_TRUE(nearlyEqual(t.moves.front().to, {2, 20}));
+  ASSERT_EQ(t.cycles.size(), 1u);
+  EXPECT_EQ(t.cycles.front().firstMove, 1u);
+}
+
+TEST(ProgramPosition, AProgramWithoutCyclesPlansItsMoves) {
+  const Toolpath t = plan("G00 X100. Z100.;\nG00 X40. Z2.;\nG01 Z-20. F0.2;\nG00 X100. Z100.;\nM30;\n");
+  ASSERT_FALSE(t.alarm);
+  EXPECT_TRUE(t.cycles.empty());
+  ASSERT_EQ(t.moves.size(), 3u);
+  EXPECT_EQ(t.moves[1].kind, MoveKind::Feed);
+  EXPECT_TRUE(nearlyEqual(t.moves[1].to, {-20, 20}));
+}
+
+TEST(ProgramPosition, OnePlanePerToolpath) {
+  // Before any move is drawn the path follows the plane; after, a move in another plane is refused.
+  EXPECT_FALSE(plan("G00 X40. Z2.;\nG18;\n" + std::string(kCycle)).alarm);
+  EXPECT_THROW(plan("G00 X100. Z100.;\nG00 X40. Z2.;\nG17 G00 X30. Y5.;\nM30;\n"), NotSupported);
+}
+
 TEST(ProgramPosition, G50SetsThePositionWithoutMotion) {
   const Toolpath t = plan("G50 X40. Z2.;\n" + std::string(kCycle));
   ASSERT_FALSE(t.alarm) << t.alarm->message;

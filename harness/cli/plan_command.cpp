@@ -16,7 +16,8 @@ namespace {
 const char* kPlanHelp = R"HELP(Usage: cyclecert plan PROGRAM.nc [options]
        cyclecert plan --case CASE.json [options]
 
-Plans every G71/G72 cycle of the program with the reference engine (type I; FANUC 0i-F or GSK).
+Plans the program with the reference engine: every move from the first positioning on (phase
+"program") and every G70/G71/G72 cycle (`cyclecert profiles` lists the dialects).
 
 Options:
   --profile P          controller profile (default: the program's "(profile: P)" header comment,

@@ -62,7 +62,12 @@ class ProgramRunner {
       if (m->value == 98) path_.warnings.push_back({b.line, "subprogram calls are not followed by the reference"});
     }
     if (meaning == AxisWordsMean::Data) warnNotApplied(b);
-    if (!hasAxisWord(b)) return i + 1;
+    if (hasAxisWord(b)) executeAxisWords(b, meaning);
+    startPathOnceThePositionIsKnown();
+    return i + 1;
+  }
+
+  void executeAxisWords(const Block& b, AxisWordsMean meaning) {
     switch (meaning) {
       case AxisWordsMean::Motion: warnAssumedUnits(b); executeMotion(b, state_.motion); break;
       case AxisWordsMean::Dwell: break;  // G04 X/U: the dwell time
@@ -72,7 +77,32 @@ class ProgramRunner {
       case AxisWordsMean::CoordinateSetting: setCoordinateSystem(b); break;
       case AxisWordsMean::Data: break;  // G10's values, G65's arguments
     }
-    return i + 1;
+    followKnownAxes(known_, b, meaning);
+  }
+
+  // PROG.WHOLE: the toolpath starts where the program first knows the tool's position in its plane
+  // (after its first absolute positioning in both axes, or G50 X Z); from there every move of the
+  // program is drawn (phase "program"), before, between and after the cycles. Moves before that
+  // point start from a position the program does not give: they are not drawn.
+  // Until a move is drawn, the start follows the tool (and its plane).
+  void startPathOnceThePositionIsKnown() {
+    if (!nothingDrawn()) return;
+    started_ = false;
+    if (planePositionKnown()) startPath();
+  }
+
+  bool nothingDrawn() const { return path_.moves.empty() && path_.cycles.empty(); }
+
+  // One plane per toolpath: a move or cycle in another plane once moves are drawn is not modelled.
+  // Before any move is drawn, the path starts afresh in the new plane.
+  void keepThePathInOnePlane(const Block& b) {
+    if (!started_ || path_.plane == state_.axes().name()) return;
+    if (!nothingDrawn()) {
+      throw NotSupported(b.line, "a move in another plane than the toolpath's " + path_.plane +
+                                     ": cyclecert draws one plane per program (select the plane before the first "
+                                     "positioning)");
+    }
+    started_ = false;
   }
 
   // PROG.RANGE, PROG.ADDRESS: the words as the controller reads them. A cycle block's own
@@ -147,6 +177,7 @@ class ProgramRunner {
                                             " is active but the tool's nose radius is 0: the shape is not offset "
                                             "(give the tool offset: --nose-radius and --tip, or the case's \"tool\")"});
     }
+    keepThePathInOnePlane(b);
     if (!started_) startPath();
     CycleOutcome out = cycle == 700 ? planG70(call) : cycle == 710 ? planG71(call) : planG72(call);
     if (path_.moves.size() + out.moves.size() > kMostMovesPerToolpath) {  // PROG.CAP.MOVES
@@ -227,15 +258,10 @@ class ProgramRunner {
 
   static char incrementalAddress(char axis) { return axis == 'X' ? 'U' : axis == 'Y' ? 'V' : 'W'; }
 
-  void learnAbsoluteAxes(const Block& b) {
-    for (const char axis : {'X', 'Y', 'Z'}) {
-      if (b.has(axis)) known_.learn(axis);
-    }
-  }
-
-  // A positioning or cutting block outside the cycles (PROG.MODAL.MOTION: with any other modal
+  // A positioning or cutting block outside the cycles (PROG.WHOLE, PROG.GCODES: with any other modal
   // codes in the block, G54–G59 and G80 included): once the path has started, it is a move.
   void executeMotion(const Block& b, int motion) {
+    keepThePathInOnePlane(b);
     requireKnownForIncrementalWords(b);
     if (motion == 2 || motion == 3 || (started_ && !returningFromReferencePosition())) {
       requireKnownPlanePosition(b, "the move at this line starts from it");
@@ -253,7 +279,6 @@ class ProgramRunner {
       }
     }
     state_.position = targetPosition(b, state_);
-    learnAbsoluteAxes(b);
   }
 
   // G28/G30: by rapid through the intermediate point (the block's words) to a reference position,
@@ -261,7 +286,6 @@ class ProgramRunner {
   void returnToReferencePosition(const Block& b) {
     const std::string code = b.hasG(280) ? "G28" : "G30";
     if (started_ && planePositionKnown() && !hasIncrementalWordOnUnknownAxis(b)) executeMotion(b, 0);
-    forgetCommandedAxes(b, {b.line, code, true});
     if (started_) {
       path_.warnings.push_back({b.line, code + ": the tool goes to a position whose work coordinates cyclecert does "
                                                "not model; the toolpath does not show that move, and draws the "
@@ -271,23 +295,15 @@ class ProgramRunner {
 
   // G53: a move in machine coordinates, whose work coordinates cyclecert does not know.
   void moveInMachineCoordinates(const Block& b) {
-    forgetCommandedAxes(b, {b.line, "G53", false});
     if (started_) {
       path_.warnings.push_back({b.line, "G53: the tool goes to a position whose work coordinates cyclecert does not "
                                         "model; the toolpath does not show that move"});
     }
   }
 
-  void forgetCommandedAxes(const Block& b, const KnownPosition::Why& why) {
-    for (const char axis : {'X', 'Y', 'Z'}) {
-      if (b.has(axis) || b.has(incrementalAddress(axis))) known_.forget(axis, why);
-    }
-  }
-
   // G50 X Z: the current position takes the block's coordinates, without motion; U W shift them.
   void setCoordinateSystem(const Block& b) {
     state_.position = targetPosition(b, state_);
-    learnAbsoluteAxes(b);
   }
 
   void warnNotApplied(const Block& b) {

@@ -61,6 +61,23 @@ AxisPosition positionAfterBlock(const Block& b, const ModalState& s) {
   return s.position;  // a dwell, G53's machine coordinates, G10/G65 data
 }
 
+void followKnownAxes(KnownPosition& known, const Block& b, AxisWordsMean meaning) {
+  static constexpr char kAxes[] = {'X', 'Y', 'Z'};
+  static constexpr char kIncrements[] = {'U', 'V', 'W'};
+  const bool toReference = meaning == AxisWordsMean::ReferenceReturn;
+  if (toReference || meaning == AxisWordsMean::MachineCoordinates) {
+    const std::string command = !toReference ? "G53" : b.hasG(300) ? "G30" : "G28";
+    for (int i = 0; i < 3; ++i) {
+      if (b.has(kAxes[i]) || b.has(kIncrements[i])) known.forget(kAxes[i], {b.line, command, toReference});
+    }
+    return;
+  }
+  if (!axisWordsMoveTheTool(meaning) && meaning != AxisWordsMean::CoordinateSetting) return;
+  for (const char axis : kAxes) {
+    if (b.has(axis)) known.learn(axis);
+  }
+}
+
 std::optional<Segment> motionSegment(const Block& b, int motion, const ModalState& s) {
   const PlaneAxes axes = s.axes();
   const AxisPosition target = targetPosition(b, s);

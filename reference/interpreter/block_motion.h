@@ -3,6 +3,7 @@
 // and, for G02/G03, the arc centre from R or I/J/K.
 #include <optional>
 
+#include "reference/interpreter/known_position.h"
 #include "reference/interpreter/modal_state.h"
 #include "reference/model/program.h"
 
@@ -32,6 +33,12 @@ bool axisWordsMoveTheTool(AxisWordsMean meaning);
 // is not modelled), the coordinates G50 sets; unchanged by a dwell, G53 or data. The program
 // runner and the oracles' reading of a program both follow a block with this.
 AxisPosition positionAfterBlock(const Block& b, const ModalState& s);
+
+// PROG.POSITION: which axes' work coordinates are known after the block: an absolute word of a
+// move, of G27's positioning or of G50's coordinate setting makes its axis known; G28/G30 (to a
+// reference position, through the intermediate point) and G53 (machine coordinates) make the
+// commanded axes unknown. The program runner and the oracles' reading of a program both use it.
+void followKnownAxes(KnownPosition& known, const Block& b, AxisWordsMean meaning);
 
 // A motion block as a plane segment from the current position; nothing when the block does not
 // move in the plane. Throws CycleAlarm PS0023/PS0020 for an impossible arc.

@@ -172,6 +172,9 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
   const CycleSpec& cy = spec.cycles.front();
   if (auto why = untranslatableAlarm(cy)) return notApplicable(*why);
   if (spec.motionAfterCycles) return notApplicable("motion after the cycle is not translated");
+  if (spec.motionBeforeCycles) {
+    return notApplicable("motion before the cycle is not translated (the translation starts at the cycle start point)");
+  }
 
   const std::vector<Segment> rough = cy.roughProfile();
   const Point a = cy.start;
