@@ -164,7 +164,9 @@ TEST(FuzzGenerator, AFormatDrawChangesOnlyWhatTheFormatWrites) {
     EXPECT_EQ(a.depthOfCut, b.depthOfCut) << i;
     EXPECT_EQ(a.retract, b.retract) << i;
     EXPECT_EQ(a.startAlong, b.startAlong) << i;
-    if (b.format == CycleFormat::FanucTwoBlocks) EXPECT_EQ(fuzzProgram(a), fuzzProgram(b)) << i;
+    if (b.format == CycleFormat::FanucTwoBlocks) {
+      EXPECT_EQ(fuzzProgram(a), fuzzProgram(b)) << i;
+    }
     if (b.format == CycleFormat::Series10OneBlock) {
       EXPECT_EQ(b.profile, a.profile == "gsk" ? "fanuc-0i-f" : a.profile) << i;
       EXPECT_EQ(b.typeII, a.typeII) << i;

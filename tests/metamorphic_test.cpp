@@ -387,13 +387,22 @@ TEST(MetamorphicRelations, OneBlockFormatsCatchAnEngineThatMisreadsThem) {
   {
     const Relation& r = relation("fs10-one-block");
     std::string whyNot;
-    auto f = r.transform(parseProgram(kSeed003.text, "s3"), {}, whyNot);
+    // 5132 = 1 mm set: the source's first block (Δd 1.5) overrides it, and so must D1500.
+    const ParamSettings depth1 = {{"5132", 1}};
+    auto f = r.transform(parseProgram(kSeed003.text, "s3"), depth1, whyNot);
     ASSERT_TRUE(f) << whyNot;
     for (Block& b : f->program.blocks) std::erase_if(b.words, [](const Word& w) { return w.letter == 'D'; });
     const Toolpath ignoringD = plan(writeProgram(f->program), kSeed003.profile, f->params);
-    const auto d = checkRelation(r, *f, source, ignoringD, kTol);
+    const auto d = checkRelation(r, *f, plan(kSeed003.text, kSeed003.profile, depth1), ignoringD, kTol);
     ASSERT_TRUE(d) << writeProgram(f->program);
     EXPECT_NE(d->find("move"), std::string::npos) << *d;
+    // Without 5132 the engine that ignores D has no Δd at all: PS0062 where the source cut.
+    auto g = r.transform(parseProgram(kSeed003.text, "s3"), {}, whyNot);
+    ASSERT_TRUE(g) << whyNot;
+    for (Block& b : g->program.blocks) std::erase_if(b.words, [](const Word& w) { return w.letter == 'D'; });
+    const auto alarm = checkRelation(r, *g, source, plan(writeProgram(g->program), kSeed003.profile, g->params), kTol);
+    ASSERT_TRUE(alarm);
+    EXPECT_NE(alarm->find("PS0062"), std::string::npos) << *alarm;
   }
   const Relation& r = relation("hnc-one-block");
   std::string whyNot;

@@ -25,8 +25,8 @@ const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--case
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
-RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk; with --formats also the one-block formats) and runs each through engine E and every oracle and,
-with --vs, compares E's result with engine B's. The first failure of each kind (an oracle,
+RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk; with --formats the one-block formats too) and runs
+each through engine E and every oracle and, with --vs, compares E's result with engine B's. The first failure of each kind (an oracle,
 "diverges", "engine-failure") is shrunk to a minimal case, printed with the seed that regenerates
 it, and written as a spec case to the regressions directory, which `check` runs from then on.
 

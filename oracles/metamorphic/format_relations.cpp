@@ -14,16 +14,20 @@ namespace {
 
 std::string lineOf(const Program& p, std::size_t block) { return "line " + std::to_string(p.blocks[block].line) + ": "; }
 
-// Δd and e as the first blocks read so far set them (G71.DD.MODAL, G71.E.MODAL).
+// Δd and e as the first blocks read so far set them (G71.DD.MODAL, G71.E.MODAL): the words as
+// written.
 struct FirstBlockValues {
+  std::optional<Word> depthOfCutWord, retractWord;
   std::optional<double> depthOfCut, retract;
 
   void read(const Block& b, const BlockInfo& info) {
     for (const Word& w : b.words) {
       const WordRole role = roleOf(info, w);
-      if (role == WordRole::DepthOfCut) depthOfCut = w.value;
-      if (role == WordRole::Retract) retract = w.value;
+      if (role == WordRole::DepthOfCut) depthOfCutWord = w;
+      if (role == WordRole::Retract) retractWord = w;
     }
+    if (depthOfCutWord) depthOfCut = depthOfCutWord->value;
+    if (retractWord) retract = retractWord->value;
   }
 };
 
@@ -161,8 +165,8 @@ std::optional<FollowUp> toHuazhong(const Program& p, const ParamSettings& params
   }
   const auto afterCode = std::find_if(g71.words.begin(), g71.words.end(), [](const Word& w) { return w.letter == 'G'; });
   std::vector<Word> depthWords;
-  if (inForce.depthOfCut) depthWords.push_back(makeWord('U', *inForce.depthOfCut, true));
-  if (inForce.retract) depthWords.push_back(makeWord('R', *inForce.retract, true));
+  if (inForce.depthOfCutWord) depthWords.push_back(*inForce.depthOfCutWord);  // G71's U: the letter stays
+  if (inForce.retractWord) depthWords.push_back(*inForce.retractWord);
   g71.words.insert(afterCode == g71.words.end() ? g71.words.begin() : afterCode + 1, depthWords.begin(), depthWords.end());
   // The G70 goes (its S, T, M stay as a plain block): the finishing is the run of ns…nf.
   if (dropFinishWords(out.blocks[*g70], lathe->blocks[*g70])) emptied.push_back(*g70);

@@ -104,7 +104,7 @@ Toolpath samePath(const Toolpath& t) { return t; }
 
 std::optional<FollowUp> followUp(Program program, ParamSettings params,
                                  std::function<Toolpath(const Toolpath&)> expected) {
-  return FollowUp{std::move(program), std::move(params), std::move(expected)};
+  return FollowUp{std::move(program), std::move(params), std::move(expected), ""};
 }
 
 // ---- the relations ------------------------------------------------------------------------------
