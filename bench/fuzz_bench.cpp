@@ -41,6 +41,18 @@ void BM_FuzzGenerate(benchmark::State& state) {
 }
 BENCHMARK(BM_FuzzGenerate)->Unit(benchmark::kMicrosecond);
 
+// The same with every cycle format drawn (`fuzz --formats all`): the format is one more draw.
+void BM_FuzzGenerateAllFormats(benchmark::State& state) {
+  const CycleFormats formats = parseCycleFormats("all");
+  long i = 0;
+  for (auto _ : state) {
+    const std::uint64_t seed = fuzzCaseSeed(kSeed, i++);
+    benchmark::DoNotOptimize(fuzzSpecCase(generateFuzzCase(seed, formats), "bench"));
+  }
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzGenerateAllFormats)->Unit(benchmark::kMicrosecond);
+
 void BM_FuzzReferencePlanOnly(benchmark::State& state) {
   const auto engine = makeEngine("reference");
   const auto& cases = sampleCases();

@@ -201,6 +201,33 @@ TEST_F(LinuxCnc, WhatLinuxCncCannotExpressIsNotApplicable) {
   EXPECT_TRUE(translateForLinuxCnc(makeCase("ok", kStepped, "fanuc-0i-f", {{"5133", 0.3}, {"DTP", 1}, {"RF1", 0}})).program);
 }
 
+// G71.FS10.*: the Series 10/11 one block (FCV = 1) says what the two blocks say — Δd by D in least
+// input increments (D2000 = 2 mm), e by parameter 5133 — so it translates into the same LinuxCNC
+// cycle as kStepped's `G71 U2 R1; G71 P10 Q50 U0.4 W0.1 F0.2`.
+TEST_F(LinuxCnc, TranslatesTheSeries10OneBlockLikeTheTwoBlocks) {
+  const std::string oneBlock = "G00 X36 Z2;\nG71 P10 Q50 U0.4 W0.1 D2000 F0.2;\nN10 G01 X22;\nN20 Z-15;\n"
+                               "N30 X30 Z-25;\nN40 Z-35;\nN50 X35;\n";
+  const std::string text = translated(makeCase("stepped", oneBlock, "fanuc-0i-f", {{"FCV", 1}, {"5133", 1}}));
+  EXPECT_EQ(text, translated(makeCase("stepped", kStepped)));
+  EXPECT_NE(text.find("\nG71.1 Q100 X36.4 Z2.1 D0 I2 R1 F0.2\n"), std::string::npos) << text;
+  // G72 too: D1500 is Δd 1.5 mm along Z.
+  const std::string face = translated(makeCase(
+      "face", "G00 X60 Z2;\nG72 P10 Q30 U0.2 W0.1 D1500 F100;\nN10 G00 Z-10;\nN20 G01 X40;\nN30 G03 X20 Z0 R10;\n",
+      "fanuc-0i-f", {{"FCV", 1}, {"5133", 0.5}, {"DTP", 1}}));
+  EXPECT_NE(face.find("\nG72.1 Q100 X60.2 Z2.1 D0 I1.5 R0.5 F100\n"), std::string::npos) << face;
+  // With FCV = 0 the D is FANUC's PS0009 before the shape is read: nothing to translate.
+  EXPECT_NE(notApplicable(makeCase("fcv0", oneBlock)).find("PS0009"), std::string::npos);
+}
+
+TEST_F(LinuxCnc, TheHuazhongOneBlockIsNotApplicable) {
+  const std::string why = notApplicable(makeCase(
+      "hnc", "G00 X36 Z2;\nG71 U2 R1 P10 Q50 X0.4 Z0.1 F0.2;\nN10 G01 X22;\nN20 Z-15;\nN30 X30 Z-25;\nN40 Z-35;\n"
+             "N50 X35;\n",
+      "hnc"));
+  EXPECT_NE(why.find("Huazhong"), std::string::npos) << why;
+  EXPECT_NE(why.find("HNC.G71.FST"), std::string::npos) << why;
+}
+
 // ---- Reading rs274's canonical output ------------------------------------------------------------
 
 TEST_F(LinuxCnc, ParsesCanonicalMovesArcsAndMarkers) {

@@ -21,12 +21,12 @@ namespace {
 
 const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
                       [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
-                      [--timeout S]
+                      [--timeout S] [--formats LIST]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
-RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk) and runs each through engine E and every oracle and,
-with --vs, compares E's result with engine B's. The first failure of each kind (an oracle,
+RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk; with --formats the one-block formats too) and runs
+each through engine E and every oracle and, with --vs, compares E's result with engine B's. The first failure of each kind (an oracle,
 "diverges", "engine-failure") is shrunk to a minimal case, printed with the seed that regenerates
 it, and written as a spec case to the regressions directory, which `check` runs from then on.
 
@@ -56,6 +56,11 @@ Options:
                       campaign (another --engine, --vs, engine version, --seed, --shard or spec suite)
   --mix-campaigns     with --resume: continue even so (the report then mixes the two)
   --timeout S         per-case timeout for engines in another process (default 10)
+  --formats LIST      the cycle formats drawn, comma-separated (default two-block, which keeps the
+                      cases of a seed as they were): two-block (G71 U R; G71 P Q U W F), fs10 (the
+                      Series 10/11 one block G71 P Q U W D F, --param FCV=1 and 5133 = e; FANUC
+                      profiles), hnc (Huazhong G71 U R P Q X Z F, profile hnc, G71 type I, its
+                      finishing run of ns…nf after the cycle), or all
 Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,
 another campaign in OUT, or a result not written.
 )HELP";
@@ -128,7 +133,15 @@ static int commandFuzz(const std::vector<std::string>& args) {
         [&](const std::string& v) { options.maxFailures = static_cast<long>(numberArg("--max-failures", v, 1, 1e12)); }},
        {"--resume", [&] { options.resume = true; }},
        {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
-       {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
+       {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }},
+       {"--formats",
+        [&](const std::string& v) {
+          try {
+            options.formats = parseCycleFormats(v);
+          } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--formats: ") + e.what());
+          }
+        }}},
       "fuzz");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");

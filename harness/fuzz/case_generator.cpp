@@ -4,8 +4,59 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 namespace cyclecert {
+
+namespace {
+
+struct NamedFormat {
+  CycleFormat format;
+  std::string_view name;
+};
+constexpr NamedFormat kFormatNames[] = {{CycleFormat::FanucTwoBlocks, "two-block"},
+                                        {CycleFormat::Series10OneBlock, "fs10"},
+                                        {CycleFormat::HuazhongOneBlock, "hnc"}};
+
+std::string knownFormatNames() {
+  std::string names;
+  for (const NamedFormat& f : kFormatNames) names += std::string(names.empty() ? "" : ", ") + std::string(f.name);
+  return names + " or all";
+}
+
+}  // namespace
+
+std::string_view cycleFormatName(CycleFormat f) {
+  for (const NamedFormat& n : kFormatNames) {
+    if (n.format == f) return n.name;
+  }
+  return "?";
+}
+
+CycleFormats parseCycleFormats(std::string_view text) {
+  if (text == "all") return {CycleFormat::FanucTwoBlocks, CycleFormat::Series10OneBlock, CycleFormat::HuazhongOneBlock};
+  CycleFormats formats;
+  std::size_t from = 0;
+  while (from <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    const std::string_view word = text.substr(from, comma - from);
+    const auto* named = std::find_if(std::begin(kFormatNames), std::end(kFormatNames),
+                                     [&](const NamedFormat& f) { return f.name == word; });
+    if (named == std::end(kFormatNames)) {
+      throw std::invalid_argument("unknown cycle format '" + std::string(word) + "' in '" + std::string(text) +
+                                  "': give a comma-separated list of " + knownFormatNames());
+    }
+    if (std::find(formats.begin(), formats.end(), named->format) == formats.end()) formats.push_back(named->format);
+    from = comma + 1;
+  }
+  return formats;
+}
+
+std::string cycleFormatsText(const CycleFormats& formats) {
+  std::string text;
+  for (CycleFormat f : formats) text += std::string(text.empty() ? "" : ",") + std::string(cycleFormatName(f));
+  return text;
+}
 
 namespace {
 
@@ -89,6 +140,7 @@ struct Draws {
   // 6 more choices 0…9, drawn after the rest (so that adding them left the other draws as they
   // were): an F in the shape and where, compensation, its nose radius and tip, 5134.
   std::vector<int> later;
+  CycleFormat format = CycleFormat::FanucTwoBlocks;  // drawn last, and only when the run asks for several
 };
 
 void chooseCycle(FuzzCase& c, const std::vector<int>& choice) {
@@ -99,6 +151,19 @@ void chooseCycle(FuzzCase& c, const std::vector<int>& choice) {
   c.typeII = choice[4] % 3 == 1;
   c.headMotion = choice[5] == 9 ? 2 : choice[5] % 2;  // G02 (out of range: PS0065) one time in ten
   c.finish = choice[15] % 3 == 0;
+}
+
+// What the format can write: the Series 10/11 format is FANUC's (a GSK draw becomes 0i-F's); the
+// Huazhong one is profile hnc's, and seed 003 gives G71 without pockets only, and no G70 (its
+// finishing is the run of ns…nf after the cycle, HNC.G71.FST).
+void fitToFormat(FuzzCase& c, CycleFormat format) {
+  c.format = format;
+  if (format == CycleFormat::Series10OneBlock && c.profile == "gsk") c.profile = "fanuc-0i-f";
+  if (format != CycleFormat::HuazhongOneBlock) return;
+  c.profile = "hnc";
+  c.cycle = 71;
+  c.typeII = false;
+  c.finish = false;
 }
 
 // Type II: some lines go down (pockets). A step (no length along the cut axis) never does: down
@@ -215,6 +280,7 @@ FuzzCase caseFrom(Draws d) {
   d.later.resize(6, 0);
   FuzzCase c;
   chooseCycle(c, d.choice);
+  fitToFormat(c, d.format);
   drawCycleParameters(c, d);
   drawShape(c, d);
   placeStart(c, d);
@@ -227,12 +293,15 @@ FuzzCase caseFrom(Draws d) {
 
 }  // namespace
 
-rc::Gen<FuzzCase> genFuzzCase() {
+rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats) {
+  if (formats.empty()) throw std::invalid_argument("genFuzzCase: no cycle format to draw from");
+  // One format: nothing drawn (the draws before it are RapidCheck's splits in order, unchanged).
+  rc::Gen<CycleFormat> format = formats.size() == 1 ? rc::gen::just(formats.front()) : rc::gen::elementOf(formats);
   return rc::gen::apply(
       [](std::vector<int> choice, std::vector<FuzzSegment> segments, std::vector<int> downs, int dd, int e, int du,
-         int dw, int above, int along, int b, std::vector<int> later) {
-        return caseFrom(
-            {std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b, std::move(later)});
+         int dw, int above, int along, int b, std::vector<int> later, CycleFormat format) {
+        return caseFrom({std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b,
+                         std::move(later), format});
       },
       rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
       // Segments: 8 at most are kept (drawShape), after one of the first 10 may be split in two.
@@ -245,7 +314,8 @@ rc::Gen<FuzzCase> genFuzzCase() {
       rc::gen::inRange(1, 500),    // A above C
       rc::gen::inRange(0, 400),    // A's cut coordinate
       rc::gen::inRange(0, 3000),   // B's depth coordinate
-      rc::gen::container<std::vector<int>>(6, rc::gen::inRange(0, 10)));  // Draws::later
+      rc::gen::container<std::vector<int>>(6, rc::gen::inRange(0, 10)),  // Draws::later
+      std::move(format));
 }
 
 // Frame directions as the machine sees them: G71 keeps the axes (each may be mirrored), G72
@@ -296,14 +366,31 @@ struct Placement {
     const bool ccw = (k == FuzzSegment::ConvexArc) == (reversals % 2 == 0);
     return ccw ? "G03" : "G02";
   }
-  // Allowances along the frame's axes as the cycle's U (diameter) and W words.
+  // Allowances along the frame's axes as the cycle's words: U (diameter) and W, or X and Z in the
+  // Huazhong block (HNC.G71.FMT: X = Δx on the diameter, Z = Δz).
   std::string allowanceWords() const {
     const long depth = c.mirrorDepth ? -c.allowanceDepth : c.allowanceDepth;
     const long cut = c.mirrorCut ? -c.allowanceCut : c.allowanceCut;
     const long x = c.cycle == 71 ? depth : cut, z = c.cycle == 71 ? cut : depth;
-    return "U" + mm(2 * x) + " W" + mm(z);
+    const bool huazhong = c.format == CycleFormat::HuazhongOneBlock;
+    return (huazhong ? "X" : "U") + mm(2 * x) + (huazhong ? " Z" : " W") + mm(z);
   }
 };
+
+// The cycle's block(s) in the case's format, each ending with ";\n".
+std::string cycleBlocks(const FuzzCase& c, const Placement& place) {
+  const std::string g = c.cycle == 71 ? "G71" : "G72";
+  switch (c.format) {
+    case CycleFormat::Series10OneBlock:  // G71.FS10.D: D in least input increments (0.001 mm)
+      return g + " P10 Q20 " + place.allowanceWords() + " D" + std::to_string(10 * c.depthOfCut) + " F0.2;\n";
+    case CycleFormat::HuazhongOneBlock:
+      return g + " U" + mm(c.depthOfCut) + " R" + mm(c.retract) + " P10 Q20 " + place.allowanceWords() + " F0.2;\n";
+    case CycleFormat::FanucTwoBlocks:
+      break;
+  }
+  return g + (c.cycle == 71 ? " U" : " W") + mm(c.depthOfCut) + " R" + mm(c.retract) + ";\n" + g + " P10 Q20 " +
+         place.allowanceWords() + " F0.2;\n";
+}
 
 }  // namespace
 
@@ -337,9 +424,7 @@ std::string fuzzProgram(const FuzzCase& c) {
   // G71.TNRC.PLACE: compensation is commanded before the cycle, cancelled after it (and its G70).
   if (c.noseRadius > 0) p += "G" + std::to_string(compensationCode(c)) + ";\n";
   const std::string shapeFeed = " F" + mm(c.shapeFeed);
-  const std::string g = c.cycle == 71 ? "G71" : "G72";
-  p += g + (c.cycle == 71 ? " U" : " W") + mm(c.depthOfCut) + " R" + mm(c.retract) + ";\n";
-  p += g + " P10 Q20 " + place.allowanceWords() + " F0.2;\n";
+  p += cycleBlocks(c, place);
   // Block ns moves the depth axis only (type I), or both axes with a zero incremental word of the
   // cut axis (type II).
   const std::string bWords = place.words(startAlong, c.b);
@@ -372,10 +457,20 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
   if (c.nsp) params["NSP"] = 1;
   if (c.rf2) params["RF2"] = 1;
   if (c.clearance > 0) params["5134"] = c.clearance / 100.0;
+  // G71.FS10.FMT: the one block reads D with FCV = 1; e has no address there, 5133 gives it.
+  if (c.format == CycleFormat::Series10OneBlock) {
+    params["FCV"] = 1;
+    params["5133"] = c.retract / 100.0;
+  }
+  // The writer of a regression names the failing rules.
+  const char* rule = c.format == CycleFormat::Series10OneBlock   ? "G71.FS10.FMT"
+                     : c.format == CycleFormat::HuazhongOneBlock ? "HNC.G71.FMT"
+                     : c.cycle == 71                             ? "G71.QUAD"
+                                                                 : "G72.FMT";
   nlohmann::json j{
       {"id", c.profile + "/g" + std::to_string(c.cycle) + "/fuzz-" + tag},
       {"title", "fuzz case " + tag + ": " + describeFuzzCase(c)},
-      {"rules", {c.cycle == 71 ? "G71.QUAD" : "G72.FMT"}},  // the writer of a regression names the failing rules
+      {"rules", {rule}},
       {"profile", c.profile},
       {"params", params},
       {"program", fuzzProgram(c)},
@@ -389,6 +484,7 @@ std::string describeFuzzCase(const FuzzCase& c) {
   std::ostringstream s;
   s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
     << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;
+  if (c.format != CycleFormat::FanucTwoBlocks) s << ", " << cycleFormatName(c.format) << " one-block format";
   for (const auto& [set, name] : {std::pair{c.rf1, "RF1"}, {c.dtp, "DTP"}, {c.r16, "R16"}, {c.nsp, "NSP"}, {c.rf2, "RF2"}}) {
     if (set) s << ", " << name << "=1";
   }

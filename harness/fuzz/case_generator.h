@@ -18,10 +18,16 @@
 // honours; tool-nose radius compensation — G41/G42 before the cycle on the side the tool stands for
 // the quadrant, with a nose radius and the tip that points into the cut (or the nose centre), G40
 // after the cycles. Lengths are whole hundredths of a mm, so the program text is exact.
+//
+// The cycle block format is drawn from the formats the run asks for (CycleFormat; by default the
+// FANUC two-block format only, so that a seed gives the cases it always gave): the Series 10/11
+// one block with D (FANUC profiles, FCV = 1, e in parameter 5133) and the Huazhong one block
+// (profile hnc, G71 type I only, no G70: its ns…nf run again after the cycle as the finishing).
 // Combinations whose collisions the documents themselves cause are not drawn (see caseFrom() and
 // fuzzProgram()).
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -31,6 +37,23 @@
 
 namespace cyclecert {
 
+// How the roughing cycle is written (rules G71.FMT.ZX, G71.FS10.FMT, HNC.G71.FMT).
+enum class CycleFormat {
+  FanucTwoBlocks,    // `G71 U(Δd) R(e); G71 P Q U(Δu) W(Δw) F;` (G72 alike), every profile
+  Series10OneBlock,  // `G71 P Q U(Δu) W(Δw) D(Δd in 0.001 mm) F;` with FCV = 1 and 5133 = e, FANUC profiles
+  HuazhongOneBlock,  // `G71 U(Δd) R(e) P Q X(Δu) Z(Δw) F;` on profile hnc; ns…nf then run as finishing
+};
+using CycleFormats = std::vector<CycleFormat>;
+
+// "two-block", "fs10", "hnc": the names `cyclecert fuzz --formats` takes.
+std::string_view cycleFormatName(CycleFormat f);
+// A comma-separated list of those names, or "all". Throws std::invalid_argument naming the word
+// it did not know and the names it knows.
+CycleFormats parseCycleFormats(std::string_view text);
+// The names joined by commas, as --formats takes them.
+std::string cycleFormatsText(const CycleFormats& formats);
+inline const CycleFormats kDefaultCycleFormats = {CycleFormat::FanucTwoBlocks};
+
 struct FuzzSegment {
   enum Kind { Line, ConvexArc, ConcaveArc } kind = Line;
   int along = 0;  // hundredths along −z of the frame (≥ 0)
@@ -38,6 +61,7 @@ struct FuzzSegment {
 };
 
 struct FuzzCase {
+  CycleFormat format = CycleFormat::FanucTwoBlocks;
   std::string profile = "fanuc-0i-f";
   int cycle = 71;             // 71 or 72
   bool mirrorCut = false;     // the cut axis runs the other way (towards +Z for G71)
@@ -67,10 +91,11 @@ int compensationCode(const FuzzCase& c);
 // the part (−x of the frame) and along the cut (−z of the frame), as the machine's tip chart names it.
 int tipIntoTheCut(const FuzzCase& c);
 
-// The generator the fuzzer draws from.
-rc::Gen<FuzzCase> genFuzzCase();
+// The generator the fuzzer draws from: each case's format is one of `formats` (not empty). With
+// the default, no format is drawn and the cases are those drawn before formats were.
+rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats = kDefaultCycleFormats);
 
-// The case's program text (FANUC syntax, one block per line).
+// The case's program text (in its format, one block per line).
 std::string fuzzProgram(const FuzzCase& c);
 
 // The case as a spec case: id "<profile>/g7x/fuzz-<tag>", the program, profile, parameters, and

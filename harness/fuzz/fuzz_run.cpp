@@ -23,8 +23,16 @@ std::uint64_t fuzzCaseSeed(std::uint64_t runSeed, long index) {
 namespace {
 
 // RapidCheck's size (0…100) comes from the seed too, so a case seed alone regenerates the case.
-rc::Shrinkable<FuzzCase> shrinkTree(std::uint64_t caseSeed) {
-  return genFuzzCase()(rc::Random(caseSeed), static_cast<int>(caseSeed % 101));
+rc::Shrinkable<FuzzCase> shrinkTree(std::uint64_t caseSeed, const CycleFormats& formats) {
+  return genFuzzCase(formats)(rc::Random(caseSeed), static_cast<int>(caseSeed % 101));
+}
+
+// fuzzReproduceCommand's, with the run's --formats when they are not the default.
+std::string reproduceCommand(const std::string& engine, const std::string& vs, std::uint64_t caseSeed,
+                             const CycleFormats& formats) {
+  std::string command = fuzzReproduceCommand(engine, vs, caseSeed);
+  if (formats != kDefaultCycleFormats) command += " --formats " + cycleFormatsText(formats);
+  return command;
 }
 
 }  // namespace
@@ -35,7 +43,9 @@ std::string caseSeedTag(std::uint64_t caseSeed) {
   return s.str();
 }
 
-FuzzCase generateFuzzCase(std::uint64_t caseSeed) { return shrinkTree(caseSeed).value(); }
+FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats) {
+  return shrinkTree(caseSeed, formats).value();
+}
 
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance) {
   return judgeFuzzResult(engine.run(c), engine, vs, c, tolerance);
@@ -95,7 +105,7 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
     return v.findings.empty() ? std::vector<std::string>{} : v.findings.front().rules;
   };
   f.rules = rulesOf(first);
-  rc::Shrinkable<FuzzCase> current = shrinkTree(caseSeed);
+  rc::Shrinkable<FuzzCase> current = shrinkTree(caseSeed, options.formats);
   bool smaller = true;
   while (smaller && f.shrinkRuns < options.shrinkBudget) {
     smaller = false;
@@ -139,7 +149,7 @@ class FuzzCampaign {
           continue;
         }
         seeds.push_back(caseSeed);
-        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed), caseSeedTag(caseSeed)));
+        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed, options_.formats), caseSeedTag(caseSeed)));
       }
       std::vector<EngineResult> planned = engine_.runBatch(batch);
       for (std::size_t k = 0; k < batch.size(); ++k) {
@@ -163,7 +173,7 @@ class FuzzCampaign {
     else if (v.verdict == "not-applicable") ++summary_.notApplicable;
     else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
     if (v.verdict == "fail" || v.verdict == "engine-failure") {
-      r.reproduce = fuzzReproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed);
+      r.reproduce = reproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed, options_.formats);
       if (shrunkKinds_.insert(v.kind).second) keepFailure(caseSeed, c, v, r);
     }
     results_.append(r);  // a killed run keeps every result written so far

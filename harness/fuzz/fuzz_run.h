@@ -30,6 +30,7 @@ struct FuzzOptions {
   int shrinkBudget = 400;         // engine runs spent shrinking one failure at most
   std::optional<long> maxFailures;  // stop once this many cases have failed
   double tolerance = 1e-3;        // mm, for the oracles and the comparison with --vs
+  CycleFormats formats = kDefaultCycleFormats;  // the cycle formats drawn (--formats)
 };
 
 inline constexpr long kDefaultFuzzCases = 2000;
@@ -54,8 +55,8 @@ struct FuzzSummary {
 std::uint64_t fuzzCaseSeed(std::uint64_t runSeed, long index);
 std::string caseSeedTag(std::uint64_t caseSeed);  // 16 hex digits: names the case's results and files
 
-// The case a case seed generates (its RapidCheck shrink tree's root).
-FuzzCase generateFuzzCase(std::uint64_t caseSeed);
+// The case a case seed generates (its RapidCheck shrink tree's root), drawing from `formats`.
+FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats = kDefaultCycleFormats);
 
 // One generated case through `engine` (and `vs`): pass, fail (oracle finding or divergence),
 // not-applicable or engine-failure; `kind` names what failed.

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "oracles/metamorphic/format_relations.h"
 #include "oracles/metamorphic/lathe_program.h"
 #include "oracles/metamorphic/path_compare.h"
+#include "oracles/metamorphic/word_edit.h"
 #include "reference/gcode/writer.h"
 #include "reference/interpreter/plane.h"
 #include "reference/model/params.h"
@@ -17,16 +19,6 @@ namespace {
 constexpr double kMmPerInch = 25.4;
 
 // ---- rewriting words ------------------------------------------------------------------------------
-
-void setValue(Word& w, double value) {
-  w.value = value;
-  w.text = formatWord(w);
-}
-
-void rename(Word& w, char letter, double value) {
-  w.letter = letter;
-  setValue(w, value);
-}
 
 // G02 ↔ G03: a mirror, or an exchange of the axes, reverses the direction of every arc. Swapping
 // every G02/G03 word swaps the modal arc mode too.
@@ -112,7 +104,7 @@ Toolpath samePath(const Toolpath& t) { return t; }
 
 std::optional<FollowUp> followUp(Program program, ParamSettings params,
                                  std::function<Toolpath(const Toolpath&)> expected) {
-  return FollowUp{std::move(program), std::move(params), std::move(expected)};
+  return FollowUp{std::move(program), std::move(params), std::move(expected), ""};
 }
 
 // ---- the relations ------------------------------------------------------------------------------
@@ -491,11 +483,7 @@ Relation parameterDefault() {
       if (role == WordRole::DepthOfCut) settings.push_back({"5132", w.value});
       if (role == WordRole::Retract) settings.push_back({"5133", w.value});
     }
-    std::erase_if(b.words, [&](const Word& w) {
-      const WordRole role = roleOf(lathe->blocks[*first], w);
-      return role == WordRole::DepthOfCut || role == WordRole::Retract || role == WordRole::CycleCode;
-    });
-    if (b.words.empty() && !b.sequence) out.blocks.erase(out.blocks.begin() + static_cast<std::ptrdiff_t>(*first));
+    if (dropFirstBlockWords(b, lathe->blocks[*first])) out.blocks.erase(out.blocks.begin() + static_cast<std::ptrdiff_t>(*first));
     return followUp(std::move(out), std::move(settings), samePath);
   };
   r.compare = compareToolpaths;
@@ -579,6 +567,7 @@ const std::vector<Relation>& allRelations() {
   static const std::vector<Relation> relations = {
       mirrorZ(),        mirrorX(),     translateZ(12.5), translateX(5), scale(2.5),          splitSegment(),
       absoluteIncremental(), radiusCentre(), plane(17), plane(19), metricInch(), parameterDefault(), transpose(),
+      series10OneBlockRelation(), huazhongOneBlockRelation(),
   };
   return relations;
 }

@@ -31,6 +31,7 @@ struct FollowUp {
   // relation, because some relations choose a constant from the program (the mirror line of
   // mirror-x, the shift that keeps radii positive in transpose).
   std::function<Toolpath(const Toolpath&)> expectedPath;
+  std::string profile;  // the profile the follow-up runs under; empty: the source's (hnc-one-block: "hnc")
 };
 
 using PathComparison =
@@ -49,7 +50,8 @@ struct Relation {
 };
 
 // Every relation, in a stable order: mirror-z, mirror-x, translate-z, translate-x, scale-k,
-// split-segment, abs-inc, r-ik, plane-g17, plane-g19, metric-inch, param-default, transpose.
+// split-segment, abs-inc, r-ik, plane-g17, plane-g19, metric-inch, param-default, transpose,
+// fs10-one-block, hnc-one-block (format_relations.h).
 const std::vector<Relation>& allRelations();
 const Relation* findRelation(std::string_view id);
 

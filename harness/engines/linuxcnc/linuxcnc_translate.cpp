@@ -48,10 +48,21 @@ std::string xz(Point p) {
   return out;
 }
 
-// The parameters whose meaning the translation carries: Δd and e (5132/5133, through I and R) and
-// DTP (through the appended return).
+// The parameters whose meaning the translation carries: Δd and e (5132/5133, through I and R), DTP
+// (through the appended return) and FCV (0001#1: the Series 10/11 one block is read, its D becomes
+// Δd and so LinuxCNC's I, G71.FS10.D).
 bool translatedParameter(const ParamSpec& p) {
-  return p.number == "5132" || p.number == "5133" || p.number == "5108#1";
+  return p.number == "5132" || p.number == "5133" || p.number == "5108#1" || p.number == "0001#1";
+}
+
+// HNC.G71.FST: after the Huazhong G71 the program runs ns…nf again as the finishing path; the
+// translator writes one LinuxCNC cycle and nothing after it (and the oracles' reading it builds on
+// does not model that run).
+std::optional<std::string> huazhongFormat(const Profile& profile) {
+  if (profile.roughingFormat != RoughingBlockFormat::HuazhongOneBlock) return std::nullopt;
+  return "the Huazhong one-block G71 (profile " + profile.name +
+         ") runs ns…nf again after roughing as its finishing path (HNC.G71.FST); the translator writes one "
+         "LinuxCNC G71.1/G72.1 cycle and no motion after it";
 }
 
 std::string paramLabel(const ParamSpec& p, double value) {
@@ -121,6 +132,7 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
   const std::string profileName = c.profile.empty() ? "fanuc-0i-f" : c.profile;
   const Profile* profile = findProfile(profileName);
   if (!profile) return notApplicable("unknown profile '" + profileName + "'");
+  if (auto why = huazhongFormat(*profile)) return notApplicable(*why);
 
   MachineParams params = profile->defaults;
   std::vector<std::string> inexpressible;

@@ -1,0 +1,42 @@
+#pragma once
+// Word rewriting shared by the relations (relations.cpp, format_relations.cpp): a word keeps its
+// place in the block, and its text is the writer's for the new letter and value.
+#include <string>
+
+#include "oracles/metamorphic/lathe_program.h"
+#include "reference/gcode/writer.h"
+#include "reference/model/program.h"
+
+namespace cyclecert {
+
+inline void setValue(Word& w, double value) {
+  w.value = value;
+  w.text = formatWord(w);
+}
+
+inline void rename(Word& w, char letter, double value) {
+  w.letter = letter;
+  setValue(w, value);
+}
+
+// A first cycle block (G71 U(Δd) R(e), G72 W(Δd) R(e)) without Δd, e and its cycle code: its other
+// words (F S T M) stay as a plain block. True when nothing is left of it (no word, no N).
+inline bool dropFirstBlockWords(Block& b, const BlockInfo& info) {
+  std::erase_if(b.words, [&](const Word& w) {
+    const WordRole role = roleOf(info, w);
+    return role == WordRole::DepthOfCut || role == WordRole::Retract || role == WordRole::CycleCode;
+  });
+  return b.words.empty() && !b.sequence;
+}
+
+// A G70 P Q block without its code and P, Q: its other words (S T M) stay as a plain block. True
+// when nothing is left of it.
+inline bool dropFinishWords(Block& b, const BlockInfo& info) {
+  std::erase_if(b.words, [&](const Word& w) {
+    const WordRole role = roleOf(info, w);
+    return role == WordRole::CycleCode || role == WordRole::Sequence;
+  });
+  return b.words.empty() && !b.sequence;
+}
+
+}  // namespace cyclecert
