@@ -33,6 +33,10 @@ for engine in "${engines[@]}"; do
   # Paths relative to the repository, so that the report names files as a reader finds them.
   step "$cli" check --engine "$engine" --specs specs --regressions corpus/regressions --out "$runs/check-$engine"
 done
+# The field corpus (corpus/field/manifest.json): shop-style programs of every dialect, each judged by
+# every oracle on the reference's path (the programs still pending are listed, not run).
+python3 corpus/field/field_cases.py "$build/field-cases" || exit 2
+step "$cli" check --engine reference --specs specs --regressions "$build/field-cases" --out "$runs/check-field-reference"
 for engine in "${engines[@]}"; do
   # rs274 answers in milliseconds; a case it has not answered in 2 s hangs (README: LinuxCNC findings).
   step "$cli" fuzz --engine "$engine" --seed 1 --time "$fuzz_seconds" --timeout 2 --out "$runs/fuzz-$engine" \
