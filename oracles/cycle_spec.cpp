@@ -108,9 +108,8 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
 
 class SpecReader {
  public:
-  SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool,
-             bool mdi)
-      : program_(program), profile_(profile), params_(params), tool_(tool), mdi_(mdi) {
+  SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool)
+      : program_(program), profile_(profile), params_(params), tool_(tool) {
     state_.inch = profile.inchByDefault;  // PROG.UNITS
   }
 
@@ -131,7 +130,9 @@ class SpecReader {
         i = readCycle(i, g71 ? "G71" : "G72");
         continue;
       } else if (!g70 && hasAxisWord(b)) {
-        readMotionOutsideCycles(b);
+        readMotionOutsideCycles(i, b);
+      } else if (huazhongShape_ && callsSubprogram(b)) {
+        refuseToFollowSubprogram(b);
       }
       ++i;
     }
@@ -141,8 +142,9 @@ class SpecReader {
  private:
   // PROG.WHOLE: a block that moves the tool from a known position outside the cycles is a move of
   // the toolpath, before or after them.
-  void readMotionOutsideCycles(const Block& b) {
+  void readMotionOutsideCycles(std::size_t i, const Block& b) {
     const AxisWordsMean meaning = axisWordsMeaning(b);
+    if (huazhongShape_) requireFollowableAfterHuazhong(b, meaning);
     if (axisWordsMoveTheTool(meaning)) {
       if (!out_.cycles.empty()) {
         out_.motionAfterCycles = true;
@@ -151,7 +153,9 @@ class SpecReader {
       }
     }
     followKnownAxes(known_, b, meaning);
+    const Point before = state_.planePoint();
     state_.position = positionAfterBlock(b, state_);
+    if (huazhongShape_ && axisWordsMoveTheTool(meaning)) recordRunAfterHuazhong(i, b, before);
   }
 
   // G70.EX: the F words of the finishing shape apply in G70.
@@ -272,14 +276,51 @@ class SpecReader {
     return std::nullopt;
   }
 
-  // HNC.G71.FST: after a Huazhong G71 the blocks ns…nf run again as the finishing path; the oracles
-  // do not yet tell that run from the roughing (they would report its cuts into the allowance and
-  // its moves as retracts). Until they do, a Huazhong cycle that is planned is not judged — never
-  // judged wrongly; its alarms are.
-  [[noreturn]] static void refuseToJudgeHuazhongRun(const Block& b) {
-    throw NotSupported(b.line, "the oracles do not judge the Huazhong G71 yet (its finishing run of ns…nf after the "
-                               "cycle, HNC.G71.FST, is not modelled); spec cases compare its toolpath with the "
-                               "hand-derived one");
+  static bool callsSubprogram(const Block& b) {
+    for (const Word* m : b.all('M')) {
+      if (m->value == 98) return true;
+    }
+    return false;
+  }
+
+  // HNC.G71.SUB: ns…nf may call subprograms; the oracles do not follow them (nor does the reference),
+  // so the shape and the finishing run would lack their moves: not judged rather than judged wrongly.
+  [[noreturn]] static void refuseToFollowSubprogram(const Block& b) {
+    throw NotSupported(b.line, "the oracles do not follow subprogram calls (M98) after a Huazhong G71 (HNC.G71.SUB): "
+                               "write the contour inline");
+  }
+
+  // HNC.G71.FST: after a Huazhong G71 the program goes on with the block after it, and the oracles
+  // find its moves at the end of the path by where each block leaves the tool. A block whose end
+  // they do not know (G28/G30's reference position, G53, G50's new coordinates) or whose moves are
+  // offset from its words (G41/G42 with a nose radius) is not judged rather than judged wrongly.
+  void requireFollowableAfterHuazhong(const Block& b, AxisWordsMean meaning) const {
+    const bool unknownEnd = meaning == AxisWordsMean::ReferenceReturn || meaning == AxisWordsMean::MachineCoordinates ||
+                            meaning == AxisWordsMean::CoordinateSetting;
+    if (unknownEnd) {
+      throw NotSupported(b.line, "the oracles do not follow G28/G30/G53/G50 after a Huazhong G71 (its finishing run, "
+                                 "HNC.G71.FST, is found by where each block leaves the tool)");
+    }
+    if (callsSubprogram(b)) refuseToFollowSubprogram(b);
+    if (state_.tnrc != 40 && tool_.noseRadius > 0 && axisWordsMoveTheTool(meaning)) {
+      throw NotSupported(b.line, "the oracles do not judge the moves after a Huazhong G71 under G41/G42 with a nose "
+                                 "radius (HNC.G71.FST): the finishing run is offset from the blocks' words");
+    }
+  }
+
+  // HNC.G71.FST: a block after the Huazhong G71 that moves the tool in the plane; block ns starts
+  // the finishing run.
+  void recordRunAfterHuazhong(std::size_t i, const Block& b, Point before) {
+    ProgramMove m;
+    m.line = b.line;
+    m.end = state_.planePoint();
+    if (distance(m.end, before) <= kEps) return;  // no move in the plane
+    m.rapid = state_.motion == 0;
+    m.arc = state_.motion == 2 || state_.motion == 3;
+    m.feed = state_.feed;
+    m.finishing = i >= huazhongShape_->first && i <= huazhongShape_->second;
+    if (m.finishing) out_.hasFinishingCycle = true;
+    out_.runAfterHuazhong.push_back(m);
   }
 
   std::size_t readCycle(std::size_t index, const std::string& code) {
@@ -321,14 +362,22 @@ class SpecReader {
     } else if (c.feed <= 0) {
       c.forbiddenBy = forbidden("PS0011", b.line, "no cutting feed");
     }
-    if (oneBlock && !c.forbiddenBy && !mdi_) refuseToJudgeHuazhongRun(b);  // in MDI: PS0067, judged
     if (c.forbiddenBy) {
       out_.cycles.push_back(std::move(c));
       return index + 1;
     }
+    if (oneBlock) {
+      for (std::size_t i = ns; i <= nf; ++i) {
+        if (callsSubprogram(program_.blocks[i])) refuseToFollowSubprogram(program_.blocks[i]);
+      }
+    }
     readShape(c, ns, nf);
+    if (oneBlock && !c.forbiddenBy) {
+      huazhongShape_ = {ns, nf};
+      out_.runAfterHuazhong.clear();
+    }
     out_.cycles.push_back(std::move(c));
-    if (oneBlock) return index + 1;  // HNC.G71.FST: ns…nf run again as the finishing pass
+    if (oneBlock) return index + 1;  // HNC.G71.FST: the program goes on; ns…nf run again as the finishing run
     return ns == index + 1 ? nf + 1 : index + 1;  // G72.NSNF.FOLLOW
   }
 
@@ -390,11 +439,12 @@ class SpecReader {
   const Profile& profile_;
   MachineParams params_;
   const ToolOffset& tool_;
-  bool mdi_;  // the program runs in MDI mode: its cycles alarm (G72.MDI) and are judged so
   ModalState state_;
   KnownPosition known_;  // PROG.POSITION: the axes whose work coordinates the program has given
   ProgramSpec out_;
   std::optional<Alarm> firstBlockAlarm_;  // a first cycle block outside the range table
+  // ns and nf (block indices) of the last Huazhong G71 the rules allow: the program runs on after it.
+  std::optional<std::pair<std::size_t, std::size_t>> huazhongShape_;
 
  public:
   std::vector<Alarm> finishingAlarms_;    // G70 blocks the rules forbid
@@ -422,7 +472,7 @@ std::vector<Segment> CycleSpec::roughProfile() const {
 
 ProgramSpec readProgramSpec(const Program& program, const Profile& profile, const MachineParams& params,
                             const ToolOffset& tool, bool mdi) {
-  SpecReader reader(program, profile, params, tool, mdi);
+  SpecReader reader(program, profile, params, tool);
   ProgramSpec spec = reader.read();
   for (const Alarm& a : reader.finishingAlarms_) spec.finishingAlarms.push_back(a);
   // G72.MDI: the cycles cannot run in MDI mode; the first cycle block alarms.

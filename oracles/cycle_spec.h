@@ -41,6 +41,17 @@ struct CycleSpec {
   std::optional<Alarm> forbiddenBy;
 };
 
+// A block that moves the tool after a Huazhong G71, in program order (HNC.G71.FST: the program goes
+// on with the block after G71, so ns…nf run again, as the finishing run, when it reaches them).
+struct ProgramMove {
+  int line = 0;
+  Point end;               // where the block leaves the tool (plane coordinates)
+  bool rapid = true;       // G00, else a cutting feed
+  bool arc = false;        // G02/G03
+  double feed = 0;         // the F in force (HNC.G71.FST: set between G71 and ns, else the G71 block's)
+  bool finishing = false;  // one of ns…nf: the finishing run
+};
+
 struct ProgramSpec {
   std::vector<CycleSpec> cycles;
   bool hasFinishingCycle = false;  // a G70 follows: its feeds come from the shape
@@ -51,6 +62,9 @@ struct ProgramSpec {
   std::vector<Alarm> finishingAlarms;      // G70 blocks the rules forbid (G71.TNRC.NT2)
   std::optional<Alarm> mdiAlarm;           // the program runs in MDI mode (G72.MDI)
   std::optional<Alarm> blockAlarm;         // a block's G codes alone are refused (PROG.GROUP.*); reading stops there
+  // HNC.G71.FST: the blocks that move the tool after the program's last Huazhong G71 (its finishing
+  // run of ns…nf among them, which makes hasFinishingCycle true). Empty for other programs.
+  std::vector<ProgramMove> runAfterHuazhong;
 
   // The program's one roughing cycle when it has exactly one that the rules allow (what the
   // geometric oracles judge), else nullptr.

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "oracles/oracles.h"
+#include "oracles/run_after_cycle.h"
 
 namespace cyclecert {
 
@@ -44,6 +45,35 @@ class FeedsOracle : public Oracle {
     }
   }
 
+  // HNC.G71.FST: each block after the Huazhong G71 moves as written — G00 rapids, else cutting
+  // feed at the F in force (in the finishing run: set between G71 and ns, else the G71 block's).
+  void judgeRunAfterHuazhong(const JudgeInput& in, const RunAfterCycle& run, std::vector<Finding>& out) const {
+    const std::vector<ProgramMove>& blocks = in.program.runAfterHuazhong;
+    std::size_t first = run.roughingEnd;
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      const ProgramMove& b = blocks[k];
+      for (std::size_t i = first; i <= run.lastMove[k]; ++i) {
+        const Move& m = in.path.moves[i];
+        const bool rapid = m.kind == MoveKind::Rapid;
+        std::ostringstream s;
+        if (rapid != b.rapid) {
+          s << "move " << i << " (the block at line " << b.line << (b.finishing ? ", finishing run" : "") << ") is ";
+          if (rapid) s << "a rapid, but the block is a cutting move at F" << b.feed;
+          else s << "a cutting feed, but the block is G00";
+        } else if (!rapid && (!m.feed || std::abs(*m.feed - b.feed) > 1e-9 * std::max(1.0, b.feed))) {
+          s << "move " << i << " (the block at line " << b.line << (b.finishing ? ", finishing run" : "") << ") runs at F"
+            << m.feed.value_or(0) << ", but the F in force there is " << b.feed;
+        } else {
+          continue;
+        }
+        Finding f = finding(*this, i, s.str());
+        f.rules = {"HNC.G71.FST"};
+        out.push_back(f);
+      }
+      first = run.lastMove[k] + 1;
+    }
+  }
+
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     if (in.path.alarm || in.program.cycles.empty()) return;
@@ -51,7 +81,12 @@ class FeedsOracle : public Oracle {
     std::vector<double> allowed;
     for (const CycleSpec& c : in.program.cycles) allowed.push_back(c.feed);
     if (in.program.hasFinishingCycle) allowed.insert(allowed.end(), in.program.finishingFeeds.begin(), in.program.finishingFeeds.end());
-    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+    // HNC.G71.FST: after a Huazhong G71 the moves of the blocks after it are judged block by block;
+    // the cycle's own (and the program's before it) end where they begin.
+    const RunLocation huazhong = locateRunAfterHuazhong(in);
+    const std::size_t cycleEnd = huazhong.run ? huazhong.run->roughingEnd : in.path.moves.size();
+    if (huazhong.run) judgeRunAfterHuazhong(in, *huazhong.run, out);
+    for (std::size_t i = 0; i < cycleEnd; ++i) {
       const Move& m = in.path.moves[i];
       if (m.kind != MoveKind::Feed) continue;
       if (!m.feed || *m.feed <= 0) {
@@ -60,7 +95,7 @@ class FeedsOracle : public Oracle {
       }
       bool ok = false;
       for (double f : allowed) ok = ok || std::abs(*m.feed - f) <= 1e-9 * std::max(1.0, f);
-      if (!ok && !in.program.motionAfterCycles) {
+      if (!ok && (!in.program.motionAfterCycles || huazhong.run)) {
         std::ostringstream s;
         s << "cutting move at F" << *m.feed << ", but the cycle's F is " << in.program.cycles.front().feed;
         out.push_back(finding(*this, i, s.str()));

@@ -9,6 +9,7 @@
 
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
+#include "oracles/run_after_cycle.h"
 
 namespace cyclecert {
 
@@ -67,7 +68,7 @@ class NoGougeOracle : public Oracle {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
-    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+    for (std::size_t i = 0; i < r->judgedMoves; ++i) {
       const Crossing c = r->partCrossing(in.path.segment(i), tolerance(in), in.settings.chordTolerance);
       if (c.length <= 0) continue;
       std::ostringstream m;
@@ -175,7 +176,8 @@ class PassLevelsOracle : public Oracle {
     const double tol = tolerance(in);
     const Point aPrime = inFrame(c, c.start + c.allowance);
     const std::vector<Segment> rough = c.roughProfile();
-    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+    const std::size_t judged = movesJudgedAgainstThePart(in);
+    for (std::size_t i = 0; i < judged; ++i) {
       // The semi-finish runs on the rough profile, G70 on the finish shape: neither is a roughing pass.
       if (!isCutAlongCutAxis(in, c, i, tol) || runsOnProfile(in, c, rough, i, tol)) continue;
       const double depth = c.depthDirection() * (inFrame(c, in.path.moves[i].to).x - aPrime.x);

@@ -4,6 +4,7 @@
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/oracles.h"
+#include "oracles/run_after_cycle.h"
 #include "reference/model/offset.h"
 #include <cmath>
 
@@ -260,7 +261,8 @@ std::optional<std::vector<std::vector<Point>>> materialAfter(const JudgeInput& i
   const Point away = awayFrom(*c);
   const double reach = reachFor(in, *c);
   MaterialModel model(stockFor(in, *c, away, reach), away, reach, in.settings.chordTolerance);
-  for (std::size_t i = 0; i < in.path.moves.size() && i <= k; ++i) model.apply(in.path.segment(i), in.path.moves[i].kind);
+  const std::size_t judged = movesJudgedAgainstThePart(in);
+  for (std::size_t i = 0; i < judged && i <= k; ++i) model.apply(in.path.segment(i), in.path.moves[i].kind);
   return outlinesOf(model.remaining());
 }
 
@@ -274,6 +276,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   if (!c || in.path.alarm) return std::nullopt;
   MaterialReplay r;
   r.cycle = c;
+  r.judgedMoves = movesJudgedAgainstThePart(in);
   r.away = awayFrom(*c);
   r.reach = reachFor(in, *c);
   r.stock = stockFor(in, *c, r.away, r.reach);
@@ -303,7 +306,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   const bool judgesEntries = judgesPocketEntries(*c, in.settings);
   if (judgesEntries) r.pocketEntryCrossings.resize(in.path.moves.size());
   r.removedThickness.resize(in.path.moves.size());
-  for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+  for (std::size_t i = 0; i < r.judgedMoves; ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);

@@ -18,6 +18,9 @@ inline constexpr double kMeasuringChord = 1e-6;
 
 struct MaterialReplay {
   const CycleSpec* cycle = nullptr;  // the one roughing cycle judged
+  // The moves replayed and judged: all, or up to the end of a Huazhong finishing run
+  // (movesJudgedAgainstThePart, run_after_cycle.h).
+  std::size_t judgedMoves = 0;
   Point away;                        // from the part towards the start side, along the depth axis
   double reach = 0;
   BgRegion stock;

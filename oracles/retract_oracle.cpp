@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "oracles/oracles.h"
+#include "oracles/run_after_cycle.h"
 
 namespace cyclecert {
 
@@ -22,7 +23,8 @@ class RetractOracle : public Oracle {
     const CycleSpec* c = in.program.singleRoughingCycle();
     if (!c || in.path.alarm) return;
     Check check{*c, in, c->roughProfile(), in.settings.tolerance()};
-    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+    const std::size_t judged = movesJudgedAgainstThePart(in);
+    for (std::size_t i = 0; i < judged; ++i) {
       if (!isCutAlongCutAxis(in, *c, i, check.tol)) continue;
       if (!runsOnProfile(in, *c, check.rough, i, check.tol)) {
         c->typeII ? check.typeIIPassLeaves(i, *this, out) : check.typeIPassLeaves(i, *this, out);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "oracles/oracles.h"
+#include "oracles/run_after_cycle.h"
 
 namespace cyclecert {
 
@@ -16,11 +17,11 @@ class ReturnsToStartOracle : public Oracle {
 
   // G71.DTP, type I after the semi-finish pass: DTP = 1 returns from C' straight to A; DTP = 0 along
   // the depth axis first, then along the cut axis (our reading of the missing figure).
-  void judgeReturnShape(const JudgeInput& in, std::vector<Finding>& out) const {
+  // `last` is the cycle's last move.
+  void judgeReturnShape(const JudgeInput& in, std::size_t last, std::vector<Finding>& out) const {
     const CycleSpec* c = in.program.singleRoughingCycle();
-    if (!c || c->typeII || !c->semiFinish || in.program.hasFinishingCycle || in.path.moves.size() < 2) return;
+    if (!c || c->typeII || !c->semiFinish || last < 1) return;
     const double tol = in.settings.tolerance();
-    const std::size_t last = in.path.moves.size() - 1;
     const Point cPrime = c->shape.back().to + c->allowance;
     const Point end = inFrame(*c, in.path.moves[last].to), before = inFrame(*c, in.path.from(last));
     // The semi-finish ends level with A along the cut axis (or at A): the return has no cut-axis
@@ -37,19 +38,53 @@ class ReturnsToStartOracle : public Oracle {
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
-    // Only when nothing but the cycles moves after them: then the path must end at the last A.
-    if (in.path.alarm || in.program.cycles.empty() || in.program.motionAfterCycles || in.path.moves.empty()) return;
-    judgeReturnShape(in, out);
-    const Point start = in.program.cycles.back().start;
-    const Point end = in.path.from(in.path.moves.size());
-    if (distance(start, end) > in.settings.epsilon) {
-      std::ostringstream m;
-      m << "the path ends at (z " << end.z << ", x " << end.x << "), not at the cycle start point A (z " << start.z
-        << ", x " << start.x << ")";
-      Finding f = finding(*this, in.path.moves.size() - 1, m.str());
-      f.witness.point = end;
-      out.push_back(f);
+    if (in.path.alarm || in.program.cycles.empty() || in.path.moves.empty()) return;
+    if (!in.program.runAfterHuazhong.empty()) {
+      judgeHuazhongReturn(in, out);
+      return;
     }
+    // Only when nothing but the cycles moves after them: then the path must end at the last A.
+    if (in.program.motionAfterCycles) return;
+    if (!in.program.hasFinishingCycle) judgeReturnShape(in, in.path.moves.size() - 1, out);
+    judgeEnd(in, in.path.moves.size(), "the path", {}, out);
+  }
+
+ private:
+  // Whether the tool stands at A before move `end` (the path's end when `end` is the move count).
+  void judgeEnd(const JudgeInput& in, std::size_t end, const std::string& what, std::vector<std::string> rules,
+                std::vector<Finding>& out) const {
+    const Point start = in.program.cycles.back().start;
+    const Point at = in.path.from(end);
+    if (distance(start, at) <= in.settings.epsilon) return;
+    std::ostringstream m;
+    m << what << " ends at (z " << at.z << ", x " << at.x << "), not at the cycle start point A (z " << start.z << ", x "
+      << start.x << ")";
+    Finding f = finding(*this, end == 0 ? 0 : end - 1, m.str());
+    if (!rules.empty()) f.rules = std::move(rules);
+    f.witness.point = at;
+    out.push_back(f);
+  }
+
+  // HNC.G71.RETURN: the roughing ends at A, where the program goes on with the block after G71
+  // (HNC.G71.FST); the path ends with those blocks' moves.
+  void judgeHuazhongReturn(const JudgeInput& in, std::vector<Finding>& out) const {
+    const RunLocation where = locateRunAfterHuazhong(in);
+    if (where.unmatched) {
+      const ProgramMove& b = in.program.runAfterHuazhong[*where.unmatched];
+      std::ostringstream m;
+      m << "after the Huazhong G71 the program goes on with the block after it; the path does not end with those "
+           "blocks' moves: the block at line "
+        << b.line << " leaves the tool at (z " << b.end.z << ", x " << b.end.x << "), where no move ends in its place";
+      Finding f = finding(*this, std::nullopt, m.str());
+      f.rules = {"HNC.G71.FST", "HNC.G71.RETURN"};
+      f.witness.point = b.end;
+      out.push_back(f);
+      return;
+    }
+    if (!where.run) return;
+    const std::size_t end = where.run->roughingEnd;
+    if (end >= 1) judgeReturnShape(in, end - 1, out);
+    judgeEnd(in, end, "the Huazhong G71 (before the block after it)", {"HNC.G71.RETURN"}, out);
   }
 };
 

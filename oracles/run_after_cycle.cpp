@@ -1,0 +1,69 @@
+#include "oracles/run_after_cycle.h"
+
+namespace cyclecert {
+
+namespace {
+
+bool endsAt(const JudgeInput& in, std::size_t move, Point p) {
+  return distance(in.path.moves[move].to, p) <= in.settings.tolerance();
+}
+
+// The last move at or before `from` (counting down) that ends at p; a line block allows no other
+// move in between, an arc block its pieces.
+std::optional<std::size_t> lastMoveEndingAt(const JudgeInput& in, std::size_t from, Point p, bool piecesBetween) {
+  for (std::size_t j = from + 1; j-- > 0;) {
+    if (endsAt(in, j, p)) return j;
+    if (!piecesBetween) break;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+RunLocation locateRunAfterHuazhong(const JudgeInput& in) {
+  const std::vector<ProgramMove>& blocks = in.program.runAfterHuazhong;
+  const CycleSpec* cycle = in.program.singleRoughingCycle();
+  RunLocation where;
+  if (blocks.empty() || !cycle || in.path.alarm) return where;
+  RunAfterCycle run;
+  run.lastMove.resize(blocks.size());
+  // Matched from the end: the last block ends the path; each block ends just before the next one's
+  // moves begin (right before a line, before an arc's pieces).
+  std::optional<std::size_t> at;
+  for (std::size_t k = blocks.size(); k-- > 0;) {
+    const bool last = k + 1 == blocks.size();
+    if (last) {
+      at = in.path.moves.empty() ? std::nullopt : lastMoveEndingAt(in, in.path.moves.size() - 1, blocks[k].end, false);
+    } else {
+      at = run.lastMove[k + 1] == 0 ? std::nullopt
+                                    : lastMoveEndingAt(in, run.lastMove[k + 1] - 1, blocks[k].end, blocks[k + 1].arc);
+    }
+    if (!at) {
+      where.unmatched = k;
+      return where;
+    }
+    run.lastMove[k] = *at;
+  }
+  // HNC.G71.RETURN: the cycle ends at A, where the block after G71 starts.
+  run.roughingEnd = run.lastMove.front();
+  if (blocks.front().arc && run.roughingEnd > 0) {
+    if (auto a = lastMoveEndingAt(in, run.roughingEnd - 1, cycle->start, true)) run.roughingEnd = *a + 1;
+  }
+  run.judgedEnd = in.path.moves.size();
+  for (std::size_t k = blocks.size(); k-- > 0;) {
+    if (blocks[k].finishing) {
+      run.judgedEnd = run.lastMove[k] + 1;
+      break;
+    }
+  }
+  where.run = run;
+  return where;
+}
+
+std::size_t movesJudgedAgainstThePart(const JudgeInput& in) {
+  if (in.program.runAfterHuazhong.empty()) return in.path.moves.size();
+  const RunLocation where = locateRunAfterHuazhong(in);
+  return where.run ? where.run->judgedEnd : in.path.moves.size();
+}
+
+}  // namespace cyclecert

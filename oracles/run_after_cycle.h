@@ -1,0 +1,37 @@
+#pragma once
+// HNC.G71.FST, HNC.G71.RETURN: after a Huazhong G71 the tool is back at the cycle start and the
+// program goes on with the block after G71, so ns…nf run again, as the finishing run, when it
+// reaches them. Where those blocks' moves sit at the end of an engine's path, found by where each
+// block leaves the tool (ProgramSpec::runAfterHuazhong) — never by the engine's phase labels.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "oracles/judgement.h"
+
+namespace cyclecert {
+
+struct RunAfterCycle {
+  // Per block of ProgramSpec::runAfterHuazhong, the move that ends it; a block's moves follow the
+  // previous block's last move (a line is one move, an arc may be split).
+  std::vector<std::size_t> lastMove;
+  std::size_t roughingEnd = 0;  // the first move after the cycle (the first of the block after G71)
+  // One past the finishing run's last move (block nf), or the path's end without a finishing run:
+  // the moves after it (a part-off with another tool) belong to no cycle the oracles model.
+  std::size_t judgedEnd = 0;
+};
+
+struct RunLocation {
+  std::optional<RunAfterCycle> run;     // where the blocks' moves are
+  std::optional<std::size_t> unmatched;  // else: the block (index into runAfterHuazhong) not found
+};
+
+// Nothing to locate (both empty) unless the program's one roughing cycle is a Huazhong G71 the
+// program runs on after.
+RunLocation locateRunAfterHuazhong(const JudgeInput& in);
+
+// How many moves of the path the geometric, retract and pass-level oracles judge: up to the end of
+// a Huazhong finishing run, else all of them.
+std::size_t movesJudgedAgainstThePart(const JudgeInput& in);
+
+}  // namespace cyclecert
