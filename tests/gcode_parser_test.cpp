@@ -295,6 +295,17 @@ TEST(Parser, SkipsPercentLines) {
   EXPECT_EQ(program.blocks[1].line, 4);
 }
 
+// Huazhong names its programs on the '%' line (seed 003's dialect: "%3304").
+TEST(Parser, ReadsAProgramNameOnThePercentLine) {
+  const Program program = parse("%3304\nG00 X1\nM30\n");
+  ASSERT_TRUE(program.percentName);
+  EXPECT_EQ(program.percentName->text, "%3304");
+  EXPECT_EQ(program.percentName->line, 1);
+  EXPECT_FALSE(parse("%\nG00 X1\n%\n").percentName);
+  EXPECT_THROW(parse("%33A4\nG00 X1\n"), ParseError);
+  EXPECT_THROW(parse("%3304\n%3305\nG00 X1\n"), ParseError);
+}
+
 TEST(Parser, ReadsCrLfInput) {
   const Program program = parse("%\r\nO0001\r\nN1 G00 X1\r\nN2 G01 Z-2 (a;b)\r\n%\r\n");
   EXPECT_EQ(program.number, 1);

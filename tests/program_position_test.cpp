@@ -72,6 +72,16 @@ TEST(ProgramPosition, OnePlanePerToolpath) {
   EXPECT_THROW(plan("G00 X100. Z100.;\nG00 X40. Z2.;\nG17 G00 X30. Y5.;\nM30;\n"), NotSupported);
 }
 
+// PROG.SHOP: a '%3304' program name is Huazhong's; a FANUC profile says so instead of reading it.
+TEST(ProgramPosition, APercentProgramNameIsHuazhongs) {
+  const std::string program = "%3304\nG00 X40. Z2.;\n" + std::string(kCycle);
+  EXPECT_NE(notSupportedMessage(program).find("--profile hnc"), std::string::npos) << notSupportedMessage(program);
+  EXPECT_NE(notSupportedMessage(program).find("O3304"), std::string::npos);
+  const Toolpath hnc = planWithReference({"%3304\nG00 X40. Z2.;\nG01 Z-5. F0.2;\nM30;\n", "p.nc", "hnc", {}, {}});
+  EXPECT_FALSE(hnc.alarm);
+  EXPECT_EQ(hnc.moves.size(), 1u);
+}
+
 TEST(ProgramPosition, G50SetsThePositionWithoutMotion) {
   const Toolpath t = plan("G50 X40. Z2.;\n" + std::string(kCycle));
   ASSERT_FALSE(t.alarm) << t.alarm->message;

@@ -21,6 +21,7 @@ class ProgramRunner {
   }
 
   Toolpath run() {
+    requireProgramNameOfTheDialect();
     try {
       std::size_t i = 0;
       while (i < program_.blocks.size() && !ended_) i = execute(i);
@@ -31,6 +32,15 @@ class ProgramRunner {
   }
 
  private:
+  // PROG.SHOP: "%3304" names a Huazhong program; in the other dialects it is not a program name.
+  void requireProgramNameOfTheDialect() const {
+    const auto& name = program_.percentName;
+    if (!name || profile_.namesProgramsWithPercent) return;
+    throw NotSupported(name->line, "'" + name->text + "' names the program as Huazhong writes it (--profile hnc); the " +
+                                       profile_.name + " profile names it O" + name->text.substr(1) +
+                                       " and reads '%' alone as the start or end of the program");
+  }
+
   // Executes block i and returns the index of the next block.
   std::size_t execute(std::size_t i) {
     const Block& b = program_.blocks[i];

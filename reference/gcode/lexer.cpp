@@ -1,5 +1,7 @@
 #include "reference/gcode/lexer.h"
 
+#include <cctype>
+
 #include <array>
 #include <cstdio>
 #include <utility>
@@ -132,7 +134,11 @@ Token Lexer::programMarker() {
   for (std::size_t i = lineStart_; i < pos_; ++i) {
     if (!isBlank(source_[i])) fail(pos_, "'%' only on a line of its own");
   }
-  Token token = take(TokenKind::ProgramMarker, 1);
+  // Huazhong names a program on its '%' line: "%3304" (HNC.G71.FMT's programs; a profile that
+  // does not, refuses it with the way FANUC writes it).
+  std::size_t length = 1;
+  while (pos_ + length < source_.size() && std::isdigit(static_cast<unsigned char>(source_[pos_ + length]))) ++length;
+  Token token = take(TokenKind::ProgramMarker, length);
   skipBlanks();
   if (pos_ < source_.size() && !isLineEnd(source_[pos_])) fail(pos_, "the end of the line after '%'");
   return token;

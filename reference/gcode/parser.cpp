@@ -41,7 +41,7 @@ class ProgramParser {
     program_.file = lexer_.file();
     while (current_.kind != TokenKind::EndOfInput) {
       if (current_.kind == TokenKind::ProgramMarker) {
-        advance();  // '%' lines only frame the program
+        readProgramMarker(advance());
         continue;
       }
       parseBlock();
@@ -50,6 +50,13 @@ class ProgramParser {
   }
 
  private:
+  // '%' lines frame the program; Huazhong's "%3304" also names it.
+  void readProgramMarker(const Token& marker) {
+    if (marker.text.size() == 1) return;
+    if (program_.percentName) fail(marker, "one program name per file", std::string(marker.text));
+    program_.percentName = PercentName{std::string(marker.text), marker.line};
+  }
+
   // Returns the current token and moves on to the next one.
   Token advance() {
     Token taken = std::exchange(current_, lexer_.next());

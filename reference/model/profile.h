@@ -35,6 +35,9 @@ struct Profile {
   // Huazhong (seed 003's example 1, `N1 G94 G90`): G90 is absolute programming and G94/G95 feed per
   // minute/revolution, not FANUC system A's turning cycles. G91 (incremental) is not modelled.
   bool g9xAreProgrammingModes = false;
+  // Huazhong names a program on its first line "%3304" (seed 003's programs); FANUC, GSK and Haas
+  // write O3304, and '%' alone frames the program.
+  bool namesProgramsWithPercent = false;
 };
 
 const Profile* findProfile(std::string_view name);

@@ -70,9 +70,16 @@ struct Block {
   bool hasG(int codeTimes10) const;
 };
 
+// A program named on its '%' line, as Huazhong writes it ("%3304").
+struct PercentName {
+  std::string text;  // "%3304"
+  int line = 0;
+};
+
 struct Program {
   std::string file;
   std::optional<long> number;  // O number
+  std::optional<PercentName> percentName;
   std::vector<Block> blocks;
 
   // Index of the first block with sequence number n, or nothing.

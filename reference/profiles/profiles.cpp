@@ -40,6 +40,7 @@ Profile hnc() {
   p.seed = "003_22785bbc34f78b07.txt";
   p.roughingFormat = RoughingBlockFormat::HuazhongOneBlock;
   p.g9xAreProgrammingModes = true;
+  p.namesProgramsWithPercent = true;
   return p;
 }
 }  // namespace
