@@ -33,7 +33,7 @@ void applyModal(const Block& b, ModalState& s) {
 // PROG.GROUP.UNKNOWN, PROG.GROUP.COMP: applies the block's modal codes and returns the alarm its G
 // codes raise, as the runner does (reference/interpreter/block_groups.h), or nothing.
 std::optional<Alarm> readBlockGroups(const Block& b, ModalState& s) {
-  if (const Word* g = firstUnknownGCode(b)) return improperGCode(b, *g).alarm();
+  if (const Word* g = firstUnknownGCode(b, s.gCodeSystem)) return improperGCode(b, *g, s.gCodeSystem).alarm();
   const ModalState before = s;
   applyModal(b, s);
   try {
@@ -109,16 +109,18 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
 class SpecReader {
  public:
   SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool)
-      : program_(program), profile_(profile), params_(params), tool_(tool) {
-    state_.inch = profile.inchByDefault;  // PROG.UNITS
-  }
+      : program_(program), profile_(profile), params_(params), tool_(tool),
+        state_(initialModalState(profile, params)) {}  // PROG.UNITS, PROG.GSYS.SELECT
 
   ProgramSpec read() {
     std::size_t i = 0;
     while (i < program_.blocks.size()) {
       const Block& b = program_.blocks[i];
       if ((out_.blockAlarm = readBlockGroups(b, state_))) break;
-      const bool g70 = b.hasG(700), g71 = b.hasG(710), g72 = b.hasG(720);
+      // PROG.GSYS.*: the cycles by their function (system C writes G72/G73/G74).
+      const GCodeSystem system = state_.gCodeSystem;
+      const bool g70 = hasGFunction(b, 700, system), g71 = hasGFunction(b, 710, system),
+                 g72 = hasGFunction(b, 720, system);
       if ((g70 || g71 || g72) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
       if (g70) {
         readFinishingFeeds(b);
@@ -143,7 +145,7 @@ class SpecReader {
   // PROG.WHOLE: a block that moves the tool from a known position outside the cycles is a move of
   // the toolpath, before or after them.
   void readMotionOutsideCycles(std::size_t i, const Block& b) {
-    const AxisWordsMean meaning = axisWordsMeaning(b);
+    const AxisWordsMean meaning = axisWordsMeaning(b, state_.gCodeSystem);
     if (huazhongShape_) requireFollowableAfterHuazhong(b, meaning);
     if (axisWordsMoveTheTool(meaning)) {
       if (!out_.cycles.empty()) {
@@ -152,7 +154,7 @@ class SpecReader {
         out_.motionBeforeCycles = true;
       }
     }
-    followKnownAxes(known_, b, meaning);
+    followKnownAxes(known_, b, meaning, state_);
     const Point before = state_.planePoint();
     state_.position = positionAfterBlock(b, state_);
     if (huazhongShape_ && axisWordsMoveTheTool(meaning)) recordRunAfterHuazhong(i, b, before);

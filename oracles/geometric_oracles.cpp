@@ -176,7 +176,7 @@ class PassLevelsOracle : public Oracle {
     const double tol = tolerance(in);
     const Point aPrime = inFrame(c, c.start + c.allowance);
     const std::vector<Segment> rough = c.roughProfile();
-    const std::size_t judged = movesJudgedAgainstThePart(in);
+    const std::size_t judged = movesOfTheRoughing(in);
     for (std::size_t i = 0; i < judged; ++i) {
       // The semi-finish runs on the rough profile, G70 on the finish shape: neither is a roughing pass.
       if (!isCutAlongCutAxis(in, c, i, tol) || runsOnProfile(in, c, rough, i, tol)) continue;

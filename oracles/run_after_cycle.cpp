@@ -66,4 +66,10 @@ std::size_t movesJudgedAgainstThePart(const JudgeInput& in) {
   return where.run ? where.run->judgedEnd : in.path.moves.size();
 }
 
+std::size_t movesOfTheRoughing(const JudgeInput& in) {
+  if (in.program.runAfterHuazhong.empty()) return in.path.moves.size();
+  const RunLocation where = locateRunAfterHuazhong(in);
+  return where.run ? where.run->roughingEnd : in.path.moves.size();
+}
+
 }  // namespace cyclecert

@@ -34,4 +34,8 @@ RunLocation locateRunAfterHuazhong(const JudgeInput& in);
 // a Huazhong finishing run, else all of them.
 std::size_t movesJudgedAgainstThePart(const JudgeInput& in);
 
+// How many moves the oracles of the roughing passes (pass levels, retracts) judge: up to the end of
+// a Huazhong roughing (its finishing run and the blocks before it are no passes), else all.
+std::size_t movesOfTheRoughing(const JudgeInput& in);
+
 }  // namespace cyclecert

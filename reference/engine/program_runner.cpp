@@ -15,9 +15,14 @@ namespace {
 class ProgramRunner {
  public:
   ProgramRunner(const Program& program, const Profile& profile, const MachineParams& params, const RunOptions& options)
-      : program_(program), profile_(profile), params_(params), options_(options) {
+      : program_(program), profile_(profile), params_(params), options_(options),
+        state_(initialModalState(profile, params)) {
     path_.profile = profile.name;
-    state_.inch = profile.inchByDefault;  // PROG.UNITS
+    if (!profile.gCodeSystemByParameters && (params.bit("GSB") || params.bit("GSC"))) {
+      path_.warnings.push_back({0, "parameter 3401#6 GSB / #7 GSC is not read by the " + profile.name +
+                                       " profile: the program is read in " + gCodeSystemName(state_.gCodeSystem) +
+                                       " (the FANUC profiles fanuc-0i-f and fanuc-0i-c read it)"});
+    }
   }
 
   Toolpath run() {
@@ -46,24 +51,24 @@ class ProgramRunner {
     const Block& b = program_.blocks[i];
     const ModalState before = state_;
     int cycle = 0;
+    // PROG.GSYS.*: each G number is read in the G code system in force.
+    const GCodeSystem system = state_.gCodeSystem;
     for (const Word* g : b.all('G')) {
-      const int g10 = gCode10(g->value);
-      if (profile_.g9xAreProgrammingModes && (g10 == 900 || g10 == 940 || g10 == 950)) continue;  // absolute, feed modes
-      if (profile_.g9xAreProgrammingModes && g10 == 910) throw NotSupported(b.line, "G91 incremental mode is not modelled");
-      const GCode* code = findGCode(g10);
-      if (!code) throw improperGCode(b, *g);
-      if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(*code, b));
+      const GCode* code = findGCode(system, gCode10(g->value));
+      if (!code) throw improperGCode(b, *g, system);
+      if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(b, *g, system));
       if (code->group == GGroup::Units) unitsCommanded_ = true;
-      applyModalGCode(g10, state_);
-      if (g10 == 700 || g10 == 710 || g10 == 720) cycle = g10;
+      applyModalGCode(*code, state_);
+      if (code->function == 700 || code->function == 710 || code->function == 720) cycle = code->function;
     }
-    const AxisWordsMean meaning = axisWordsMeaning(b);
+    const AxisWordsMean meaning = axisWordsMeaning(b, system);
     checkCompensationChange(b, before, state_);
     checkWords(b, cycle != 0, meaning);
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
     }
     if (cycle) {
+      refuseIncrementalAddressesInShape(b);
       warnAssumedUnits(b);
       return executeCycle(i, cycle);
     }
@@ -78,6 +83,7 @@ class ProgramRunner {
   }
 
   void executeAxisWords(const Block& b, AxisWordsMean meaning) {
+    if (meaning != AxisWordsMean::Dwell && meaning != AxisWordsMean::Data) refuseIncrementalAddresses(b);
     switch (meaning) {
       case AxisWordsMean::Motion: warnAssumedUnits(b); executeMotion(b, state_.motion); break;
       case AxisWordsMean::Dwell: break;  // G04 X/U: the dwell time
@@ -87,7 +93,7 @@ class ProgramRunner {
       case AxisWordsMean::CoordinateSetting: setCoordinateSystem(b); break;
       case AxisWordsMean::Data: break;  // G10's values, G65's arguments
     }
-    followKnownAxes(known_, b, meaning);
+    followKnownAxes(known_, b, meaning, state_);
   }
 
   // PROG.WHOLE: the toolpath starts where the program first knows the tool's position in its plane
@@ -131,30 +137,26 @@ class ProgramRunner {
     }
   }
 
-  // What a system A cycle code means in G code system B/C, where the programs real shops write in
-  // that system use it every few blocks (issue 14: system B/C itself is not read yet).
-  static const char* systemBCMeaning(int g10) {
-    switch (g10) {
-      case 900: return "absolute programming";
-      case 920: return "the coordinate system setting (system A's G50)";
-      case 940: return "feed per minute (system A's G98)";
-      default: return nullptr;
+  // PROG.GSYS.INCREMENTAL: U/V/W as incremental addresses in G code system B/C are not read (the
+  // manual writes increments as G91 X/Z there; whether U/W also work depends on the machine).
+  void refuseIncrementalAddresses(const Block& b) const {
+    if (const Word* w = incrementalAddressOutsideItsSystem(b, state_)) {
+      throw NotSupported(b.line, w->text + ": in " + gCodeSystemName(state_.gCodeSystem) +
+                                     " the manual writes an incremental move as G91 with X/Z (U/W as incremental "
+                                     "addresses depend on the machine and are not read); write G91 X.. Z.., or "
+                                     "read the program in G code system A (--param 3401#6=0 --param 3401#7=0)");
     }
   }
 
-  // The reason a code is reported as not supported. In system A, G92 is the threading cycle: a
-  // G92 block with an S word and no axis word is most likely system B/C's spindle speed clamp.
-  static std::string notPlannedReason(const GCode& code, const Block& b) {
-    std::string why = std::string(code.name) + " is not planned by the reference yet";
-    if (code.g10 == 920 && b.has('S') && !hasAxisWord(b)) {
-      why += " (in G code system A, G92 is the threading cycle; the maximum spindle speed clamp is G50 S)";
-    } else if (const char* meaning = systemBCMeaning(code.g10)) {
-      why += std::string(" (this is G code system A, where it is that cycle; in G code system B or C — FANUC parameter "
-                         "3401#6 GSB, #7 GSC — it is ") + meaning +
-             ", which cyclecert does not read yet: in system A write absolute X/Z, incremental U/W, G98/G99 for the "
-             "feed unit, G50 for the coordinate system)";
-    }
-    return why;
+  // The same for the shape program ns…nf a cycle block names.
+  void refuseIncrementalAddressesInShape(const Block& cycleBlock) const {
+    const Word* p = cycleBlock.find('P');
+    const Word* q = cycleBlock.find('Q');
+    if (!p || !q) return;
+    const auto ns = program_.findSequence(static_cast<long>(p->value));
+    const auto nf = program_.findSequence(static_cast<long>(q->value));
+    if (!ns || !nf) return;  // the cycle's own alarm names the missing block
+    for (std::size_t k = *ns; k <= *nf && k < program_.blocks.size(); ++k) refuseIncrementalAddresses(program_.blocks[k]);
   }
 
   // PROG.UNITS: a program that moves without G20/G21 before its first move is read in the
@@ -250,10 +252,11 @@ class ProgramRunner {
     return known_.known(axes.first) && known_.known(axes.second);
   }
 
-  // The first axis that the block moves incrementally from an unknown position, or 0.
+  // The first axis that the block moves incrementally (U, or X under G91) from an unknown position,
+  // or 0.
   char incrementalWordOnUnknownAxis(const Block& b) const {
     for (const char axis : {'X', 'Y', 'Z'}) {
-      if (!known_.known(axis) && b.has(incrementalAddress(axis))) return axis;
+      if (!known_.known(axis) && movesAxisIncrementally(b, axis, state_)) return axis;
     }
     return 0;
   }
@@ -261,8 +264,10 @@ class ProgramRunner {
 
   void requireKnownForIncrementalWords(const Block& b) const {
     if (const char axis = incrementalWordOnUnknownAxis(b)) {
-      throw NotSupported(b.line, known_.describe(axis) + " (" + incrementalAddress(axis) +
-                                     " moves from it); position the tool with an absolute " + axis + " word");
+      const std::string word = b.has(incrementalAddress(axis)) ? std::string(1, incrementalAddress(axis))
+                                                                : std::string("G91 ") + axis;
+      throw NotSupported(b.line, known_.describe(axis) + " (" + word + " moves from it); position the tool with an absolute " +
+                                     axis + " word");
     }
   }
 
@@ -318,8 +323,9 @@ class ProgramRunner {
 
   void warnNotApplied(const Block& b) {
     for (const Word* g : b.all('G')) {
-      if (const GCode* code = findGCode(gCode10(g->value)); code && code->support == GSupport::NotApplied) {
-        path_.warnings.push_back({b.line, std::string(code->name) + " is not applied by the reference; position unchanged"});
+      const int g10 = gCode10(g->value);
+      if (const GCode* code = findGCode(state_.gCodeSystem, g10); code && code->support == GSupport::NotApplied) {
+        path_.warnings.push_back({b.line, gCodeLabel(g10) + " " + code->name + " is not applied by the reference; position unchanged"});
       }
     }
   }

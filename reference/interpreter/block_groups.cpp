@@ -5,22 +5,27 @@
 
 namespace cyclecert {
 
-namespace {
-std::string notInSystemAHint(int g10) {
-  if (g10 == 910) return " (G code system A has no G90/G91: U and W are the incremental addresses)";
-  if (g10 == 330) return " (a FANUC lathe threads with G32)";
-  return "";
-}
-}  // namespace
-
-CycleAlarm improperGCode(const Block& b, const Word& g) {
+CycleAlarm improperGCode(const Block& b, const Word& g, GCodeSystem system) {
   return CycleAlarm(alarm::kImproperGCode, b.line,
-                    g.text + " is not a G code of this controller" + notInSystemAHint(gCode10(g.value)));
+                    g.text + " is not a G code of this controller in " + gCodeSystemName(system) +
+                        otherSystemsMeaning(system, gCode10(g.value)));
 }
 
-const Word* firstUnknownGCode(const Block& b) {
+std::string notPlannedReason(const Block& b, const Word& g, GCodeSystem system) {
+  const int g10 = gCode10(g.value);
+  const GCode* code = findGCode(system, g10);
+  std::string why = gCodeLabel(g10) + " " + (code ? code->name : "") + " is not planned by the reference yet";
+  // In system A, G92 is the threading cycle: a G92 block with an S word and no axis word is most
+  // likely system B/C's spindle speed clamp.
+  if (system == GCodeSystem::A && g10 == 920 && b.has('S') && !hasAxisWord(b)) {
+    why += " (in G code system A, G92 is the threading cycle; the maximum spindle speed clamp is G50 S)";
+  }
+  return why + otherSystemsMeaning(system, g10);
+}
+
+const Word* firstUnknownGCode(const Block& b, GCodeSystem system) {
   for (const Word* g : b.all('G')) {
-    if (!findGCode(gCode10(g->value))) return g;
+    if (!findGCode(system, gCode10(g->value))) return g;
   }
   return nullptr;
 }
@@ -33,7 +38,7 @@ void checkCompensationChange(const Block& b, const ModalState& before, const Mod
                          " is in force; cancel the compensation with G40 before changing the plane");
   }
   if (compBefore == compAfter || (after.motion != 2 && after.motion != 3)) return;
-  if (!hasAxisWord(b) || axisWordsMeaning(b) != AxisWordsMean::Motion) return;
+  if (!hasAxisWord(b) || axisWordsMeaning(b, after.gCodeSystem) != AxisWordsMean::Motion) return;
   throw CycleAlarm(alarm::kArcInCompStartOrCancel, b.line,
                    std::string(compAfter ? "compensation start-up (G" + std::to_string(after.tnrc) + ")"
                                          : "compensation cancel (G40)") +

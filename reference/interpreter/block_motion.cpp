@@ -31,15 +31,35 @@ bool hasAxisWord(const Block& b) {
 AxisPosition targetPosition(const Block& b, const ModalState& s) {
   AxisPosition p = s.position;
   for (const AxisLetters& a : kAxes) {
-    if (const Word* w = b.find(a.absolute)) p[a.axis] = physicalLength(w->value, a.diameter, s);
+    if (const Word* w = b.find(a.absolute)) {
+      const double length = physicalLength(w->value, a.diameter, s);
+      p[a.axis] = s.incremental ? p[a.axis] + length : length;  // PROG.GSYS.INCREMENTAL: G91
+    }
     if (const Word* w = b.find(a.incremental)) p[a.axis] += physicalLength(w->value, a.diameter, s);
   }
   return p;
 }
 
-AxisWordsMean axisWordsMeaning(const Block& b) {
+bool setsAxisAbsolutely(const Block& b, char axis, const ModalState& s) { return !s.incremental && b.has(axis); }
+
+bool movesAxisIncrementally(const Block& b, char axis, const ModalState& s) {
+  for (const AxisLetters& a : kAxes) {
+    if (a.axis == axis) return b.has(a.incremental) || (s.incremental && b.has(a.absolute));
+  }
+  return false;
+}
+
+const Word* incrementalAddressOutsideItsSystem(const Block& b, const ModalState& s) {
+  if (s.gCodeSystem != GCodeSystem::B && s.gCodeSystem != GCodeSystem::C) return nullptr;
+  for (const AxisLetters& a : kAxes) {
+    if (const Word* w = b.find(a.incremental)) return w;
+  }
+  return nullptr;
+}
+
+AxisWordsMean axisWordsMeaning(const Block& b, GCodeSystem system) {
   // PROG.GROUP.LAST: of several group 00 codes in one block, the last one is in effect.
-  switch (oneShotCode(b)) {
+  switch (oneShotFunction(b, system)) {
     case 40: return AxisWordsMean::Dwell;
     case 270: return AxisWordsMean::ReferenceCheck;
     case 280: case 300: return AxisWordsMean::ReferenceReturn;
@@ -56,12 +76,12 @@ bool axisWordsMoveTheTool(AxisWordsMean meaning) {
 }
 
 AxisPosition positionAfterBlock(const Block& b, const ModalState& s) {
-  const AxisWordsMean meaning = axisWordsMeaning(b);
+  const AxisWordsMean meaning = axisWordsMeaning(b, s.gCodeSystem);
   if (axisWordsMoveTheTool(meaning) || meaning == AxisWordsMean::CoordinateSetting) return targetPosition(b, s);
   return s.position;  // a dwell, G53's machine coordinates, G10/G65 data
 }
 
-void followKnownAxes(KnownPosition& known, const Block& b, AxisWordsMean meaning) {
+void followKnownAxes(KnownPosition& known, const Block& b, AxisWordsMean meaning, const ModalState& s) {
   static constexpr char kAxes[] = {'X', 'Y', 'Z'};
   static constexpr char kIncrements[] = {'U', 'V', 'W'};
   const bool toReference = meaning == AxisWordsMean::ReferenceReturn;
@@ -74,7 +94,7 @@ void followKnownAxes(KnownPosition& known, const Block& b, AxisWordsMean meaning
   }
   if (!axisWordsMoveTheTool(meaning) && meaning != AxisWordsMean::CoordinateSetting) return;
   for (const char axis : kAxes) {
-    if (b.has(axis)) known.learn(axis);
+    if (setsAxisAbsolutely(b, axis, s)) known.learn(axis);
   }
 }
 

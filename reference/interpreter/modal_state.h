@@ -1,5 +1,6 @@
 #pragma once
 // What the controller remembers between blocks: position, modal G codes, feed.
+#include "reference/interpreter/g_code_system.h"
 #include "reference/interpreter/plane.h"
 #include "reference/model/geometry.h"
 
@@ -20,6 +21,8 @@ struct ModalState {
   int tnrc = 40;         // G40/G41/G42
   int workCoordinates = 54;  // group 14: G54…G59 (their offsets are modelled as zero: PROG.WCS)
   double feed = 0;       // modal F, in mm/min or mm/rev
+  GCodeSystem gCodeSystem = GCodeSystem::A;  // the list the block's G numbers are read in (PROG.GSYS.*)
+  bool incremental = false;  // group 03 G91 (systems B/C, Huazhong): X/Y/Z are incremental
 
   PlaneAxes axes() const { return planeAxes(plane); }
   double unitScale() const { return inch ? 25.4 : 1.0; }

@@ -57,6 +57,14 @@ const std::vector<ParamSpec>& MachineParams::catalogue() {
       {"8133#0", "SSC", true, 0.0, "bit",
        "1: constant surface speed control is enabled (G96/G97 inside ns…nf are then ignored by the cycle)",
        {"G71.CSS"}},
+      {"3401#6", "GSB", true, 0.0, "bit",
+       "1: G code system B (G90/G91 absolute/incremental, G92 coordinate setting, G94/G95 feed modes, "
+       "G77/G78/G79 single cycles); FANUC profiles",
+       {"PROG.GSYS.SELECT", "PROG.GSYS.B"}},
+      {"3401#7", "GSC", true, 0.0, "bit",
+       "1: G code system C (as B, with G70/G71 inch/metric and G72–G78 the multiple repetitive cycles); "
+       "takes precedence over GSB; FANUC profiles",
+       {"PROG.GSYS.SELECT", "PROG.GSYS.C"}},
   };
   return specs;
 }

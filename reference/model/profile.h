@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "reference/interpreter/g_code_system.h"
 #include "reference/model/params.h"
 
 namespace cyclecert {
@@ -32,9 +33,10 @@ struct Profile {
   // "millimetres" or "inches": the default unit's name, for the warning that assumes it.
   std::string defaultUnitsName() const { return inchByDefault ? "inches" : "millimetres"; }
   RoughingBlockFormat roughingFormat = RoughingBlockFormat::FanucTwoBlocks;
-  // Huazhong (seed 003's example 1, `N1 G94 G90`): G90 is absolute programming and G94/G95 feed per
-  // minute/revolution, not FANUC system A's turning cycles. G91 (incremental) is not modelled.
-  bool g9xAreProgrammingModes = false;
+  // PROG.GSYS.SELECT: the G code system the profile reads programs in (Huazhong's own for hnc), and
+  // whether FANUC's parameter 3401#6 GSB / #7 GSC may choose system B or C instead (gCodeSystemOf).
+  GCodeSystem gCodeSystem = GCodeSystem::A;
+  bool gCodeSystemByParameters = false;
   // Huazhong names a program on its first line "%3304" (seed 003's programs); FANUC, GSK and Haas
   // write O3304, and '%' alone frames the program.
   bool namesProgramsWithPercent = false;

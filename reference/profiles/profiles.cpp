@@ -6,8 +6,9 @@ namespace {
 Profile fanuc0iF() {
   Profile p;
   p.name = "fanuc-0i-f";
-  p.description = "FANUC Series 0i-F lathe (T series), G code system A, diameter programming";
+  p.description = "FANUC Series 0i-F lathe (T series), G code system A (B, C with 3401#6 GSB / #7 GSC), diameter programming";
   p.seed = "000_036281bf73fad5d1.txt";
+  p.gCodeSystemByParameters = true;  // PROG.GSYS.SELECT: 3401#6 GSB, #7 GSC
   return p;
 }
 
@@ -39,7 +40,7 @@ Profile hnc() {
   p.description = "Huazhong (HNC) lathe of seed 003: one-block G71 U(Δd) R(r) P Q X(Δx) Z(Δz), ns…nf run again as finishing";
   p.seed = "003_22785bbc34f78b07.txt";
   p.roughingFormat = RoughingBlockFormat::HuazhongOneBlock;
-  p.g9xAreProgrammingModes = true;
+  p.gCodeSystem = GCodeSystem::Huazhong;  // G90/G91, G94/G95 are modes (seed 003 example 1: `N1 G94 G90`)
   p.namesProgramsWithPercent = true;
   return p;
 }
