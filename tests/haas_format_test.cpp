@@ -146,8 +146,9 @@ TEST(HaasFormat, OraclesReadTheHaasBlock) {
   EXPECT_TRUE(c.typeII);
   EXPECT_NEAR(c.allowance.x, 0.3, 1e-12);
   EXPECT_NEAR(c.allowance.z, 0.15, 1e-12);
-  // Compensated: the start-up point is not the programmed B (x 15).
-  EXPECT_GT(std::abs(c.shape.front().to.x - 15.0), 0.01);
+  // Compensated: block ns is the start-up, ending at B + r·n + r·T = (15 + 0.4 - 0.4, 2 + 0 - 0.4).
+  EXPECT_NEAR(c.shape.front().to.x, 15.0, 1e-9);
+  EXPECT_NEAR(c.shape.front().to.z, 1.6, 1e-9);
 
   const ProgramSpec onFanuc = readProgramSpec(program, *findProfile("fanuc-0i-f"),
                                               findProfile("fanuc-0i-f")->defaults, ToolOffset{0.4, 3});
