@@ -243,6 +243,7 @@ class SpecReader {
   // least input increments, and it stays in parameter 5132; with FCV = 0 a D there is PS0009.
   std::optional<Alarm> readSeries10Depth(const Block& b, CycleSpec& c) {
     const Word* d = b.find('D');
+    if (haas()) return readHaasWords(b, c);
     if (!params_.bit("FCV")) {
       if (d) return forbidden("PS0009", b.line, "D in the P/Q block needs the Series 10/11 format (FCV = 1)");
       return std::nullopt;
@@ -258,6 +259,35 @@ class SpecReader {
     if (d->value <= 0) return forbidden("PS0062", b.line, "D is not positive");
     if (d->value > 999'999'999) return forbidden("PS0003", b.line, "D has more than 9 digits");
     c.depthOfCut = d->value * (state_.inch ? 0.0001 * 25.4 : 0.001);
+    params_.set("5132", c.depthOfCut);
+    return std::nullopt;
+  }
+
+  // HAAS.G71.FMT: the Haas one-block G71/G72 P Q U W D I K F S T [R1].
+  bool haas() const { return profile_.roughingFormat == RoughingBlockFormat::HaasOneBlock; }
+
+  // HAAS.G71.D: D = Δd in the program's units (radius, positive), kept in 5132 like a first block's;
+  // HAAS.G71.IK: I (radius) and K, the rough-pass allowance, add to U/2 and W; HAAS.G71.R1: R1
+  // selects type II, another R there is PS0009.
+  std::optional<Alarm> readHaasWords(const Block& b, CycleSpec& c) {
+    try {
+      for (char letter : {'I', 'K'}) {
+        if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::Allowance, state_.inch);
+      }
+      if (const Word* d = b.find('D'); d && d->value > 0) checkCycleAddress(*d, CycleAddress::DepthOfCut, state_.inch);
+    } catch (const CycleAlarm& a) {
+      return a.alarm();
+    }
+    if (const Word* i = b.find('I')) c.allowance.x += i->value * state_.unitScale();
+    if (const Word* k = b.find('K')) c.allowance.z += k->value * state_.unitScale();
+    if (const Word* r = b.find('R')) {
+      if (r->value != 1 || r->hasDecimalPoint) return forbidden("PS0009", b.line, "R other than R1 in a Haas P/Q block");
+      haasTypeII_ = true;
+    }
+    const Word* d = b.find('D');
+    if (!d) return std::nullopt;
+    if (d->value <= 0) return forbidden("PS0062", b.line, "D is not positive");
+    c.depthOfCut = d->value * state_.unitScale();
     params_.set("5132", c.depthOfCut);
     return std::nullopt;
   }
@@ -334,6 +364,7 @@ class SpecReader {
     std::optional<Alarm> huazhongAlarm;
     if (oneBlock && (b.has('P') || b.has('Q'))) huazhongAlarm = readHuazhongDepth(b);
     CycleSpec c;
+    haasTypeII_ = false;
     c.code = code;
     c.line = b.line;
     c.start = state_.planePoint();
@@ -390,11 +421,12 @@ class SpecReader {
     const bool g71 = c.code == "G71";
     const char depthAbs = g71 ? axes.second : axes.first, depthInc = g71 ? axes.secondInc : axes.firstInc;
     const char cutAbs = g71 ? axes.first : axes.second, cutInc = g71 ? axes.firstInc : axes.secondInc;
-    c.typeII = head.has(cutAbs) || head.has(cutInc);
+    c.typeII = head.has(cutAbs) || head.has(cutInc) || haasTypeII_;  // HAAS.G71.R1
     c.headIsRapid = !head.hasG(10);
     for (std::size_t i = ns; i <= nf; ++i) {
       const Block& b = program_.blocks[i];
-      if (auto bad = checkShapeCommands(b, profile_.toleratesTnrcInShape || params_.bit("NT1"))) {
+      if (auto bad = checkShapeCommands(b, profile_.toleratesTnrcInShape || profile_.compensatesTnrcInShape ||
+                                               params_.bit("NT1"))) {
         c.forbiddenBy = bad;
         return;
       }
@@ -415,15 +447,17 @@ class SpecReader {
     if (c.shape.empty()) c.shape.push_back(Segment{SegmentKind::Line, c.start, c.start, {}, head.line});
     c.semiFinish = !params_.bit(c.typeII ? "RF2" : "RF1");
     c.noRepeatedPath = params_.bit("NSP");
-    compensate(c);
+    compensate(c, profile_.compensatesTnrcInShape ? tnrcOfBlock(head) : 40);
     if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_,
                                            !huazhong());  // seed 003 has no LIMIT.HEIGHT (its example 2 ends below A)
   }
 
   // G71.TNRC.CANCEL / G71.CHECK: under G41/G42 the cycle works on the imaginary tool-nose path.
-  void compensate(CycleSpec& c) {
-    if (state_.tnrc == 40 || tool_.noseRadius <= 0 || c.shape.size() < 2) return;
-    const CompensationSide side = state_.tnrc == 41 ? CompensationSide::Left : CompensationSide::Right;
+  // HAAS.TNRC.SHAPE: on Haas, G41/G42 in block ns compensate the shape as if in force at the cycle.
+  void compensate(CycleSpec& c, int inShape) {
+    const int tnrc = inShape != 40 ? inShape : state_.tnrc;
+    if (tnrc == 40 || tool_.noseRadius <= 0 || c.shape.size() < 2) return;
+    const CompensationSide side = tnrc == 41 ? CompensationSide::Left : CompensationSide::Right;
     std::vector<Segment> body(c.shape.begin() + 1, c.shape.end());
     try {
       Segment head = c.shape.front();
@@ -437,8 +471,11 @@ class SpecReader {
     }
   }
 
+  static int tnrcOfBlock(const Block& b) { return b.hasG(410) ? 41 : (b.hasG(420) ? 42 : 40); }
+
   const Program& program_;
   const Profile& profile_;
+  bool haasTypeII_ = false;  // HAAS.G71.R1 in the cycle block being read
   MachineParams params_;
   const ToolOffset& tool_;
   ModalState state_;

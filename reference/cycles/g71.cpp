@@ -83,7 +83,8 @@ CycleOutcome planG71(const CycleCall& call) {
   const SecondBlock sb = readSecondBlock(call, g71Format(call));
   return withShapeAlarmTiming(call, [&] {
     ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
-    const bool typeII = selectsTypeII(call, shape);
+    // HAAS.G71.R1: R1 selects type II whatever block ns commands.
+    const bool typeII = selectsTypeII(call, shape) || sb.typeIIRequested;
     compensateShape(call, shape);
     checkLimitHeight(shape, sb.allowanceSecond);
     const RoughingFrame frame = g71Frame(call);

@@ -51,7 +51,8 @@ CycleOutcome planG72(const CycleCall& call) {
   const SecondBlock sb = readSecondBlock(call, g72Format(call));
   return withShapeAlarmTiming(call, [&] {
     ShapeProgram shape = readShapeProgram(call, *sb.p, *sb.q);
-    const bool typeII = selectsTypeII(call, shape);
+    // HAAS.G71.R1: R1 selects type II whatever block ns commands.
+    const bool typeII = selectsTypeII(call, shape) || sb.typeIIRequested;
     compensateShape(call, shape);
     const RoughingFrame frame = g72Frame(call);
     return typeII ? planTypeII(call, shape, sb, frame) : planTypeI(call, shape, sb, frame);

@@ -50,8 +50,8 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
     checkCycleAddress(*dw, CycleAddress::Allowance, call.modal.inch);
     s.allowanceFirst = physicalLength(dw->value, axes.firstDiameter, call.modal);
   }
-  // G71.FS10.FMT: the one-block Series 10/11 format's D (FCV = 1), or its refusal (FCV = 0).
-  readSeries10Words(call, format.code);
+  // G71.FS10.FMT, HAAS.G71.FMT: the one-block forms' D (and Haas's I, K, R1), or D's refusal.
+  readOneBlockWords(call, format.code, s);
   // G71.FST: the F of the cycle blocks, or the modal F before them (the runner keeps it).
   s.feed = call.modal.feed;
   if (s.feed <= 0) {
@@ -132,7 +132,7 @@ CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const Sec
   out.moves = std::move(moves);
   out.resumeAt = resumeIndexAfterCycle(call, shape);
   out.shape = shape.finishShape();
-  out.allowance = {sb.allowanceFirst, sb.allowanceSecond};
+  out.allowance = sb.leftByRoughing();
   out.compensated = shape.compensated;
   return out;
 }
@@ -146,7 +146,7 @@ CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const S
   cycle.start = toFrame(shape.start, frame);
   cycle.headEnd = toFrame(shape.headEnd, frame);
   cycle.body = toFrame(shape.body, frame);
-  cycle.allowance = toFrame(Point{sb.allowanceFirst, sb.allowanceSecond}, frame);
+  cycle.allowance = toFrame(sb.leftByRoughing(), frame);
   cycle.headIsRapid = shape.headIsRapid;
   cycle.feed = sb.feed;
   cycle.depthOfCut = depthOfCut(call, frame.code);
@@ -166,7 +166,7 @@ CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const 
   cycle.code = frame.code;
   cycle.start = toFrame(shape.start, frame);
   cycle.shape = toFrame(shape.finishShape(), frame);
-  cycle.allowance = toFrame(Point{sb.allowanceFirst, sb.allowanceSecond}, frame);
+  cycle.allowance = toFrame(sb.leftByRoughing(), frame);
   cycle.headIsRapid = shape.headIsRapid;
   cycle.feed = sb.feed;
   cycle.depthOfCut = depthOfCut(call, frame.code);

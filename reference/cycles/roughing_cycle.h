@@ -27,6 +27,11 @@ struct SecondBlock {
   double allowanceFirst = 0;   // Δw (along the plane's 1st axis)
   double allowanceSecond = 0;  // Δu/2 on a diameter axis, Δu otherwise (along the 2nd axis)
   double feed = 0;
+  Point roughAllowance;        // Haas I (x, radius) and K (z): left by the rough passes on top (HAAS.G71.IK)
+  bool typeIIRequested = false;// Haas R1 (HAAS.G71.R1)
+
+  // What the rough passes leave on the finish shape: Δw and Δu/2, plus Haas's K and I (HAAS.G71.IK).
+  Point leftByRoughing() const { return {allowanceFirst + roughAllowance.z, allowanceSecond + roughAllowance.x}; }
 };
 
 // Reads and range-checks the block with P and Q. Throws CycleAlarm (PS0061, PS0003, PS0011).

@@ -3,11 +3,17 @@
 #include <cmath>
 #include <string>
 
+#include "reference/cycles/roughing_cycle.h"
+#include "reference/gcode/address_ranges.h"
+#include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {
 
 namespace {
+
+const OneBlockDialect kSeries10{"Series 10/11", OneBlockDialect::DepthUnits::LeastInputIncrements, false, false, false};
+const OneBlockDialect kHaas{"Haas", OneBlockDialect::DepthUnits::ProgramUnits, true, true, true};
 
 std::string wordAt(const Word& w) { return w.text + " at column " + std::to_string(w.column); }
 
@@ -16,7 +22,13 @@ void refuseSeries10Depth(const Word& d, const std::string& code) {
   throw cycleBlockAlarm(alarm::kImproperAddress, d.line,
                         wordAt(d) + ": D in a " + code + " P/Q block is the Series 10/11 program format; " +
                             "set parameter 0001#1 (FCV) = 1 to read it (--param FCV=1), or give Δd in a first " +
-                            code + " block");
+                            code + " block (a Haas program: --profile haas)");
+}
+
+void requirePositiveDepth(const Word& d) {
+  if (d.value <= 0) {
+    throw cycleBlockAlarm(alarm::kCuttingAmount, d.line, wordAt(d) + ": the depth of cut must be positive");
+  }
 }
 
 // G71.FS10.D: D without a decimal point, in least input increments (IS-B: 0.001 mm, 0.0001 inch).
@@ -24,14 +36,26 @@ double depthFromLeastIncrements(const Word& d, const ModalState& modal) {
   if (d.hasDecimalPoint) {
     throw cycleBlockAlarm(alarm::kIllegalDecimalPoint, d.line,
                           wordAt(d) + ": D of the Series 10/11 format is written without a decimal point, in least "
-                                      "input increments (D1000 = 1.000 mm)");
+                                      "input increments (D1000 = 1.000 mm); a Haas program writes D1.0 (--profile haas)");
   }
-  if (d.value <= 0) {
-    throw cycleBlockAlarm(alarm::kCuttingAmount, d.line, wordAt(d) + ": the depth of cut must be positive");
-  }
+  requirePositiveDepth(d);
   if (d.value > 999'999'999) throw cycleBlockAlarm(alarm::kOutOfRange, d.line, wordAt(d) + " has more than 9 digits");
   const double leastIncrement = modal.inch ? 0.0001 : 0.001;
   return d.value * leastIncrement * modal.unitScale();
+}
+
+// HAAS.G71.D: "D - depth of cut for each pass of stock removal, positive radius", in the program's
+// units like its other dimension words (D.1 in a G20 program is 0.1 inch); the range of a first
+// block's Δd (G72.RANGE).
+double depthInProgramUnits(const Word& d, const ModalState& modal) {
+  requirePositiveDepth(d);
+  checkCycleAddress(d, CycleAddress::DepthOfCut, modal.inch);
+  return d.value * modal.unitScale();
+}
+
+double depthOfCutWord(const OneBlockDialect& dialect, const Word& d, const ModalState& modal) {
+  return dialect.depthUnits == OneBlockDialect::DepthUnits::LeastInputIncrements ? depthFromLeastIncrements(d, modal)
+                                                                                : depthInProgramUnits(d, modal);
 }
 
 // G71.FS10.IK: I and K are read; cyclecert does not model them (the manual's text for them is not
@@ -46,17 +70,62 @@ void checkSeries10IK(const Block& b, const std::string& code) {
   }
 }
 
+// HAAS.G71.IK: I = "X-axis size and direction of the rough pass allowance, radius", K = the Z-axis
+// one: the rough passes leave them on top of the finish allowance U/W.
+Point roughAllowance(const Block& b, const ModalState& modal) {
+  Point allowance;
+  if (const Word* i = b.find('I')) {
+    checkCycleAddress(*i, CycleAddress::Allowance, modal.inch);
+    allowance.x = i->value * modal.unitScale();  // a radius value: not halved
+  }
+  if (const Word* k = b.find('K')) {
+    checkCycleAddress(*k, CycleAddress::Allowance, modal.inch);
+    allowance.z = k->value * modal.unitScale();
+  }
+  return allowance;
+}
+
+// HAAS.G71.R1: "R1 (with no decimal)" on the cycle block selects type II roughing; any other R
+// there has no documented meaning.
+bool requestsTypeII(const Block& b) {
+  const Word* r = b.find('R');
+  if (!r) return false;
+  if (r->value == 1 && !r->hasDecimalPoint) return true;
+  throw cycleBlockAlarm(alarm::kImproperAddress, r->line,
+                        wordAt(*r) + ": R in a Haas G71/G72 P/Q block can only be R1 (no decimal point), which "
+                                     "selects type II roughing; the retract is Setting 73 (parameter 5133)");
+}
+
+// HAAS.G71.PLANE: the Haas pages give G71/G72 in the Z-X plane only.
+void requireZxPlane(const OneBlockDialect& dialect, const CycleCall& call, const std::string& code) {
+  if (!dialect.zxPlaneOnly || call.modal.plane == 18) return;
+  throw NotSupported(call.block().line, "the " + dialect.name + " " + code + " needs the Z-X plane (G18); G" +
+                                            std::to_string(call.modal.plane) + " is in force");
+}
+
 }  // namespace
 
-void readSeries10Words(const CycleCall& call, const std::string& code) {
+const OneBlockDialect* oneBlockDialect(const CycleCall& call) {
+  if (call.profile.roughingFormat == RoughingBlockFormat::HaasOneBlock) return &kHaas;
+  return call.params.bit("FCV") ? &kSeries10 : nullptr;
+}
+
+void readOneBlockWords(const CycleCall& call, const std::string& code, SecondBlock& sb) {
   const Block& b = call.block();
   const Word* d = b.find('D');
-  if (!call.params.bit("FCV")) {
+  const OneBlockDialect* dialect = oneBlockDialect(call);
+  if (!dialect) {
     if (d) refuseSeries10Depth(*d, code);
     return;
   }
-  checkSeries10IK(b, code);
-  if (d) call.params.set("5132", depthFromLeastIncrements(*d, call.modal));
+  requireZxPlane(*dialect, call, code);
+  if (dialect->readsRoughAllowance) {
+    sb.roughAllowance = roughAllowance(b, call.modal);
+  } else {
+    checkSeries10IK(b, code);
+  }
+  if (dialect->r1SelectsTypeII) sb.typeIIRequested = requestsTypeII(b);
+  if (d) call.params.set("5132", depthOfCutWord(*dialect, *d, call.modal));
 }
 
 }  // namespace cyclecert

@@ -33,6 +33,21 @@ bool usableInShape(int g10) {
 
 bool isTnrcCode(int g10) { return g10 == 400 || g10 == 410 || g10 == 420; }
 
+// HAAS.TNRC.SHAPE: G41/G42 start compensation in block ns, G40 ends it in block nf (or ns). Elsewhere
+// compensation would change in the middle of the roughed shape, which the plan does not model.
+void readShapeCompensation(const Block& b, std::size_t i, ShapeProgram& shape) {
+  const bool starts = b.hasG(410) || b.hasG(420);
+  if (starts && i == shape.nsIndex) {
+    shape.compensationInShape = b.hasG(410) ? 41 : 42;
+    return;
+  }
+  if (starts || (b.hasG(400) && i != shape.nfIndex && i != shape.nsIndex)) {
+    throw NotSupported(b.line, std::string(starts ? "G41/G42" : "G40") + " in the middle of the shape program: "
+                               "cyclecert compensates a roughing shape from G41/G42 in its first block (P) to G40 "
+                               "in its last (Q) only");
+  }
+}
+
 }  // namespace
 
 void checkUsableInShape(const Block& b, bool tnrcAllowed) {
@@ -91,7 +106,9 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
   for (std::size_t i = shape.nsIndex; i <= shape.nfIndex; ++i) {
     const Block& b = call.program.blocks[i];
     // G71.TNRC.NT1: with NT1 = 1 compensation codes in a roughing shape are ignored without alarm.
-    checkUsableInShape(b, call.profile.toleratesTnrcInShape || call.params.bit("NT1"));
+    checkUsableInShape(b, call.profile.toleratesTnrcInShape || call.profile.compensatesTnrcInShape ||
+                              call.params.bit("NT1"));
+    if (call.profile.compensatesTnrcInShape) readShapeCompensation(b, i, shape);
     s.motion = motionCode(b, s.motion);
     checkShapeBlockWords(b, s);  // PROG.RANGE, PROG.ADDRESS
     if (!hasAxisWord(b)) continue;
@@ -107,8 +124,9 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
 }
 
 void compensateShape(const CycleCall& call, ShapeProgram& shape) {
-  if (call.modal.tnrc == 40 || call.tool.noseRadius <= 0 || shape.body.empty()) return;
-  const CompensationSide side = call.modal.tnrc == 41 ? CompensationSide::Left : CompensationSide::Right;
+  const int tnrc = shape.compensationInShape != 40 ? shape.compensationInShape : call.modal.tnrc;
+  if (tnrc == 40 || call.tool.noseRadius <= 0 || shape.body.empty()) return;
+  const CompensationSide side = tnrc == 41 ? CompensationSide::Left : CompensationSide::Right;
   try {
     shape.headEnd = startUpPoint(shape.headEnd, shape.body.front(), call.tool, side);
     shape.body = compensatedPath(shape.body, call.tool, side);

@@ -17,6 +17,7 @@ struct ShapeProgram {
   Point headEnd;                 // B
   std::vector<Segment> body;     // B → C
   bool compensated = false;      // B and the body are the compensated path (G41/G42 at the cycle)
+  int compensationInShape = 40;  // HAAS.TNRC.SHAPE: G41/G42 commanded in block ns (haas profile)
 
   // The whole finish shape A → B → C (the head block as a line).
   std::vector<Segment> finishShape() const;
@@ -42,7 +43,8 @@ int motionCode(const Block& b, int modal);
 // on the compensated shape: A stays where it is (compensation is cancelled on the way to the start
 // point), block ns is the start-up (its end B moves to the compensated position for the next
 // block), and the body is the path of the imaginary tool-nose point. PS0041 when the nose radius
-// does not fit the shape.
+// does not fit the shape. HAAS.TNRC.SHAPE: on a profile that compensates the shape, G41/G42 in
+// block ns do the same (block ns is then the start-up block, as the manual's examples write it).
 void compensateShape(const CycleCall& call, ShapeProgram& shape);
 
 // G72.NSNF.FOLLOW: execution resumes after nf when ns directly follows the cycle block,

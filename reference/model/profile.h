@@ -13,8 +13,11 @@ namespace cyclecert {
 // How a G71 block gives the cycle's values. FANUC: two blocks `G71 U(Δd) R(e);` and `G71 P Q U(Δu)
 // W(Δw) F S T;` (G71.FMT.ZX; one block with FCV = 1, G71.FS10.FMT). Huazhong: one block
 // `G71 U(Δd) R(r) P(ns) Q(nf) X(Δx) Z(Δz) F S T`, after which execution goes on with the block
-// after G71, so ns…nf run again as the finishing pass (HNC.G71.FMT, HNC.G71.FST).
-enum class RoughingBlockFormat { FanucTwoBlocks, HuazhongOneBlock };
+// after G71, so ns…nf run again as the finishing pass (HNC.G71.FMT, HNC.G71.FST). Haas: FANUC's
+// two blocks, or one block `G71/G72 P Q U W D I K F S T [R1]` with D = Δd in program units and I/K
+// the rough-pass allowance (HAAS.G71.FMT); reference/cycles/series10_format.h reads both one-block
+// forms.
+enum class RoughingBlockFormat { FanucTwoBlocks, HuazhongOneBlock, HaasOneBlock };
 
 struct Profile {
   std::string name;         // "fanuc-0i-f", "gsk"
@@ -24,6 +27,9 @@ struct Profile {
   // GSK (seed 001) accepts G40/G41/G42 inside ns…nf and ignores them during roughing; FANUC 0i-F
   // raises PS0325 unless NT1 (issue 3).
   bool toleratesTnrcInShape = false;
+  // Haas (HAAS.TNRC.SHAPE): G41/G42 in block ns of a roughing shape compensates the shape the cycle
+  // roughs (its manual's examples put them there); FANUC 0i-F alarms PS0325.
+  bool compensatesTnrcInShape = false;
   // G71.T2.ORDER: 0i-F roughs a pocket to its bottom before the next (depth first); 0i-C cuts
   // every pocket at one level before going deeper.
   bool pocketsLevelByLevel = false;

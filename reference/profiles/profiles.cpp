@@ -44,10 +44,29 @@ Profile hnc() {
   p.namesProgramsWithPercent = true;
   return p;
 }
+
+// Haas lathe (Classic/NGC operator's manual, G71/G72 pages): FANUC's cycles with a one-block form
+// (HAAS.G71.FMT), G41/G42 inside P…Q compensating the shape (HAAS.TNRC.SHAPE). Its alarm numbers are
+// not in our sources: the FANUC 0i-F codes stand in for them (interpretation, as for hnc).
+Profile haas() {
+  Profile p;
+  p.name = "haas";
+  p.description = "Haas lathe: G71/G72 in one block P Q U W D I K F S T (R1 type II), G41/G42 inside P…Q compensate the shape";
+  p.seed = "http://staging-diy.haascnc.com/g71-odid-stock-removal-cycle-group-00-0";
+  p.roughingFormat = RoughingBlockFormat::HaasOneBlock;
+  p.compensatesTnrcInShape = true;
+  // HAAS.G71.SETTINGS: D omitted: Setting 72 (can cycle cut depth); the retract: Setting 73 (can
+  // cycle retraction), here parameters 5132/5133. Defaults 0.1000 in and 0.0500 in (interpretation).
+  p.defaults.set("5132", 2.54);
+  p.defaults.set("5133", 1.27);
+  // HAAS.TNRC.SHAPE: G70 follows the compensation commanded inside its shape, as NT2 = 1 does.
+  p.defaults.set("NT2", 1);
+  return p;
+}
 }  // namespace
 
 const std::vector<Profile>& allProfiles() {
-  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk(), hnc()};
+  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk(), hnc(), haas()};
   return profiles;
 }
 
