@@ -55,8 +55,13 @@ class RetractOracle : public Oracle {
       findings.push_back(f);
     }
 
+    // e = 0 (R0, or 5133 = 0): the retract has no length, so no move shows it (an engine leaves out
+    // a move of length 0, as the reference does): there is nothing to judge after the pass.
+    bool retractIsNil() const { return c.retract <= tol; }
+
     // Type I: the move after the pass is the 45° retract: e back along the cut, e out.
     void typeIPassLeaves(std::size_t pass, const Oracle& o, std::vector<Finding>& findings) const {
+      if (retractIsNil()) return;
       const std::size_t r = pass + 1;
       if (!isFeedLine(r) || std::abs(back(r) - c.retract) > tol || std::abs(out(r) - c.retract) > tol) {
         std::ostringstream s;
@@ -74,6 +79,7 @@ class RetractOracle : public Oracle {
     // Type II: after following the shape, the last feed before the tool travels moves out along the
     // depth axis by at least e (the follow and the retract may be one move or two).
     void typeIIPassLeaves(std::size_t pass, const Oracle& o, std::vector<Finding>& findings) const {
+      if (retractIsNil()) return;
       std::size_t next = pass + 1;
       while (next < in.path.moves.size() && !travels(next)) ++next;
       if (next >= in.path.moves.size()) return;  // no travel after it: nothing to judge
