@@ -298,6 +298,7 @@ class SpecReader {
   // HNC.G71.FMT: U (Δd) and R (r) of the Huazhong block; kept like FANUC's modal 5132/5133.
   std::optional<Alarm> readHuazhongDepth(const Block& b) {
     try {
+      refuseAddressesOutsideHuazhongG71(b);
       if (const Word* dd = b.find('U')) checkCycleAddress(*dd, CycleAddress::DepthOfCut, state_.inch);
       if (const Word* r = b.find('R')) checkCycleAddress(*r, CycleAddress::Retract, state_.inch);
     } catch (const CycleAlarm& a) {

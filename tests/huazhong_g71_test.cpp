@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "harness/judging.h"
 #include "harness/reference_plan.h"
 #include "reference/model/alarms.h"
 
@@ -52,6 +53,29 @@ TEST(HuazhongG71, SubprogramInShapeIsNotSupported) {
 TEST(HuazhongG71, G72IsNotSupported) {
   EXPECT_THROW(plan("G00 X54 Z3;\nG72 W1 R1;\nG72 P11 Q12 U0.6 W0.1 F100;\nN11 G00 Z-10;\nN12 G01 X0;\nM30;\n", "hnc"),
                NotSupported);
+}
+
+}  // namespace
+}  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+// HNC.G71.FMT: a FANUC/Haas one-block G71 handed to the hnc profile is PS0009 naming the profiles
+// that read it, not planned with W and D ignored (it was: U read as Δd, the allowances dropped).
+TEST(HuazhongG71Addresses, FanucOrHaasOneBlockFormatIsAnImproperAddress) {
+  const std::string program =
+      "G21;\nG00 X40. Z2.;\nG71 P10 Q20 U0.4 W0.1 D1.5 F0.2;\nN10 G00 X20.;\nN20 G01 X40. Z-20.;\nM30;\n";
+  const Toolpath t = planWithReference({program, "hnc.nc", "hnc", {}, {}});
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "PS0009");
+  EXPECT_EQ(t.alarm->line, 3);
+  EXPECT_NE(t.alarm->message.find("W0.1 at column"), std::string::npos) << t.alarm->message;
+  EXPECT_NE(t.alarm->message.find("--profile haas"), std::string::npos) << t.alarm->message;
+  // The oracles' reading of the program asks for the same alarm.
+  JudgeRequest request;
+  request.program = {program, "hnc.nc", "hnc", {}, {}};
+  EXPECT_TRUE(judge(judgeInputFor(request, t)).empty());
 }
 
 }  // namespace

@@ -64,6 +64,7 @@ SecondBlock readHuazhongG71Block(const CycleCall& call) {
                           std::string("G71 block has ") + (s.p ? "P but no Q" : "Q but no P") +
                               " (both are required, HNC.G71.PQ)");
   }
+  refuseAddressesOutsideHuazhongG71(b);
   checkCycleAddress(*s.p, CycleAddress::SequenceNumber, call.modal.inch);
   checkCycleAddress(*s.q, CycleAddress::SequenceNumber, call.modal.inch);
   readDepthAndRetract(call);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string>
 
 #include "reference/model/alarms.h"
 
@@ -36,6 +37,22 @@ void checkCycleAddress(const Word& w, CycleAddress role, bool inch) {
   CycleAlarm a(alarm::kOutOfRange, w.line, range.str());
   a.setWhen("cycle block");
   throw a;
+}
+
+// HNC.G71.FMT: the block's addresses are G, U, R, P, Q, X, Z and F, S, T (and M); any other has no
+// meaning in it (PS0009). W, D, I and K are those of the FANUC and Haas one-block formats.
+void refuseAddressesOutsideHuazhongG71(const Block& b) {
+  static constexpr std::string_view kFormat = "GURPQXZFSTM";
+  for (const Word& w : b.words) {
+    if (kFormat.find(w.letter) != std::string_view::npos) continue;
+    std::string why = w.text + " at column " + std::to_string(w.column) +
+                      ": the Huazhong G71 is G71 U(Δd) R(r) P(ns) Q(nf) X(Δx) Z(Δz) F S T, without " + w.letter;
+    if (std::string_view("WDIK").find(w.letter) != std::string_view::npos) {
+      why += " (G71 P Q U W D is the Haas one-block format, --profile haas, or FANUC's Series 10/11 format, "
+             "--profile fanuc-0i-f --param FCV=1)";
+    }
+    throw cycleBlockAlarm(alarm::kImproperAddress, b.line, why);
+  }
 }
 
 }  // namespace cyclecert

@@ -19,4 +19,8 @@ AddressRange rangeOf(CycleAddress role, bool inch);
 // alarm PS0062 (illegal cutting amount); anything else outside its range is PS0003.
 void checkCycleAddress(const Word& w, CycleAddress role, bool inch);
 
+// HNC.G71.FMT: an address other than G U R P Q X Z F S T M in the block is PS0009 (CycleAlarm),
+// naming the FANUC/Haas one-block formats for W, D, I, K. The oracles' reading checks it too.
+void refuseAddressesOutsideHuazhongG71(const Block& b);
+
 }  // namespace cyclecert
