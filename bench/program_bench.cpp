@@ -1,7 +1,7 @@
 // A whole shop program of 2,000 blocks with two roughing cycles (issue 14: planning it stays under
 // 5 ms): the program is written once, outside the timed loops, in the style of corpus/field/*.nc —
 // safe-start lines, tool changes, G50 S clamp, G96, coolant, comments, N numbers, a G72 facing and
-// a G71 turning cycle each finished by G70, some 1,800 positioning and feed blocks with arcs (a
+// a G71 turning cycle each finished by G70, some 1,900 positioning and feed blocks with arcs (a
 // CAM-style profiling section), a part-off. Measured: parsing alone, planning the parsed program
 // (program runner), parse + plan as `cyclecert plan` does (planWithReference), and the oracles
 // judging the reference's path.
