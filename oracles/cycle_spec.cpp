@@ -48,13 +48,15 @@ Alarm forbidden(std::string code, int line, std::string why) { return Alarm{std:
 
 bool isMotionCode(int g10) { return g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30; }
 
-// G72.NSNF.GCODES, G71.TNRC.PLACE: what a shape program may contain.
-std::optional<Alarm> checkShapeCommands(const Block& b, bool compensationAllowed) {
+// G72.NSNF.GCODES, G71.TNRC.PLACE, PROG.GSYS.B: what a shape program may contain, each code by
+// its function in the program's system (the table's usableInShapeProgram, as the runner asks it).
+std::optional<Alarm> checkShapeCommands(const Block& b, GCodeSystem system, bool compensationAllowed) {
   for (const Word* g : b.all('G')) {
-    const int g10 = gCode10(g->value);
-    const bool tnrc = g10 == 400 || g10 == 410 || g10 == 420;
-    const bool allowed = isMotionCode(g10) || g10 == 40 || (g10 >= 960 && g10 <= 990 && g10 % 10 == 0) || tnrc;
-    if (!allowed || (tnrc && !compensationAllowed)) return forbidden("PS0325", b.line, g->text + " in the shape program");
+    const GCode* code = findGCode(system, gCode10(g->value));
+    const bool tnrc = code && code->group == GGroup::NoseRadiusComp;
+    if (!code || !usableInShapeProgram(*code) || (tnrc && !compensationAllowed)) {
+      return forbidden("PS0325", b.line, g->text + " in the shape program");
+    }
   }
   for (const Word* m : b.all('M')) {
     if (m->value == 98 || m->value == 99) return forbidden("PS0325", b.line, "subprogram call in the shape program");
@@ -426,14 +428,15 @@ class SpecReader {
     c.headIsRapid = !head.hasG(10);
     for (std::size_t i = ns; i <= nf; ++i) {
       const Block& b = program_.blocks[i];
-      if (auto bad = checkShapeCommands(b, profile_.toleratesTnrcInShape || profile_.compensatesTnrcInShape ||
-                                               params_.bit("NT1"))) {
+      if (auto bad = checkShapeCommands(b, s.gCodeSystem, profile_.toleratesTnrcInShape ||
+                                                              profile_.compensatesTnrcInShape || params_.bit("NT1"))) {
         c.forbiddenBy = bad;
         return;
       }
       for (const Word* g : b.all('G')) {
         if (isMotionCode(gCode10(g->value))) s.motion = gCode10(g->value) / 10;
       }
+      applyGroupCodes(b, GGroup::Programming, s);  // PROG.GSYS.B: G90/G91 of systems B/C
       if (!hasAxisWord(b)) continue;
       const int motion = i == ns ? (head.hasG(10) ? 1 : 0) : s.motion;
       try {

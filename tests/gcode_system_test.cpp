@@ -213,5 +213,86 @@ TEST(GCodeSystemOracles, JudgeTheReferencesPathsOfSystemBAndCPrograms) {
   }
 }
 
+// PROG.GSYS.B: the codes a shape program ns…nf may contain are judged by their function in the
+// program's system (G72.NSNF.GCODES). The reference's path and the oracles' reading of the cycle.
+struct ShapeCodeVerdict {
+  Toolpath path;
+  std::optional<Alarm> oracleForbids;  // the oracles' own reading of the G71 cycle
+};
+
+ShapeCodeVerdict planAndRead(const std::string& program, const Params& params, const std::string& profile = "fanuc-0i-f") {
+  JudgeRequest request;
+  request.program = {program, "shape.nc", profile, params, {}};
+  ShapeCodeVerdict v{planWithReference(request.program), std::nullopt};
+  const JudgeInput in = judgeInputFor(request, v.path);
+  EXPECT_EQ(in.program.cycles.size(), 1u) << program;
+  if (!in.program.cycles.empty()) v.oracleForbids = in.program.cycles.front().forbiddenBy;
+  EXPECT_TRUE(judge(in).empty()) << program << findingsText(judge(in));
+  return v;
+}
+
+// The shape of kSmallG71Cycle from A = (X40, Z2): B at X20, then Z-10 (12 along Z), then X40 Z-20.
+TEST(GCodeSystemShape, G91InsideNsNfPlansTheSamePathAsSystemAsUW) {
+  // Before: "G91 cannot be used between P and Q" (PS0325), read by its system A number.
+  const std::string systemA =
+      "G21;\nG00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 U-20;\nG01 W-12;\nN20 U20 W-10;\n"
+      "G70 P10 Q20;\nG00 X80 Z20;\nM30;\n";
+  const std::string systemB =
+      "G21;\nG90 G00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G91 G00 X-20;\nG01 Z-12;\nN20 X20 Z-10;\n"
+      "G70 P10 Q20;\nG90 G00 X80 Z20;\nM30;\n";
+  const ShapeCodeVerdict a = planAndRead(systemA, {}), b = planAndRead(systemB, kSystemB);
+  ASSERT_FALSE(a.path.alarm) << a.path.alarm->message;
+  ASSERT_FALSE(b.path.alarm) << b.path.alarm->message;
+  EXPECT_FALSE(b.oracleForbids) << b.oracleForbids->message;
+  ASSERT_EQ(b.path.cycles.size(), 2u);  // G71 and G70
+  // The finishing pass ends at C = (x 20, z -20): the increments were applied in both cycles.
+  ASSERT_EQ(a.path.moves.size(), b.path.moves.size());
+  for (std::size_t k = 0; k < a.path.moves.size(); ++k) {
+    EXPECT_TRUE(nearlyEqual(a.path.moves[k].to, b.path.moves[k].to)) << k;
+    EXPECT_EQ(a.path.moves[k].kind, b.path.moves[k].kind) << k;
+  }
+  bool finishReachesC = false;
+  for (const Move& m : b.path.moves) finishReachesC = finishReachesC || (m.phase == "finish" && nearlyEqual(m.to, {-20, 20}));
+  EXPECT_TRUE(finishReachesC);
+}
+
+// A = (X44, Z2), above the shape's end (X40): the last pass and the return stay clear of the
+// allowance (with A at X40 the return to A runs inside it: a no-gouge finding, also in system A).
+TEST(GCodeSystemShape, FeedModesAreAllowedAndTheReturnLevelIsNot) {
+  const std::string head = "G21;\nG90 G00 X44 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\n";
+  // System B's G95 is system A's G99 (feed per revolution), which ns…nf may contain. Before: PS0325.
+  const ShapeCodeVerdict feed = planAndRead(head + "G95 G01 Z-10;\nN20 X40 Z-20;\nM30;\n", kSystemB);
+  EXPECT_FALSE(feed.path.alarm) << feed.path.alarm->message;
+  EXPECT_FALSE(feed.oracleForbids) << feed.oracleForbids->message;
+  // System B's G98 is the canned cycle return level, not in the list: PS0325 at its block (line 6).
+  // Before: planned, read as system A's G98 feed per minute.
+  const ShapeCodeVerdict level = planAndRead(head + "G98 G01 Z-10;\nN20 X40 Z-20;\nM30;\n", kSystemB);
+  ASSERT_TRUE(level.path.alarm);
+  EXPECT_EQ(level.path.alarm->code, "PS0325");
+  EXPECT_EQ(level.path.alarm->line, 6);
+  EXPECT_TRUE(contains(level.path.alarm->message, "canned cycle return")) << level.path.alarm->message;
+  ASSERT_TRUE(level.oracleForbids);
+  EXPECT_EQ(level.oracleForbids->code, "PS0325");
+  EXPECT_EQ(level.oracleForbids->line, 6);
+  // System A: G98 is feed per minute and allowed, G28 is not (unchanged).
+  EXPECT_FALSE(plan("G21;\nG00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\nG98 G01 Z-10 F150;\n"
+                    "N20 X40 Z-20;\nM30;\n", {}).alarm);
+  const Toolpath g28 = plan("G21;\nG00 X40 Z2;\nG71 U2 R0.5;\nG71 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\nG28 U0;\n"
+                            "G01 Z-10;\nN20 X40 Z-20;\nM30;\n", {});
+  ASSERT_TRUE(g28.alarm);
+  EXPECT_EQ(g28.alarm->code, "PS0325");
+}
+
+TEST(GCodeSystemShape, SystemCReadsItsOwnNumbers) {
+  // System C's G94 is feed per minute (allowed); its G71 is metric input (not in the list).
+  const std::string head = "G71;\nG90 G00 X44 Z2;\nG73 U2 R0.5;\nG73 P10 Q20 U0.4 W0.1 F0.2;\nN10 G00 X20;\n";
+  EXPECT_FALSE(planAndRead(head + "G94 G01 Z-10 F150;\nN20 X40 Z-20;\nM30;\n", kSystemC).path.alarm);
+  const ShapeCodeVerdict units = planAndRead(head + "G71 G01 Z-10;\nN20 X40 Z-20;\nM30;\n", kSystemC);
+  ASSERT_TRUE(units.path.alarm);
+  EXPECT_EQ(units.path.alarm->code, "PS0325");
+  ASSERT_TRUE(units.oracleForbids);
+  EXPECT_EQ(units.oracleForbids->code, "PS0325");
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -51,8 +51,8 @@ std::vector<FinishMotion> readFinishMotions(const CycleCall& call, std::size_t n
   bool startUpPending = compensation != 40;  // in force at G70: the first motion is the start-up
   for (std::size_t i = ns; i <= nf; ++i) {
     const Block& block = call.program.blocks[i];
-    checkUsableInShape(block, call.profile.toleratesTnrcInShape || call.params.bit("NT2"));
-    s.motion = motionCode(block, s.motion);
+    checkUsableInShape(block, s.gCodeSystem, call.profile.toleratesTnrcInShape || call.params.bit("NT2"));
+    applyShapeModes(block, s);
     checkShapeBlockWords(block, s);  // PROG.RANGE, PROG.ADDRESS
     if (const Word* f = block.find('F')) s.feed = f->value * s.unitScale();  // G70.EX: F inside ns…nf applies
     if (call.params.bit("NT2")) {

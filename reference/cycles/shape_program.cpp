@@ -1,9 +1,8 @@
 #include "reference/cycles/shape_program.h"
 
-#include <set>
-
 #include "reference/interpreter/block_motion.h"
 #include "reference/interpreter/block_words.h"
+#include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
 #include "reference/model/offset.h"
 
@@ -25,13 +24,7 @@ std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which) 
 
 namespace {
 
-// G72.NSNF.GCODES: the only G codes a shape program may contain.
-bool usableInShape(int g10) {
-  static const std::set<int> allowed = {0, 10, 20, 30, 40, 960, 970, 980, 990, 400, 410, 420};
-  return allowed.count(g10) != 0;
-}
-
-bool isTnrcCode(int g10) { return g10 == 400 || g10 == 410 || g10 == 420; }
+bool isTnrcCode(const GCode& code) { return code.group == GGroup::NoseRadiusComp; }
 
 // HAAS.TNRC.SHAPE: G41/G42 start compensation in block ns, G40 ends it in block nf (or ns). Elsewhere
 // compensation would change in the middle of the roughed shape, which the plan does not model.
@@ -50,14 +43,16 @@ void readShapeCompensation(const Block& b, std::size_t i, ShapeProgram& shape) {
 
 }  // namespace
 
-void checkUsableInShape(const Block& b, bool tnrcAllowed) {
+void checkUsableInShape(const Block& b, GCodeSystem system, bool tnrcAllowed) {
   for (const Word* g : b.all('G')) {
-    const int g10 = gCode10(g->value);
-    if (!usableInShape(g10)) {
-      throw CycleAlarm(alarm::kUnavailableInShape, b.line, g->text + " cannot be used between P and Q");
+    const GCode* code = findGCode(system, gCode10(g->value));
+    if (!code || !usableInShapeProgram(*code)) {
+      throw CycleAlarm(alarm::kUnavailableInShape, b.line,
+                       g->text + (code ? " (" + std::string(code->name) + " in " + gCodeSystemName(system) + ")" : "") +
+                           " cannot be used between P and Q");
     }
     // G71.TNRC.PLACE: G40/G41/G42 belong before the cycle and after the shape (NT1 is issue 3).
-    if (isTnrcCode(g10) && !tnrcAllowed) {
+    if (isTnrcCode(*code) && !tnrcAllowed) {
       throw CycleAlarm(alarm::kUnavailableInShape, b.line,
                        g->text + ": nose-radius compensation must be commanded outside the shape program");
     }
@@ -67,6 +62,11 @@ void checkUsableInShape(const Block& b, bool tnrcAllowed) {
       throw CycleAlarm(alarm::kUnavailableInShape, b.line, m->text + ": no subprogram call inside a shape program");
     }
   }
+}
+
+void applyShapeModes(const Block& b, ModalState& s) {
+  s.motion = motionCode(b, s.motion);
+  applyGroupCodes(b, GGroup::Programming, s);  // PROG.GSYS.B: G90/G91 of systems B/C
 }
 
 int motionCode(const Block& b, int modal) {
@@ -106,10 +106,10 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
   for (std::size_t i = shape.nsIndex; i <= shape.nfIndex; ++i) {
     const Block& b = call.program.blocks[i];
     // G71.TNRC.NT1: with NT1 = 1 compensation codes in a roughing shape are ignored without alarm.
-    checkUsableInShape(b, call.profile.toleratesTnrcInShape || call.profile.compensatesTnrcInShape ||
-                              call.params.bit("NT1"));
+    checkUsableInShape(b, s.gCodeSystem,
+                       call.profile.toleratesTnrcInShape || call.profile.compensatesTnrcInShape || call.params.bit("NT1"));
     if (call.profile.compensatesTnrcInShape) readShapeCompensation(b, i, shape);
-    s.motion = motionCode(b, s.motion);
+    applyShapeModes(b, s);
     checkShapeBlockWords(b, s);  // PROG.RANGE, PROG.ADDRESS
     if (!hasAxisWord(b)) continue;
     const auto seg = motionSegment(b, s.motion, s);

@@ -32,9 +32,15 @@ ShapeProgram readShapeProgram(const CycleCall& call, const Word& p, const Word& 
 // The block found by a P or Q word (PS0063 naming the cycle block when there is none).
 std::size_t findSequenceBlock(const CycleCall& call, const Word& w, char which);
 
-// G72.NSNF.GCODES, G71.TNRC.PLACE: PS0325 for a command a shape program may not contain. G40/G41/G42
-// are allowed when `tnrcAllowed` (the profile tolerates them, NT1 for roughing, NT2 for G70).
-void checkUsableInShape(const Block& b, bool tnrcAllowed);
+// G72.NSNF.GCODES, G71.TNRC.PLACE, PROG.GSYS.B: PS0325 for a command a shape program may not
+// contain, each G code judged by its function in the program's G code system (usableInShapeProgram:
+// system B's G91 is allowed as system A's U/W are, its G98 return level is not). G40/G41/G42 are
+// allowed when `tnrcAllowed` (the profile tolerates them, NT1 for roughing, NT2 for G70).
+void checkUsableInShape(const Block& b, GCodeSystem system, bool tnrcAllowed);
+
+// The modal codes a shape block changes for the blocks after it within ns…nf: its motion code and,
+// in systems B/C and Huazhong, G90/G91 (PROG.GSYS.B, PROG.GSYS.INCREMENTAL).
+void applyShapeModes(const Block& b, ModalState& s);
 
 // The group-01 motion code (0…3) a block commands, or `modal` when it commands none.
 int motionCode(const Block& b, int modal);

@@ -200,6 +200,31 @@ bool hasGFunction(const Block& b, int function, GCodeSystem system) {
   return false;
 }
 
+void applyGroupCodes(const Block& b, GGroup group, ModalState& s) {
+  for (const Word* g : b.all('G')) {
+    if (const GCode* code = findGCode(s.gCodeSystem, gCode10(g->value)); code && code->group == group) {
+      applyModalGCode(*code, s);
+    }
+  }
+}
+
+bool usableInShapeProgram(const GCode& code) {
+  switch (code.group) {
+    case GGroup::Motion: return code.function <= 30;  // G00–G03, not threading or the single cycles
+    case GGroup::SpindleSpeedMode:
+    case GGroup::FeedMode:
+    case GGroup::NoseRadiusComp:
+    case GGroup::Programming: return true;
+    case GGroup::OneShot: return code.function == 40;  // dwell
+    case GGroup::Units:
+    case GGroup::DrillingCycle:
+    case GGroup::CycleReturn:
+    case GGroup::WorkCoordinates:
+    case GGroup::Plane: break;
+  }
+  return false;
+}
+
 std::string otherSystemsMeaning(GCodeSystem system, int g10) {
   if (system == GCodeSystem::Huazhong) return "";
   const GCode* here = findGCode(system, g10);

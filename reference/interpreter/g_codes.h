@@ -92,6 +92,18 @@ int oneShotFunction(const Block& b, GCodeSystem system);
 // True when one of the block's G words has that function (a system A number ×10) in the system.
 bool hasGFunction(const Block& b, int function, GCodeSystem system);
 
+// Applies the block's codes of one group in the order written (the last one is in force), in the
+// state's system: a shape program ns…nf reads its group-03 G90/G91 so (PROG.GSYS.B).
+void applyGroupCodes(const Block& b, GGroup group, ModalState& s);
+
+// G72.NSNF.GCODES, PROG.GSYS.B: whether a code may stand in a shape program ns…nf, by its
+// function in the program's system: positioning and interpolation (G00–G03), dwell, G96/G97, the
+// feed modes (system A's G98/G99, B/C's G94/G95), nose-radius compensation G40–G42 (whether the
+// profile tolerates them there is the caller's question) and B/C's absolute/incremental
+// programming G90/G91 (the counterpart of system A's X/Z and U/W). Not B/C's G98/G99 (canned
+// cycle return level). The reference's cycles and the oracles both ask it.
+bool usableInShapeProgram(const GCode& code);
+
 // PROG.GSYS.OTHER: what the code ×10 means in the other FANUC systems and the parameter that
 // selects them ("; in G code system B (--param 3401#6=1) G77 is the outer diameter cutting cycle"),
 // or "" when it means the same there or the system is not a FANUC one.
