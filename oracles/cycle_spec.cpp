@@ -156,10 +156,27 @@ class SpecReader {
         out_.motionBeforeCycles = true;
       }
     }
+    const bool drawnBeforeCycles = axisWordsMoveTheTool(meaning) && out_.motionBeforeCycles && out_.cycles.empty();
     followKnownAxes(known_, b, meaning, state_);
     const Point before = state_.planePoint();
     state_.position = positionAfterBlock(b, state_);
+    if (drawnBeforeCycles) {
+      if (auto m = programMove(b, before)) out_.movesBeforeCycles.push_back(*m);
+    }
     if (huazhongShape_ && axisWordsMoveTheTool(meaning)) recordRunAfterHuazhong(i, b, before);
+  }
+
+  // The block just read as a move of the toolpath from `before`, or nothing when it does not move
+  // in the plane.
+  std::optional<ProgramMove> programMove(const Block& b, Point before) const {
+    ProgramMove m;
+    m.line = b.line;
+    m.end = state_.planePoint();
+    if (distance(m.end, before) <= kEps) return std::nullopt;
+    m.rapid = state_.motion == 0;
+    m.arc = state_.motion == 2 || state_.motion == 3;
+    m.feed = state_.feed;
+    return m;
   }
 
   // G70.EX: the F words of the finishing shape apply in G70.
@@ -346,13 +363,9 @@ class SpecReader {
   // HNC.G71.FST: a block after the Huazhong G71 that moves the tool in the plane; block ns starts
   // the finishing run.
   void recordRunAfterHuazhong(std::size_t i, const Block& b, Point before) {
-    ProgramMove m;
-    m.line = b.line;
-    m.end = state_.planePoint();
-    if (distance(m.end, before) <= kEps) return;  // no move in the plane
-    m.rapid = state_.motion == 0;
-    m.arc = state_.motion == 2 || state_.motion == 3;
-    m.feed = state_.feed;
+    std::optional<ProgramMove> moved = programMove(b, before);
+    if (!moved) return;  // no move in the plane
+    ProgramMove& m = *moved;
     m.finishing = i >= huazhongShape_->first && i <= huazhongShape_->second;
     if (m.finishing) out_.hasFinishingCycle = true;
     out_.runAfterHuazhong.push_back(m);

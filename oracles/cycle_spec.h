@@ -57,7 +57,10 @@ struct ProgramSpec {
   bool hasFinishingCycle = false;  // a G70 follows: its feeds come from the shape
   std::vector<double> finishingFeeds;  // the F words of G70 shapes
   bool motionAfterCycles = false;  // positioning or cutting blocks run after the last cycle
-  bool motionBeforeCycles = false;  // … and before the first, from a known position (drawn: PROG.WHOLE)
+  bool motionBeforeCycles = false;
+  // PROG.WHOLE: the blocks that move the tool from a known position before the first cycle (the
+  // approach, a facing cut…): an engine that draws them puts their moves before the cycle's.
+  std::vector<ProgramMove> movesBeforeCycles;  // … and before the first, from a known position (drawn: PROG.WHOLE)
   std::optional<int> firstCycleBlockLine;  // the first G70/G71/G72 block
   std::vector<Alarm> finishingAlarms;      // G70 blocks the rules forbid (G71.TNRC.NT2)
   std::optional<Alarm> mdiAlarm;           // the program runs in MDI mode (G72.MDI)

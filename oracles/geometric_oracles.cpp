@@ -176,8 +176,8 @@ class PassLevelsOracle : public Oracle {
     const double tol = tolerance(in);
     const Point aPrime = inFrame(c, c.start + c.allowance);
     const std::vector<Segment> rough = c.roughProfile();
-    const std::size_t judged = movesOfTheRoughing(in);
-    for (std::size_t i = 0; i < judged; ++i) {
+    const MoveRange judged = movesOfTheRoughing(in);
+    for (std::size_t i = judged.begin; i < judged.end; ++i) {
       // The semi-finish runs on the rough profile, G70 on the finish shape: neither is a roughing pass.
       if (!isCutAlongCutAxis(in, c, i, tol) || runsOnProfile(in, c, rough, i, tol)) continue;
       const double depth = c.depthDirection() * (inFrame(c, in.path.moves[i].to).x - aPrime.x);

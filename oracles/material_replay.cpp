@@ -306,12 +306,15 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   const bool judgesEntries = judgesPocketEntries(*c, in.settings);
   if (judgesEntries) r.pocketEntryCrossings.resize(in.path.moves.size());
   r.removedThickness.resize(in.path.moves.size());
+  // The moves before the first cycle (PROG.WHOLE: the approach, a facing cut) remove material and
+  // are judged for rapids, but they are no roughing pass: their layers are not Δd's business.
+  const std::size_t firstPass = firstMoveOfTheCycles(in);
   for (std::size_t i = 0; i < r.judgedMoves; ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
       if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(r, model, in, i);
-    } else if (!onFinishShape(in, *c, move)) {
+    } else if (i >= firstPass && !onFinishShape(in, *c, move)) {
       r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, in.settings);
     }
     model.apply(move, in.path.moves[i].kind);

@@ -23,8 +23,8 @@ class RetractOracle : public Oracle {
     const CycleSpec* c = in.program.singleRoughingCycle();
     if (!c || in.path.alarm) return;
     Check check{*c, in, c->roughProfile(), in.settings.tolerance()};
-    const std::size_t judged = movesOfTheRoughing(in);
-    for (std::size_t i = 0; i < judged; ++i) {
+    const MoveRange judged = movesOfTheRoughing(in);
+    for (std::size_t i = judged.begin; i < judged.end; ++i) {
       if (!isCutAlongCutAxis(in, *c, i, check.tol)) continue;
       if (!runsOnProfile(in, *c, check.rough, i, check.tol)) {
         c->typeII ? check.typeIIPassLeaves(i, *this, out) : check.typeIPassLeaves(i, *this, out);

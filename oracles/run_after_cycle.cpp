@@ -66,10 +66,24 @@ std::size_t movesJudgedAgainstThePart(const JudgeInput& in) {
   return where.run ? where.run->judgedEnd : in.path.moves.size();
 }
 
-std::size_t movesOfTheRoughing(const JudgeInput& in) {
-  if (in.program.runAfterHuazhong.empty()) return in.path.moves.size();
+std::size_t firstMoveOfTheCycles(const JudgeInput& in) {
+  const std::vector<ProgramMove>& blocks = in.program.movesBeforeCycles;
+  std::size_t next = 0;  // the path's move the next block begins with
+  for (const ProgramMove& b : blocks) {
+    std::size_t j = next;
+    while (j < in.path.moves.size() && !endsAt(in, j, b.end) && b.arc) ++j;  // an arc's pieces
+    if (j >= in.path.moves.size() || !endsAt(in, j, b.end)) return 0;  // not drawn: the path starts at the cycle
+    next = j + 1;
+  }
+  return next;
+}
+
+MoveRange movesOfTheRoughing(const JudgeInput& in) {
+  MoveRange range{firstMoveOfTheCycles(in), in.path.moves.size()};
+  if (in.program.runAfterHuazhong.empty()) return range;
   const RunLocation where = locateRunAfterHuazhong(in);
-  return where.run ? where.run->roughingEnd : in.path.moves.size();
+  if (where.run) range.end = where.run->roughingEnd;
+  return range;
 }
 
 }  // namespace cyclecert

@@ -34,8 +34,17 @@ RunLocation locateRunAfterHuazhong(const JudgeInput& in);
 // a Huazhong finishing run, else all of them.
 std::size_t movesJudgedAgainstThePart(const JudgeInput& in);
 
-// How many moves the oracles of the roughing passes (pass levels, retracts) judge: up to the end of
-// a Huazhong roughing (its finishing run and the blocks before it are no passes), else all.
-std::size_t movesOfTheRoughing(const JudgeInput& in);
+// PROG.WHOLE: the first move of the cycles — after the moves the program makes before its first
+// cycle (ProgramSpec::movesBeforeCycles), found at the start of the path by where each block ends;
+// 0 when the engine's path does not begin with them (it starts at the cycle).
+std::size_t firstMoveOfTheCycles(const JudgeInput& in);
+
+// The moves the oracles of the roughing passes (pass levels, retracts, depth per pass) judge: from
+// the first move of the cycles to the end of a Huazhong roughing (its finishing run and the blocks
+// before it are no passes), else to the end of the path.
+struct MoveRange {
+  std::size_t begin = 0, end = 0;
+};
+MoveRange movesOfTheRoughing(const JudgeInput& in);
 
 }  // namespace cyclecert
