@@ -24,7 +24,8 @@
 // one block with D (FANUC profiles, FCV = 1, e in parameter 5133) and the Huazhong one block
 // (profile hnc, G71 type I only, no G70: its ns…nf run again after the cycle as the finishing), the
 // Haas one block (profile haas: D in program units with a decimal point, R1 for type II, e in
-// parameter 5133, G41/G42 in block ns) and the two blocks written in FANUC G code system B or C
+// parameter 5133; G41/G42 in block ns and G40 in block nf when a case has a nose radius, which is
+// not drawn yet: see drawCompensation()) and the two blocks written in FANUC G code system B or C
 // (3401#6 GSB / #7 GSC: G90 absolute, G95 feed per revolution, and in C the cycles G72–G74; every
 // code written through the G code table, oracles/metamorphic/g_code_writing.h).
 // Combinations whose collisions the documents themselves cause are not drawn (see caseFrom() and
