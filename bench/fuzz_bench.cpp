@@ -19,15 +19,17 @@ using namespace cyclecert;
 constexpr std::uint64_t kSeed = 20261121;
 
 // A fixed sample of generated cases, as `fuzz --seed 20261121` draws them.
+std::vector<SpecCase> casesOf(const CycleFormats& formats) {
+  std::vector<SpecCase> out;
+  for (long i = 0; i < 200; ++i) {
+    const std::uint64_t seed = fuzzCaseSeed(kSeed, i);
+    out.push_back(fuzzSpecCase(generateFuzzCase(seed, formats), std::to_string(seed)));
+  }
+  return out;
+}
+
 const std::vector<SpecCase>& sampleCases() {
-  static const std::vector<SpecCase> cases = [] {
-    std::vector<SpecCase> out;
-    for (long i = 0; i < 200; ++i) {
-      const std::uint64_t seed = fuzzCaseSeed(kSeed, i);
-      out.push_back(fuzzSpecCase(generateFuzzCase(seed), std::to_string(seed)));
-    }
-    return out;
-  }();
+  static const std::vector<SpecCase> cases = casesOf(kDefaultCycleFormats);
   return cases;
 }
 
@@ -82,6 +84,16 @@ void BM_FuzzCaseReference(benchmark::State& state) {
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FuzzCaseReference)->Unit(benchmark::kMicrosecond);
+
+// The same on the Haas block and the programs in G code systems B and C (`--formats haas,gsys-b,gsys-c`).
+void BM_FuzzCaseReferenceHaasAndGCodeSystems(benchmark::State& state) {
+  const auto engine = makeEngine("reference");
+  static const std::vector<SpecCase> cases = casesOf(parseCycleFormats("haas,gsys-b,gsys-c"));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(judgeFuzzCase(*engine, nullptr, cases[i++ % cases.size()], 1e-3));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzCaseReferenceHaasAndGCodeSystems)->Unit(benchmark::kMicrosecond);
 
 // LinuxCNC's rs274 on the same cases, one process per case and batched (when rs274 was fetched:
 // `make rs274`; otherwise the benchmark says so and is skipped).

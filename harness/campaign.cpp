@@ -38,14 +38,15 @@ std::vector<std::string> mergedFields(const json& a, const json& b) {
   if (text(a, "command") != text(b, "command")) return {};
   // Runs of different engines fill different engines' parts of one report, which compares them.
   if (text(a, "engine") != text(b, "engine")) return {"spec_suite_hash"};
-  if (text(a, "command") == "fuzz") return {"engine_version", "vs", "seed", "shards", "spec_suite_hash"};
+  if (text(a, "command") == "fuzz") return {"engine_version", "vs", "seed", "formats", "shards", "spec_suite_hash"};
   return {"engine_version", "spec_suite_hash"};
 }
 
 }  // namespace
 
 std::optional<CampaignDifference> resumeDifference(const std::vector<SourcedRecord>& existing, const SourcedRecord& next) {
-  static const std::vector<std::string> sameCommand{"engine", "engine_version", "vs", "seed", "shard", "spec_suite_hash"};
+  static const std::vector<std::string> sameCommand{"engine", "engine_version", "vs",
+                                                     "seed",   "formats",        "shard", "spec_suite_hash"};
   static const std::vector<std::string> otherCommand{"engine", "engine_version"};
   for (const SourcedRecord& r : existing) {
     const bool same = text(r.record, "command") == text(next.record, "command");
@@ -80,7 +81,9 @@ std::optional<CampaignDifference> mergeDifference(const std::vector<std::vector<
 
 std::string differenceText(const CampaignDifference& d) {
   const std::string name = d.field == "shards" ? "shard count" : d.field;
-  return name + " " + d.first + " in " + d.firstSource + ", " + d.second + " in " + d.secondSource;
+  // formats: absent in a record is the default format (two-block)
+  const auto value = [&](const std::string& v) { return d.field == "formats" && v == "none" ? std::string("two-block") : v; };
+  return name + " " + value(d.first) + " in " + d.firstSource + ", " + value(d.second) + " in " + d.secondSource;
 }
 
 }  // namespace cyclecert

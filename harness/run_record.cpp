@@ -53,6 +53,7 @@ json runRecordJson(const RunRecord& r) {
   if (r.seed) j["seed"] = *r.seed;
   if (r.cases) j["cases"] = *r.cases;
   if (!r.shard.empty()) j["shard"] = r.shard;
+  if (!r.formats.empty()) j["formats"] = r.formats;  // absent: the default, as in records written before --formats
   return j;
 }
 
@@ -106,6 +107,7 @@ void checkSameCampaign(const std::string& outDir, const std::vector<json>& runs,
   if (!d) return;
   std::string hint = "resume with the same options";
   if (d->field == "seed" && d->first != "none") hint += " (--seed " + d->first + ")";
+  if (d->field == "formats") hint += " (--formats " + (d->first == "none" ? std::string("two-block") : d->first) + ")";
   throw CampaignMismatchError("cannot resume the run in '" + outDir + "': this run is of another campaign: " +
                               differenceText(*d) + "; " + hint + ", write to another --out, or give " +
                               kMixCampaignsFlag + " to mix the two in one report knowingly");

@@ -22,6 +22,7 @@ struct RunRecord {
   std::optional<std::uint64_t> seed;
   std::optional<long> cases;  // fuzz: the campaign's --cases (none with --time alone)
   std::string shard;          // fuzz: "K/N" with --shard, else ""
+  std::string formats;        // fuzz: --formats when not the default (two-block), else "": another campaign
   std::vector<std::string> argv;
 };
 

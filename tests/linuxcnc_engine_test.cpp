@@ -219,6 +219,43 @@ TEST_F(LinuxCnc, TranslatesTheSeries10OneBlockLikeTheTwoBlocks) {
   EXPECT_NE(notApplicable(makeCase("fcv0", oneBlock)).find("PS0009"), std::string::npos);
 }
 
+// HAAS.G71.*: the Haas one block says what the two blocks say — Δd by D in mm (decimal point), e by
+// parameter 5133 (Setting 73) — so it translates into kStepped's LinuxCNC cycle; R1 (type II) into
+// the pocketing G71. G42 inside P…Q (HAAS.TNRC.SHAPE) is compensation: not applicable, as on FANUC.
+TEST_F(LinuxCnc, TranslatesTheHaasOneBlockLikeTheTwoBlocks) {
+  const std::string oneBlock = "G00 X36 Z2;\nG71 P10 Q50 U0.4 W0.1 D2. F0.2;\nN10 G01 X22;\nN20 Z-15;\n"
+                               "N30 X30 Z-25;\nN40 Z-35;\nN50 X35;\n";
+  const std::string text = translated(makeCase("stepped", oneBlock, "haas", {{"5133", 1}}));
+  EXPECT_EQ(text, translated(makeCase("stepped", kStepped)));
+  EXPECT_NE(text.find("\nG71.1 Q100 X36.4 Z2.1 D0 I2 R1 F0.2\n"), std::string::npos) << text;
+  // Without 5133 the haas profile's Setting 73 default (1.27 mm) is e.
+  EXPECT_NE(translated(makeCase("s73", oneBlock, "haas")).find(" I2 R1.27 F0.2\n"), std::string::npos);
+  const std::string typeII = translated(makeCase(
+      "r1", "G00 X40 Z2;\nG71 P10 Q50 U0.4 W0 D2. R1 F0.2;\nN10 G01 X30;\nN20 Z-10;\nN30 X34;\nN40 Z-20;\nN50 X38;\n",
+      "haas", {{"5133", 0.5}}));
+  EXPECT_NE(typeII.find("\nG71 Q100 X40.4 Z2 D0 I2 R0.5 F0.2\n"), std::string::npos) << typeII;
+  const std::string why = notApplicable(makeCase(
+      "g42", "G00 X36 Z2;\nG71 P10 Q50 U0.4 W0.1 D2. F0.2;\nN10 G42 G01 X22;\nN20 Z-15;\nN30 X35;\nG40;\n", "haas"));
+  EXPECT_NE(why.find("G41/G42 at line 3"), std::string::npos) << why;
+}
+
+// PROG.GSYS.*: a program in G code system B or C (3401#6 GSB / #7 GSC) is read in its system
+// (oracles/cycle_spec) and translates into the cycle its system A twin does: G90 absolute, G95
+// feed per revolution, system C's G73 the stock removal in turning.
+TEST_F(LinuxCnc, TranslatesGCodeSystemsBAndCLikeSystemA) {
+  const std::string expected = translated(makeCase("stepped", kStepped));
+  const std::string shape = "N10 G01 X22;\nN20 Z-15;\nN30 X30 Z-25;\nN40 Z-35;\nN50 X35;\n";
+  EXPECT_EQ(translated(makeCase("stepped", "G90 G95;\nG00 X36 Z2;\nG71 U2 R1;\nG71 P10 Q50 U0.4 W0.1 F0.2;\n" + shape,
+                                "fanuc-0i-f", {{"3401#6", 1}})),
+            expected);
+  EXPECT_EQ(translated(makeCase("stepped", "G90 G95;\nG00 X36 Z2;\nG73 U2 R1;\nG73 P10 Q50 U0.4 W0.1 F0.2;\n" + shape,
+                                "fanuc-0i-f", {{"GSC", 1}})),
+            expected);
+  // In system C, G71 is metric input: the program has no roughing cycle.
+  EXPECT_NE(notApplicable(makeCase("c-g71", kStepped, "fanuc-0i-f", {{"3401#7", 1}})).find("no G71/G72"),
+            std::string::npos);
+}
+
 TEST_F(LinuxCnc, TheHuazhongOneBlockIsNotApplicable) {
   const std::string why = notApplicable(makeCase(
       "hnc", "G00 X36 Z2;\nG71 U2 R1 P10 Q50 X0.4 Z0.1 F0.2;\nN10 G01 X22;\nN20 Z-15;\nN30 X30 Z-25;\nN40 Z-35;\n"

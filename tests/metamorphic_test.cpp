@@ -121,6 +121,8 @@ TEST_P(EveryRelation, HoldsForTheReferenceOnTheSeedProgramsAndAPocket) {
     if (r.id.starts_with("plane-") && g72) continue;  // refused: see PlanesRefuseG72
     // refused: G72 and type II (see HuazhongFormatRefusesWhatSeed003DoesNotDescribe)
     if (r.id == "hnc-one-block" && c.name != kSeed003.name) continue;
+    // The follow-up runs under profile haas, or reads 3401 (which GSK does not): FANUC sources only.
+    if ((r.id == "haas-one-block" || r.id.starts_with("gsys-")) && c.profile == "gsk") continue;
     EXPECT_TRUE(holds(r, c));
   }
 }
@@ -148,7 +150,7 @@ TEST(MetamorphicRelations, EachHasAnIdADescriptionAndCatalogueRules) {
     for (const std::string& rule : r.rules) EXPECT_TRUE(catalogue.contains(rule)) << r.id << ": " << rule;
     EXPECT_TRUE(r.transform && r.compare) << r.id;
   }
-  EXPECT_EQ(ids.size(), 15u);
+  EXPECT_EQ(ids.size(), 18u);
 }
 
 TEST(MetamorphicRelations, FollowUpsSayWhatTheyMean) {
@@ -351,6 +353,120 @@ TEST(MetamorphicRelations, OneBlockFollowUpsAreTheFormatsAsTheirSourcesWriteThem
       << huazhong;
   EXPECT_NE(huazhong.find("N20 X52;\nM30;"), std::string::npos) << huazhong;  // the G70 went
   EXPECT_EQ(hnc->profile, "hnc");
+}
+
+// The Haas follow-up: D in mm with its decimal point (HAAS.G71.D), e in 5133, R1 for type II
+// (HAAS.G71.R1); profile haas.
+TEST(MetamorphicRelations, HaasFollowUpsAreTheHaasBlockAsItsManualWritesIt) {
+  std::string whyNot;
+  const auto haas = relation("haas-one-block").transform(parseProgram(kSeed003.text, "s3"), {{"DTP", 1}}, whyNot);
+  ASSERT_TRUE(haas) << whyNot;
+  const std::string one = writeProgram(haas->program);
+  EXPECT_NE(one.find("G00 X54 Z3;\nG71 P11 Q20 U0.6 W0.1 D1.5 F100;\nN11 G00 X0;"), std::string::npos) << one;
+  EXPECT_EQ(haas->params, (ParamSettings{{"DTP", 1}, {"5133", 1}}));
+  EXPECT_EQ(haas->profile, "haas");
+  const auto pockets = relation("haas-one-block").transform(parseProgram(kPockets.text, "p"), kPockets.params, whyNot);
+  ASSERT_TRUE(pockets) << whyNot;
+  EXPECT_NE(writeProgram(pockets->program).find("G71 P10 Q70 U0.4 W0 D1.5 R1 F0.2;"), std::string::npos)
+      << writeProgram(pockets->program);
+  // Without a programmed e, the source's 5133 (the haas profile's Setting 73 default differs).
+  const auto noE = relation("haas-one-block")
+                       .transform(parseProgram("G00 X54 Z3;\nG71 U1.5;\nG71 P11 Q12 U0.6 W0.1 F100;\nN11 G00 X10;\n"
+                                               "N12 G01 Z-20;\n",
+                                               "n"),
+                                  {{"5133", 0.7}}, whyNot);
+  ASSERT_TRUE(noE) << whyNot;
+  EXPECT_EQ(noE->params.back(), (std::pair<std::string, double>{"5133", 0.7}));
+}
+
+// Seed 003 approached with increments (`G00 U-6 W-7` to A): the gsys relations' G91 outside a shape.
+std::string approachedIncrementally() {
+  std::string text = kSeed003.text;
+  return "G21 G99;\nG00 X60 Z10;\nG00 U-6 W-7;\n" + text.substr(text.find('\n') + 1);
+}
+
+// System B: G90/G91 where the mode changes outside the shapes (G91 X/Z for a block of U/W
+// increments), a block G90 before the cycle after G91, the shape's increments as absolute words (the
+// reference refuses G90/G91 between P and Q), G99 → G95; system C: G71 → G73, G70 → G72, G21 → G71.
+// Each code from the G code table.
+TEST(MetamorphicRelations, GCodeSystemFollowUpsAreTheProgramInSystemBOrC) {
+  std::string whyNot;
+  const auto b = relation("gsys-b").transform(parseProgram(approachedIncrementally(), "s3"), {{"DTP", 1}}, whyNot);
+  ASSERT_TRUE(b) << whyNot;
+  const std::string inB = writeProgram(b->program);
+  EXPECT_NE(inB.find("G21 G95;\nG90 G00 X60 Z10;\nG91 G00 X-6 Z-7;\nG90;\nG71 U1.5 R1;\nG71 P11 Q20 U0.6 W0.1 F100;\n"
+                     "N11 G00 X0;"),
+            std::string::npos)
+      << inB;
+  EXPECT_NE(inB.find("N14 G02 X20 Z-25 R5;\nN15 G01 Z-35;"), std::string::npos) << inB;
+  EXPECT_NE(inB.find("N20 X52;\nG70 P11 Q20;"), std::string::npos) << inB;
+  EXPECT_EQ(b->params, (ParamSettings{{"DTP", 1}, {"3401#6", 1}}));
+  const auto c = relation("gsys-c").transform(parseProgram(approachedIncrementally(), "s3"), {}, whyNot);
+  ASSERT_TRUE(c) << whyNot;
+  const std::string inC = writeProgram(c->program);
+  EXPECT_NE(inC.find("G71 G95;\nG90 G00 X60 Z10;\nG91 G00 X-6 Z-7;\nG90;\nG73 U1.5 R1;\nG73 P11 Q20"), std::string::npos)
+      << inC;
+  EXPECT_NE(inC.find("G72 P11 Q20;"), std::string::npos) << inC;
+  EXPECT_EQ(c->params, (ParamSettings{{"3401#7", 1}}));
+  // The type II head `N10 G00 X30 W0` becomes absolute X30 Z2.
+  const auto pockets = relation("gsys-b").transform(parseProgram(kPockets.text, "p"), kPockets.params, whyNot);
+  ASSERT_TRUE(pockets) << whyNot;
+  EXPECT_NE(writeProgram(pockets->program).find("N10 G00 X30 Z2;"), std::string::npos) << writeProgram(pockets->program);
+  // And the relations hold on it.
+  const SourceCase approached{"approached", approachedIncrementally(), "fanuc-0i-f", {}};
+  EXPECT_TRUE(holds(relation("gsys-b"), approached));
+  EXPECT_TRUE(holds(relation("gsys-c"), approached));
+}
+
+// lathe_program reads system A: a source whose settings select system B or C is refused by every
+// relation, naming the system (its G71 would be metric input, its U/W no increments).
+TEST(MetamorphicRelations, EveryRelationRefusesASourceInGCodeSystemBOrC) {
+  for (const auto& [params, system] : std::vector<std::pair<ParamSettings, std::string>>{
+           {{{"3401#6", 1}}, "G code system B"}, {{{"GSC", 1}}, "G code system C"}, {{{"GSB", 1}, {"GSC", 1}}, "system C"}}) {
+    for (const Relation& r : allRelations()) {
+      std::string whyNot;
+      EXPECT_FALSE(r.transform(parseProgram(kSeed003.text, "s3"), params, whyNot)) << r.id;
+      EXPECT_NE(whyNot.find(system), std::string::npos) << r.id << ": " << whyNot;
+    }
+  }
+  std::string whyNot;  // GSB set back to 0: system A again
+  EXPECT_TRUE(relation("mirror-z").transform(parseProgram(kSeed003.text, "s3"), {{"GSB", 1}, {"GSB", 0}}, whyNot))
+      << whyNot;
+}
+
+// Wrong engines fail the new format relations: one that ignores Haas's D (and roughs at Setting 72,
+// 2.54 mm), one that reads D as a diameter, one that reads G91 as G90.
+TEST(MetamorphicRelations, HaasAndGCodeSystemRelationsCatchAnEngineThatMisreadsThem) {
+  const Toolpath source = plan(kSeed003.text, kSeed003.profile, {});
+  std::string whyNot;
+  const Relation& haas = relation("haas-one-block");
+  const auto h = haas.transform(parseProgram(kSeed003.text, "s3"), {}, whyNot);
+  ASSERT_TRUE(h) << whyNot;
+  ASSERT_FALSE(checkRelation(haas, *h, source, plan(writeProgram(h->program), "haas", h->params), kTol));
+  Program noD = h->program, diameterD = h->program;
+  for (Block& b : noD.blocks) std::erase_if(b.words, [](const Word& w) { return w.letter == 'D'; });
+  for (Block& b : diameterD.blocks) {
+    for (Word& w : b.words) {
+      if (w.letter == 'D') w = makeWord('D', w.value / 2, true);
+    }
+  }
+  EXPECT_TRUE(checkRelation(haas, *h, source, plan(writeProgram(noD), "haas", h->params), kTol));
+  EXPECT_TRUE(checkRelation(haas, *h, source, plan(writeProgram(diameterD), "haas", h->params), kTol));
+
+  const Toolpath approached = plan(approachedIncrementally(), "fanuc-0i-f", {});
+  for (const char* id : {"gsys-b", "gsys-c"}) {
+    const Relation& r = relation(id);
+    const auto f = r.transform(parseProgram(approachedIncrementally(), "s3"), {}, whyNot);
+    ASSERT_TRUE(f) << whyNot;
+    ASSERT_FALSE(checkRelation(r, *f, approached, plan(writeProgram(f->program), "fanuc-0i-f", f->params), kTol)) << id;
+    std::string absoluteOnly = writeProgram(f->program);
+    ASSERT_NE(absoluteOnly.find("G91"), std::string::npos) << absoluteOnly;
+    for (auto at = absoluteOnly.find("G91"); at != std::string::npos; at = absoluteOnly.find("G91")) {
+      absoluteOnly.replace(at, 3, "G90");
+    }
+    const auto d = checkRelation(r, *f, approached, plan(absoluteOnly, "fanuc-0i-f", f->params), kTol);
+    EXPECT_TRUE(d) << id << ":\n" << absoluteOnly;
+  }
 }
 
 TEST(MetamorphicRelations, OneBlockFormatsRefuseWhatTheyCannotWrite) {
@@ -641,6 +757,9 @@ RC_GTEST_PROP(MetamorphicProperties, MetricInch, ()) { relationHoldsOnARandomCon
 RC_GTEST_PROP(MetamorphicProperties, ParamDefault, ()) { relationHoldsOnARandomContour("param-default"); }
 RC_GTEST_PROP(MetamorphicProperties, Transpose, ()) { relationHoldsOnARandomContour("transpose"); }
 RC_GTEST_PROP(MetamorphicProperties, Series10OneBlock, ()) { relationHoldsOnARandomContour("fs10-one-block"); }
+RC_GTEST_PROP(MetamorphicProperties, HaasOneBlock, ()) { relationHoldsOnARandomContour("haas-one-block"); }
+RC_GTEST_PROP(MetamorphicProperties, GCodeSystemB, ()) { relationHoldsOnARandomContour("gsys-b"); }
+RC_GTEST_PROP(MetamorphicProperties, GCodeSystemC, ()) { relationHoldsOnARandomContour("gsys-c"); }
 RC_GTEST_PROP(MetamorphicProperties, HuazhongOneBlock, ()) {
   relationHoldsOnARandomContour("hnc-one-block", true, true);
 }

@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "cyclecert_git_revision.h"
+#include "harness/campaign.h"
 #include "harness/engines/engine.h"
 #include "harness/rule_catalogue.h"
 #include "harness/run_record.h"
@@ -85,6 +86,52 @@ TEST(RunRecord, RecordsAreWrittenAppendedAndReadBack) {
   EXPECT_EQ(runs[0], runRecordJson(r));
   std::ofstream(dir / "run.json") << "{\"runs\": {}}";
   EXPECT_THROW(readRunRecords(dir.string()), std::runtime_error);
+  fs::remove_all(dir);
+}
+
+// Fuzz runs drawing other cycle formats (--formats) are other campaigns, like other seeds: case i of
+// a seed is another case under another format list. A record without "formats" (the default,
+// two-block, as every record written before --formats) matches a default run.
+TEST(RunRecord, FuzzRunsOfOtherFormatsAreOtherCampaigns) {
+  const fs::path dir = fs::temp_directory_path() / ("cyclecert-formats-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const auto engine = makeEngine("reference");
+  RunRecord plain = startRunRecord("fuzz", *engine, nullptr, defaultSpecsDir(), 7, {"cyclecert", "fuzz"});
+  EXPECT_FALSE(runRecordJson(plain).contains("formats"));
+  RunRecord haas = plain;
+  haas.formats = "haas,gsys-b";
+  EXPECT_EQ(runRecordJson(haas)["formats"], "haas,gsys-b");
+  recordRun(dir.string(), plain, false);
+  recordRun(dir.string(), plain, true);  // the same campaign resumes
+  try {
+    recordRun(dir.string(), haas, true);
+    ADD_FAILURE() << "resumed a run of other formats";
+  } catch (const CampaignMismatchError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("formats two-block in " + dir.string() + "/run.json, haas,gsys-b in this run"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("(--formats two-block)"), std::string::npos) << what;
+  }
+  recordRun(dir.string(), haas, true, true);  // --mix-campaigns
+  EXPECT_EQ(readRunRecords(dir.string()).size(), 3u);
+
+  // merge: the shards of one campaign share --formats.
+  RunRecord shard1 = haas, shard2 = haas;
+  shard1.shard = "1/2";
+  shard2.shard = "2/2";
+  const auto sourced = [](const RunRecord& r, const std::string& where) {
+    return std::vector<SourcedRecord>{{runRecordJson(r), where}};
+  };
+  EXPECT_FALSE(mergeDifference({sourced(shard1, "a"), sourced(shard2, "b")}));
+  shard2.formats = "haas";
+  const auto d = mergeDifference({sourced(shard1, "a"), sourced(shard2, "b")});
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->field, "formats");
+  EXPECT_EQ(differenceText(*d), "formats haas,gsys-b in a, haas in b");
+  shard2.formats.clear();
+  ASSERT_TRUE(mergeDifference({sourced(shard1, "a"), sourced(shard2, "b")}));
+  EXPECT_EQ(differenceText(*mergeDifference({sourced(shard1, "a"), sourced(shard2, "b")})),
+            "formats haas,gsys-b in a, two-block in b");
   fs::remove_all(dir);
 }
 

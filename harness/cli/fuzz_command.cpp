@@ -25,8 +25,9 @@ const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--case
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
-RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk; with --formats the one-block formats too) and runs
-each through engine E and every oracle and, with --vs, compares E's result with engine B's. The first failure of each kind (an oracle,
+RF2; profiles fanuc-0i-f, fanuc-0i-c, gsk; with --formats the one-block formats and G code systems
+B/C too) and runs each through engine E and every oracle and, with --vs, compares E's result with
+engine B's. The first failure of each kind (an oracle,
 "diverges", "engine-failure") is shrunk to a minimal case, printed with the seed that regenerates
 it, and written as a spec case to the regressions directory, which `check` runs from then on.
 
@@ -53,14 +54,17 @@ Options:
   --tolerance T       mm, for the oracles and --vs (default 0.001)
   --max-failures N    stop once N cases have failed
   --resume            continue the run in OUT (--cases may grow); refused when OUT holds another
-                      campaign (another --engine, --vs, engine version, --seed, --shard or spec suite)
+                      campaign (another --engine, --vs, engine version, --seed, --formats, --shard or
+                      spec suite)
   --mix-campaigns     with --resume: continue even so (the report then mixes the two)
   --timeout S         per-case timeout for engines in another process (default 10)
   --formats LIST      the cycle formats drawn, comma-separated (default two-block, which keeps the
                       cases of a seed as they were): two-block (G71 U R; G71 P Q U W F), fs10 (the
                       Series 10/11 one block G71 P Q U W D F, --param FCV=1 and 5133 = e; FANUC
                       profiles), hnc (Huazhong G71 U R P Q X Z F, profile hnc, G71 type I, its
-                      finishing run of ns…nf after the cycle), or all
+                      finishing run of ns…nf after the cycle), haas (G71 P Q U W D1.5 [R1] F, profile
+                      haas, 5133 = e, G41/G42 in block ns), gsys-b / gsys-c (the two blocks in G code
+                      system B / C: --param 3401#6=1 / 3401#7=1, G90 G95, in C G73/G74 and G72), or all
 Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,
 another campaign in OUT, or a result not written.
 )HELP";
@@ -73,7 +77,7 @@ that appears in more than one input (the same engine and case) is kept once; tor
 runs are skipped and counted. `cyclecert report DIR` then writes the joined report.
 
 The inputs' run.json records must be of one campaign: fuzz runs the shards of one --engine, --vs,
-engine version, --seed, shard count, spec suite and (their latest runs) --cases; check runs of one
+engine version, --seed, --formats, shard count, spec suite and (their latest runs) --cases; check runs of one
 spec suite (and one version per engine). Otherwise the merge is refused, naming the field that
 differs and the inputs, unless --mix-campaigns. DIR is locked as `check` and `fuzz` lock their OUT.
 
@@ -158,6 +162,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
   RunRecord record = startRunRecord("fuzz", *engine, vs.get(), defaultSpecsDir(), options.seed, argv);
   record.cases = options.cases;
   if (options.shards > 1) record.shard = std::to_string(options.shard) + "/" + std::to_string(options.shards);
+  if (options.formats != kDefaultCycleFormats) record.formats = cycleFormatsText(options.formats);
   recordRun(options.outDir, record, options.resume, mixCampaigns);
   const FuzzSummary s = runFuzz(*engine, vs.get(), options, std::cerr);
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "

@@ -1,10 +1,14 @@
 #include "harness/fuzz/case_generator.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+
+#include "oracles/metamorphic/g_code_writing.h"
+#include "reference/interpreter/g_codes.h"
 
 namespace cyclecert {
 
@@ -14,9 +18,10 @@ struct NamedFormat {
   CycleFormat format;
   std::string_view name;
 };
-constexpr NamedFormat kFormatNames[] = {{CycleFormat::FanucTwoBlocks, "two-block"},
-                                        {CycleFormat::Series10OneBlock, "fs10"},
-                                        {CycleFormat::HuazhongOneBlock, "hnc"}};
+constexpr NamedFormat kFormatNames[] = {
+    {CycleFormat::FanucTwoBlocks, "two-block"}, {CycleFormat::Series10OneBlock, "fs10"},
+    {CycleFormat::HuazhongOneBlock, "hnc"},     {CycleFormat::HaasOneBlock, "haas"},
+    {CycleFormat::SystemB, "gsys-b"},           {CycleFormat::SystemC, "gsys-c"}};
 
 std::string knownFormatNames() {
   std::string names;
@@ -34,7 +39,11 @@ std::string_view cycleFormatName(CycleFormat f) {
 }
 
 CycleFormats parseCycleFormats(std::string_view text) {
-  if (text == "all") return {CycleFormat::FanucTwoBlocks, CycleFormat::Series10OneBlock, CycleFormat::HuazhongOneBlock};
+  if (text == "all") {
+    CycleFormats all;
+    for (const NamedFormat& f : kFormatNames) all.push_back(f.format);
+    return all;
+  }
   CycleFormats formats;
   std::size_t from = 0;
   while (from <= text.size()) {
@@ -153,12 +162,16 @@ void chooseCycle(FuzzCase& c, const std::vector<int>& choice) {
   c.finish = choice[15] % 3 == 0;
 }
 
-// What the format can write: the Series 10/11 format is FANUC's (a GSK draw becomes 0i-F's); the
-// Huazhong one is profile hnc's, and seed 003 gives G71 without pockets only, and no G70 (its
-// finishing is the run of ns…nf after the cycle, HNC.G71.FST).
+// What the format can write: the Series 10/11 format and G code systems B/C are FANUC's (a GSK
+// draw becomes 0i-F's); the Haas one is profile haas's; the Huazhong one is profile hnc's, and seed
+// 003 gives G71 without pockets only, and no G70 (its finishing is the run of ns…nf after the
+// cycle, HNC.G71.FST).
 void fitToFormat(FuzzCase& c, CycleFormat format) {
   c.format = format;
-  if (format == CycleFormat::Series10OneBlock && c.profile == "gsk") c.profile = "fanuc-0i-f";
+  const bool fanucOnly =
+      format == CycleFormat::Series10OneBlock || format == CycleFormat::SystemB || format == CycleFormat::SystemC;
+  if (fanucOnly && c.profile == "gsk") c.profile = "fanuc-0i-f";
+  if (format == CycleFormat::HaasOneBlock) c.profile = "haas";
   if (format != CycleFormat::HuazhongOneBlock) return;
   c.profile = "hnc";
   c.cycle = 71;
@@ -263,6 +276,11 @@ void drawCompensation(FuzzCase& c, const std::vector<int>& later) {
                             return s.along < 0 || (!c.typeII && s.up < 0);
                           });
   if (later[2] < 7 || outOfRange || c.typeII) return;
+  // Not drawn (yet) for the Haas block: G41/G42 in block ns with G40 in block nf (HAAS.TNRC.SHAPE,
+  // which fuzzProgram() writes) gives paths the oracles reject (material left at the end of the
+  // shape, gouges where G40 is on an arc): the reference and the oracles must first agree on what
+  // G40 in block nf does to G70's last move.
+  if (c.format == CycleFormat::HaasOneBlock) return;
   static constexpr int kRadii[] = {20, 40, 80};
   c.noseRadius = kRadii[later[3] % 3];
   c.tip = tipIntoTheCut(c);
@@ -345,11 +363,62 @@ int tipIntoTheCut(const FuzzCase& c) {
 
 namespace {
 
+GCodeSystem gCodeSystemOf(CycleFormat f) {
+  switch (f) {
+    case CycleFormat::SystemB: return GCodeSystem::B;
+    case CycleFormat::SystemC: return GCodeSystem::C;
+    case CycleFormat::HuazhongOneBlock: return GCodeSystem::Huazhong;
+    case CycleFormat::FanucTwoBlocks:
+    case CycleFormat::Series10OneBlock:
+    case CycleFormat::HaasOneBlock: break;
+  }
+  return GCodeSystem::A;
+}
+
+// The G codes a case's program writes, as its G code system writes them (PROG.GSYS.*), from the
+// G code table: worked out once per system, not per case.
+struct ProgramCodes {
+  std::string motion[4];  // G00 G01 G02 G03
+  std::string roughing[2];  // G71 G72 (system C: G73 G74)
+  std::string finishing;    // G70 (system C: G72)
+  std::string compensation[3];  // G40 G41 G42
+  std::string modes;  // systems B/C: absolute programming and feed per revolution ("G90 G95"); A: none
+};
+
+ProgramCodes programCodesIn(GCodeSystem s) {
+  ProgramCodes c;
+  for (int m = 0; m < 4; ++m) c.motion[m] = gCodeWrittenIn(s, 10 * m);
+  c.roughing[0] = gCodeWrittenIn(s, 710);
+  c.roughing[1] = gCodeWrittenIn(s, 720);
+  c.finishing = gCodeWrittenIn(s, 700);
+  for (int k = 0; k < 3; ++k) c.compensation[k] = gCodeWrittenIn(s, 400 + 10 * k);
+  if (s == GCodeSystem::B || s == GCodeSystem::C) {
+    c.modes = gCodeWrittenIn(s, kAbsoluteProgramming) + " " + gCodeWrittenIn(s, 990);
+  }
+  return c;
+}
+
+const ProgramCodes& programCodes(CycleFormat f) {
+  static const std::array<ProgramCodes, kGCodeSystems> codes = {
+      programCodesIn(GCodeSystem::A), programCodesIn(GCodeSystem::B), programCodesIn(GCodeSystem::C),
+      programCodesIn(GCodeSystem::Huazhong)};
+  return codes[static_cast<std::size_t>(gCodeSystemOf(f))];
+}
+
+// Hundredths of a millimetre with a decimal point ("3.", "1.5"): HAAS.G71.D reads D in the program's
+// units, which a word without a decimal point would not be on every controller.
+std::string mmWithPoint(long hundredths) {
+  std::string text = mm(hundredths);
+  if (text.find('.') == std::string::npos) text += '.';
+  return text;
+}
+
 // The frame placed in the machine: a frame point (along the cut axis, along the depth axis) as
 // program words. G71 cuts along Z, G72 along X; a mirrored axis runs the other way; offsets keep
 // every radius positive (≥ 1 mm) for either axis that carries X.
 struct Placement {
   const FuzzCase& c;
+  const ProgramCodes& codes;
   long cutOffset = 0, depthOffset = 0;
 
   std::string words(long cut, long depth) const {
@@ -361,10 +430,10 @@ struct Placement {
   }
   // Convex in the frame is G03 for G71 (outer, towards the chuck); exchanging the axes and each
   // mirror reverse the sense.
-  std::string arcCode(FuzzSegment::Kind k) const {
+  const std::string& arcCode(FuzzSegment::Kind k) const {
     const int reversals = (c.cycle == 72) + c.mirrorCut + c.mirrorDepth;
     const bool ccw = (k == FuzzSegment::ConvexArc) == (reversals % 2 == 0);
-    return ccw ? "G03" : "G02";
+    return codes.motion[ccw ? 3 : 2];
   }
   // Allowances along the frame's axes as the cycle's words: U (diameter) and W, or X and Z in the
   // Huazhong block (HNC.G71.FMT: X = Δx on the diameter, Z = Δz).
@@ -379,13 +448,18 @@ struct Placement {
 
 // The cycle's block(s) in the case's format, each ending with ";\n".
 std::string cycleBlocks(const FuzzCase& c, const Placement& place) {
-  const std::string g = c.cycle == 71 ? "G71" : "G72";
+  const std::string& g = place.codes.roughing[c.cycle == 71 ? 0 : 1];
   switch (c.format) {
     case CycleFormat::Series10OneBlock:  // G71.FS10.D: D in least input increments (0.001 mm)
       return g + " P10 Q20 " + place.allowanceWords() + " D" + std::to_string(10 * c.depthOfCut) + " F0.2;\n";
     case CycleFormat::HuazhongOneBlock:
       return g + " U" + mm(c.depthOfCut) + " R" + mm(c.retract) + " P10 Q20 " + place.allowanceWords() + " F0.2;\n";
+    case CycleFormat::HaasOneBlock:  // HAAS.G71.D: D in mm; HAAS.G71.R1: R1 selects type II
+      return g + " P10 Q20 " + place.allowanceWords() + " D" + mmWithPoint(c.depthOfCut) + (c.typeII ? " R1" : "") +
+             " F0.2;\n";
     case CycleFormat::FanucTwoBlocks:
+    case CycleFormat::SystemB:
+    case CycleFormat::SystemC:
       break;
   }
   return g + (c.cycle == 71 ? " U" : " W") + mm(c.depthOfCut) + " R" + mm(c.retract) + ";\n" + g + " P10 Q20 " +
@@ -408,7 +482,8 @@ std::string fuzzProgram(const FuzzCase& c) {
     behind = std::min(behind, along);
   }
   const long startDepth = top + c.startAbove, startAlong = c.startAlong;
-  Placement place{c};
+  const ProgramCodes& codes = programCodes(c.format);
+  Placement place{c, codes};
   // Whichever axis carries X must stay ≥ 1 mm in radius over everything drawn.
   const long margin = 100;
   const bool cutIsX = c.cycle == 72;
@@ -420,31 +495,45 @@ std::string fuzzProgram(const FuzzCase& c) {
   }
   std::string p;  // appended to: a fifth cheaper than through an ostringstream
   p.reserve(512);
-  p += "G00 " + place.words(startAlong, startDepth) + ";\n";
-  // G71.TNRC.PLACE: compensation is commanded before the cycle, cancelled after it (and its G70).
-  if (c.noseRadius > 0) p += "G" + std::to_string(compensationCode(c)) + ";\n";
+  if (!codes.modes.empty()) p += codes.modes + ";\n";  // systems B/C: G90 G95 (PROG.GSYS.INCREMENTAL)
+  p += codes.motion[0] + " " + place.words(startAlong, startDepth) + ";\n";
+  // G71.TNRC.PLACE: compensation is commanded before the cycle, cancelled after it (and its G70);
+  // on Haas in block ns and cancelled in block nf (HAAS.TNRC.SHAPE, its manual's examples).
+  const bool haas = c.format == CycleFormat::HaasOneBlock;
+  const std::string& compensation = codes.compensation[compensationCode(c) == 41 ? 1 : 2];
+  if (c.noseRadius > 0 && !haas) p += compensation + ";\n";
   const std::string shapeFeed = " F" + mm(c.shapeFeed);
   p += cycleBlocks(c, place);
   // Block ns moves the depth axis only (type I), or both axes with a zero incremental word of the
-  // cut axis (type II).
+  // cut axis (type II) — in systems B/C, which have no U/W, an absolute word at A's cut coordinate.
   const std::string bWords = place.words(startAlong, c.b);
-  const std::string depthWord = c.cycle == 71 ? bWords.substr(0, bWords.find(' ')) : bWords.substr(bWords.find(' ') + 1);
-  p += "N10 G0" + std::to_string(c.headMotion) + " " + depthWord + (c.typeII ? (c.cycle == 71 ? " W0" : " U0") : "");
+  const bool absoluteOnly = !codes.modes.empty();
+  const std::string depthWord = c.typeII && absoluteOnly ? bWords
+                                : c.cycle == 71          ? bWords.substr(0, bWords.find(' '))
+                                                         : bWords.substr(bWords.find(' ') + 1);
+  p += "N10 ";
+  if (c.noseRadius > 0 && haas) p += compensation + " ";
+  p += codes.motion[c.headMotion] + " " + depthWord + (c.typeII && !absoluteOnly ? (c.cycle == 71 ? " W0" : " U0") : "");
   if (c.headMotion == 2) p += " R1";
   if (c.shapeFeedAt == 0) p += shapeFeed;
   p += ";\n";
   for (std::size_t i = 0; i < c.segments.size(); ++i) {
     const FuzzSegment& s = c.segments[i];
-    if (i + 1 == c.segments.size()) p += "N20 ";
-    if (s.kind == FuzzSegment::Line) p += "G01 " + place.words(points[i].first, points[i].second);
+    if (i + 1 == c.segments.size()) {
+      p += "N20 ";
+      // HAAS.TNRC.SHAPE: compensation started in block ns ends in block nf (the G70 of the shape
+      // needs it there, NT2).
+      if (c.noseRadius > 0 && haas) p += codes.compensation[0] + " ";
+    }
+    if (s.kind == FuzzSegment::Line) p += codes.motion[1] + " " + place.words(points[i].first, points[i].second);
     else p += place.arcCode(s.kind) + " " + place.words(points[i].first, points[i].second) + " R" + mm(s.along);
     if (c.shapeFeedAt == static_cast<int>(i) + 1) p += shapeFeed;
     p += ";\n";
   }
   // G70 returns to A in one rapid (G70.EX): where a peak stands between C and A at A's height that
   // rapid crosses the part — the programmer's collision on any controller, so not generated.
-  if (c.finish && points.back().second == top) p += "G70 P10 Q20;\n";
-  if (c.noseRadius > 0) p += "G40;\n";
+  if (c.finish && points.back().second == top) p += codes.finishing + " P10 Q20;\n";
+  if (c.noseRadius > 0 && !haas) p += codes.compensation[0] + ";\n";
   p += "M30;\n";
   return p;
 }
@@ -462,9 +551,16 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
     params["FCV"] = 1;
     params["5133"] = c.retract / 100.0;
   }
+  // HAAS.G71.SETTINGS: the Haas block has no address for e either: Setting 73, here 5133.
+  if (c.format == CycleFormat::HaasOneBlock) params["5133"] = c.retract / 100.0;
+  if (c.format == CycleFormat::SystemB) params["3401#6"] = 1;  // PROG.GSYS.SELECT
+  if (c.format == CycleFormat::SystemC) params["3401#7"] = 1;
   // The writer of a regression names the failing rules.
   const char* rule = c.format == CycleFormat::Series10OneBlock   ? "G71.FS10.FMT"
                      : c.format == CycleFormat::HuazhongOneBlock ? "HNC.G71.FMT"
+                     : c.format == CycleFormat::HaasOneBlock     ? "HAAS.G71.FMT"
+                     : c.format == CycleFormat::SystemB          ? "PROG.GSYS.B"
+                     : c.format == CycleFormat::SystemC          ? "PROG.GSYS.C"
                      : c.cycle == 71                             ? "G71.QUAD"
                                                                  : "G72.FMT";
   nlohmann::json j{
@@ -484,7 +580,11 @@ std::string describeFuzzCase(const FuzzCase& c) {
   std::ostringstream s;
   s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
     << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;
-  if (c.format != CycleFormat::FanucTwoBlocks) s << ", " << cycleFormatName(c.format) << " one-block format";
+  if (c.format == CycleFormat::SystemB || c.format == CycleFormat::SystemC) {
+    s << ", G code system " << (c.format == CycleFormat::SystemB ? "B" : "C");
+  } else if (c.format != CycleFormat::FanucTwoBlocks) {
+    s << ", " << cycleFormatName(c.format) << " one-block format";
+  }
   for (const auto& [set, name] : {std::pair{c.rf1, "RF1"}, {c.dtp, "DTP"}, {c.r16, "R16"}, {c.nsp, "NSP"}, {c.rf2, "RF2"}}) {
     if (set) s << ", " << name << "=1";
   }

@@ -22,7 +22,12 @@
 // The cycle block format is drawn from the formats the run asks for (CycleFormat; by default the
 // FANUC two-block format only, so that a seed gives the cases it always gave): the Series 10/11
 // one block with D (FANUC profiles, FCV = 1, e in parameter 5133) and the Huazhong one block
-// (profile hnc, G71 type I only, no G70: its ns…nf run again after the cycle as the finishing).
+// (profile hnc, G71 type I only, no G70: its ns…nf run again after the cycle as the finishing), the
+// Haas one block (profile haas: D in program units with a decimal point, R1 for type II, e in
+// parameter 5133; G41/G42 in block ns and G40 in block nf when a case has a nose radius, which is
+// not drawn yet: see drawCompensation()) and the two blocks written in FANUC G code system B or C
+// (3401#6 GSB / #7 GSC: G90 absolute, G95 feed per revolution, and in C the cycles G72–G74; every
+// code written through the G code table, oracles/metamorphic/g_code_writing.h).
 // Combinations whose collisions the documents themselves cause are not drawn (see caseFrom() and
 // fuzzProgram()).
 #include <cstdint>
@@ -37,15 +42,19 @@
 
 namespace cyclecert {
 
-// How the roughing cycle is written (rules G71.FMT.ZX, G71.FS10.FMT, HNC.G71.FMT).
+// How the roughing cycle is written (rules G71.FMT.ZX, G71.FS10.FMT, HNC.G71.FMT, HAAS.G71.FMT,
+// PROG.GSYS.B, PROG.GSYS.C).
 enum class CycleFormat {
   FanucTwoBlocks,    // `G71 U(Δd) R(e); G71 P Q U(Δu) W(Δw) F;` (G72 alike), every profile
   Series10OneBlock,  // `G71 P Q U(Δu) W(Δw) D(Δd in 0.001 mm) F;` with FCV = 1 and 5133 = e, FANUC profiles
   HuazhongOneBlock,  // `G71 U(Δd) R(e) P Q X(Δu) Z(Δw) F;` on profile hnc; ns…nf then run as finishing
+  HaasOneBlock,      // `G71 P Q U(Δu) W(Δw) D(Δd, mm) [R1] F;` with 5133 = e on profile haas
+  SystemB,           // the two blocks in G code system B (3401#6 = 1), FANUC profiles
+  SystemC,           // the two blocks in G code system C (3401#7 = 1): G73/G74 roughing, G72 finishing
 };
 using CycleFormats = std::vector<CycleFormat>;
 
-// "two-block", "fs10", "hnc": the names `cyclecert fuzz --formats` takes.
+// "two-block", "fs10", "hnc", "haas", "gsys-b", "gsys-c": the names `cyclecert fuzz --formats` takes.
 std::string_view cycleFormatName(CycleFormat f);
 // A comma-separated list of those names, or "all". Throws std::invalid_argument naming the word
 // it did not know and the names it knows.

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "oracles/metamorphic/g_code_writing.h"
 #include "oracles/metamorphic/lathe_program.h"
 #include "oracles/metamorphic/path_compare.h"
 #include "oracles/metamorphic/word_edit.h"
 #include "reference/gcode/writer.h"
+#include "reference/interpreter/g_codes.h"
 
 namespace cyclecert {
 
@@ -43,16 +45,43 @@ void insertBeforeFeed(Block& b, Word w) {
   b.words.insert(feed, std::move(w));
 }
 
+// The one-block dialects a relation writes (format_relations.h): how D carries Δd, whether R1 marks
+// type II, the settings and profile the follow-up runs with.
+enum class OneBlockDialect { Series10, Haas };
+
 // G71.FS10.D: Δd in least input increments of metric IS-B (the reader refuses G20): 0.001 mm.
-std::optional<Word> depthInLeastIncrements(double depthOfCut) {
+// HAAS.G71.D: Δd in the program's units, with its decimal point.
+std::optional<Word> depthWord(OneBlockDialect dialect, double depthOfCut) {
+  if (dialect == OneBlockDialect::Haas) return makeWord('D', depthOfCut, true);
   const double increments = depthOfCut * 1000;
   const double whole = std::round(increments);
   if (std::abs(increments - whole) > 1e-6 || whole > 999'999'999) return std::nullopt;
   return makeWord('D', whole, false);
 }
 
-std::optional<FollowUp> toSeries10(const Program& p, const ParamSettings& params, std::string& whyNot) {
-  const auto lathe = readLatheProgram(p, whyNot);
+// A roughing cycle whose block ns moves the cut axis too — Z for G71, X for G72: type II
+// (G71.TYPE.SELECT, G72.TYPE.SELECT, HAAS.G71.R1).
+bool headMovesTheCutAxis(const Program& p, const LatheProgram& lathe, const RoughingCycleInfo& cycle) {
+  const bool g71 = cycle.code == 71;
+  return std::any_of(p.blocks[cycle.ns].words.begin(), p.blocks[cycle.ns].words.end(), [&](const Word& w) {
+    const WordRole role = roleOf(lathe.blocks[cycle.ns], w);
+    return g71 ? role == WordRole::AbsFirst || role == WordRole::IncFirst
+               : role == WordRole::AbsSecond || role == WordRole::IncSecond;
+  });
+}
+
+const RoughingCycleInfo* cycleAt(const LatheProgram& lathe, std::size_t block) {
+  for (const RoughingCycleInfo& c : lathe.cycles) {
+    if (c.block == block) return &c;
+  }
+  return nullptr;
+}
+
+// Two-block → one-block: every first block loses Δd, e and its code, every P/Q block gets D (and,
+// on Haas, R1 for type II); e goes to 5133, which holds one value for all cycles.
+std::optional<FollowUp> toOneBlock(const Program& p, const ParamSettings& params, OneBlockDialect dialect,
+                                   std::string& whyNot) {
+  const auto lathe = readLatheProgram(p, params, whyNot);
   if (!lathe) return std::nullopt;
   if (lathe->cycles.empty()) {
     whyNot = "no G71/G72 cycle: nothing to write in the one-block format";
@@ -73,13 +102,17 @@ std::optional<FollowUp> toSeries10(const Program& p, const ParamSettings& params
       whyNot = lineOf(p, i) + "no Δd is programmed before this cycle (parameter 5132 gives it): no D to write";
       return std::nullopt;
     }
-    const auto d = depthInLeastIncrements(*inForce.depthOfCut);
+    const auto d = depthWord(dialect, *inForce.depthOfCut);
     if (!d) {
       whyNot = lineOf(p, i) + "Δd " + std::to_string(*inForce.depthOfCut) +
                " mm is not a whole number of least input increments (0.001 mm): D cannot write it";
       return std::nullopt;
     }
     insertBeforeFeed(out.blocks[i], *d);
+    const RoughingCycleInfo* cycle = cycleAt(*lathe, i);
+    if (dialect == OneBlockDialect::Haas && cycle && headMovesTheCutAxis(p, *lathe, *cycle)) {
+      insertBeforeFeed(out.blocks[i], makeWord('R', 1, false));  // HAAS.G71.R1: "R1 (with no decimal)"
+    }
     if (retractOfTheCycles && *retractOfTheCycles != inForce.retract) {
       whyNot = lineOf(p, i) + "e differs from an earlier cycle's: the one-block format has no address for e, "
                               "and parameter 5133 holds one value";
@@ -89,9 +122,15 @@ std::optional<FollowUp> toSeries10(const Program& p, const ParamSettings& params
   }
   eraseBlocks(out, emptied);
   ParamSettings settings = params;
-  if (*retractOfTheCycles) settings.push_back({"5133", **retractOfTheCycles});
-  settings.push_back({"FCV", 1});
-  return FollowUp{std::move(out), std::move(settings), [](const Toolpath& t) { return t; }, ""};
+  if (*retractOfTheCycles) {
+    settings.push_back({"5133", **retractOfTheCycles});
+  } else if (dialect == OneBlockDialect::Haas) {
+    // e from the source's 5133 (Setting 73 has another default on the haas profile).
+    settings.push_back({"5133", machineParamsOf(params).get("5133")});
+  }
+  if (dialect == OneBlockDialect::Series10) settings.push_back({"FCV", 1});
+  return FollowUp{std::move(out), std::move(settings), [](const Toolpath& t) { return t; },
+                  dialect == OneBlockDialect::Haas ? "haas" : ""};
 }
 
 // The one roughing cycle's G70: it must follow nf directly, run that cycle's shape from its start
@@ -120,17 +159,8 @@ std::optional<std::size_t> finishingBlock(const Program& p, const LatheProgram& 
   return g70;
 }
 
-// Seed 003 gives the Huazhong G71 without pockets: a head moving along Z too is type II.
-bool headMovesTheCutAxis(const Program& p, const LatheProgram& lathe) {
-  const std::size_t ns = lathe.cycles.front().ns;
-  return std::any_of(p.blocks[ns].words.begin(), p.blocks[ns].words.end(), [&](const Word& w) {
-    const WordRole role = roleOf(lathe.blocks[ns], w);
-    return role == WordRole::AbsFirst || role == WordRole::IncFirst;
-  });
-}
-
 std::optional<FollowUp> toHuazhong(const Program& p, const ParamSettings& params, std::string& whyNot) {
-  const auto lathe = readLatheProgram(p, whyNot);
+  const auto lathe = readLatheProgram(p, params, whyNot);
   if (!lathe) return std::nullopt;
   if (lathe->cycles.size() != 1) {
     whyNot = "the relation handles one roughing cycle; the program has " + std::to_string(lathe->cycles.size());
@@ -141,7 +171,7 @@ std::optional<FollowUp> toHuazhong(const Program& p, const ParamSettings& params
     whyNot = lineOf(p, cycle.block) + "G72: seed 003 describes the Huazhong G71 only";
     return std::nullopt;
   }
-  if (headMovesTheCutAxis(p, *lathe)) {
+  if (headMovesTheCutAxis(p, *lathe, cycle)) {  // seed 003 gives the Huazhong G71 without pockets
     whyNot = lineOf(p, cycle.ns) + "block ns moves Z too (type II): seed 003 gives the Huazhong G71 without pockets";
     return std::nullopt;
   }
@@ -185,7 +215,132 @@ std::optional<FollowUp> toHuazhong(const Program& p, const ParamSettings& params
                   "hnc"};
 }
 
+// ---- G code systems B and C ------------------------------------------------------------------
+
+// Each G word renamed to the code `system` writes its function with (system C: G71 → G73, G21 →
+// G71; B and C: G98 → G94, G99 → G95), through the G code table.
+void renameGCodes(Block& b, GCodeSystem system) {
+  for (Word& w : b.words) {
+    if (w.letter != 'G') continue;
+    const GCode* code = findGCode(GCodeSystem::A, gCode10(w.value));
+    const auto number = code ? gCodeNumberIn(system, code->function) : std::nullopt;
+    if (number) setValue(w, *number / 10.0);  // the reader let only system A codes with a B/C twin through
+  }
+}
+
+// PROG.GSYS.INCREMENTAL: a block's axis words in system B/C, where X/Z are absolute under G90 and
+// increments under G91 and U/W are no axis words. A block of increments only keeps them (U → X, W →
+// Z, under G91) where `mayStayIncremental`; otherwise (a block mixing both, a shape block) the
+// increments become absolute words, from where the block starts. Returns the programming mode the
+// block needs, or 0 for a block without axis words.
+int writeAxisWordsInSystemBC(Block& out, const Block& source, const BlockInfo& info, bool mayStayIncremental) {
+  bool absolute = false, incremental = false;
+  for (const Word& w : source.words) {
+    const WordRole role = roleOf(info, w);
+    absolute = absolute || role == WordRole::AbsFirst || role == WordRole::AbsSecond;
+    incremental = incremental || role == WordRole::IncFirst || role == WordRole::IncSecond;
+  }
+  if (!absolute && !incremental) return 0;
+  const bool toAbsolute = absolute || !mayStayIncremental;
+  const Point from = info.before.planePoint();
+  for (std::size_t k = 0; k < source.words.size(); ++k) {
+    const WordRole role = roleOf(info, source.words[k]);
+    Word& w = out.words[k];
+    if (role == WordRole::IncFirst) rename(w, 'Z', toAbsolute ? from.z + w.value : w.value);
+    if (role == WordRole::IncSecond) rename(w, 'X', toAbsolute ? 2 * from.x + w.value : w.value);
+  }
+  return toAbsolute ? kAbsoluteProgramming : kIncrementalProgramming;
+}
+
+Block modeBlock(GCodeSystem system, int mode, int line) {
+  Block b;
+  b.line = line;
+  b.words.push_back(makeWord('G', *gCodeNumberIn(system, mode) / 10.0));
+  return b;
+}
+
+// System A → B or C: the codes renamed; G90/G91 where the programming mode changes between blocks
+// outside the shapes. The reference refuses G90/G91 between P and Q (G72.NSNF.GCODES lists the codes
+// a shape may hold), so a shape's words are all absolute and G90 is in force at every cycle and G70
+// that runs it (a block `G90;` of its own before them when G91 was). 3401#6 or #7 set.
+std::optional<FollowUp> toGCodeSystem(const Program& p, const ParamSettings& params, GCodeSystem system,
+                                      std::string& whyNot) {
+  const auto lathe = readLatheProgram(p, params, whyNot);
+  if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
+  Program out = p;
+  out.blocks.clear();
+  int inForce = 0;  // the programming mode in force; 0 until a block commands one (power-on: absolute)
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+    const BlockInfo& info = lathe->blocks[i];
+    Block b = p.blocks[i];
+    const bool shape = info.shapeOf.has_value();
+    const int mode = info.kind == BlockKind::Plain ? writeAxisWordsInSystemBC(b, p.blocks[i], info, !shape) : 0;
+    renameGCodes(b, system);
+    if (info.kind != BlockKind::Plain && inForce == kIncrementalProgramming) {
+      out.blocks.push_back(modeBlock(system, kAbsoluteProgramming, b.line));
+      inForce = kAbsoluteProgramming;
+    }
+    if (mode && !shape && mode != inForce) {
+      b.words.insert(b.words.begin(), makeWord('G', *gCodeNumberIn(system, mode) / 10.0));
+      inForce = mode;
+    }
+    out.blocks.push_back(std::move(b));
+  }
+  ParamSettings settings = params;
+  settings.push_back({system == GCodeSystem::B ? "3401#6" : "3401#7", 1});
+  return FollowUp{std::move(out), std::move(settings), [](const Toolpath& t) { return t; }, ""};
+}
+
+std::string gCodeSystemDescription(GCodeSystem system) {
+  const std::string letter = system == GCodeSystem::B ? "B" : "C";
+  return "G code system A → " + letter + " (--param " + (system == GCodeSystem::B ? "3401#6" : "3401#7") +
+         "=1): every G code renamed to the code system " + letter + " writes its function with (the G code table "
+         "of reference/interpreter/g_codes.h: G98/G99 → G94/G95" +
+         (system == GCodeSystem::C ? ", G20/G21 → G70/G71, G70/G71/G72 → G72/G73/G74" : "") +
+         "); outside the shapes, G90 (absolute words) or G91 (a block of U/W increments only: U → X, W → Z) "
+         "where the mode changes, and a block mixing X/Z with U/W gets absolute words from where it starts; "
+         "inside ns…nf every increment becomes an absolute word (the reference refuses G90/G91 between P and "
+         "Q), and a block G90 goes before a cycle or G70 that G91 would precede. Refuses a G70 that does not "
+         "start at its cycle's start point. For the FANUC profiles (the others do not read 3401: the "
+         "follow-up fails there by design). Expected: the same toolpath. Handles the vocabulary of "
+         "lathe_program.h.";
+}
+
+Relation gCodeSystemRelation(GCodeSystem system) {
+  Relation r;
+  r.id = system == GCodeSystem::B ? "gsys-b" : "gsys-c";
+  r.description = gCodeSystemDescription(system);
+  r.rules = {"PROG.GSYS.SELECT", system == GCodeSystem::B ? "PROG.GSYS.B" : "PROG.GSYS.C", "PROG.GSYS.INCREMENTAL"};
+  r.transform = [system](const Program& p, const ParamSettings& params, std::string& whyNot) {
+    return toGCodeSystem(p, params, system, whyNot);
+  };
+  r.compare = compareToolpaths;
+  return r;
+}
+
 }  // namespace
+
+Relation haasOneBlockRelation() {
+  Relation r;
+  r.id = "haas-one-block";
+  r.description =
+      "FANUC two-block → the Haas one block, profile haas: every first block G71 U(Δd) R(e) / G72 W(Δd) R(e) "
+      "loses Δd, e and its code (its F S T M stay as a plain block), every P/Q block gets D = the Δd in force "
+      "in mm with its decimal point (D1.5) and, when its block ns moves the cut axis too (type II), R1; the "
+      "settings gain 5133 = e (Setting 73: the block has no address for e; refused when the cycles' e differ; "
+      "without a programmed e the source's 5133). Refuses a cycle without a programmed Δd before it. "
+      "Expected: the same toolpath. Handles the vocabulary of lathe_program.h (no G41/G42, so Haas's "
+      "compensation inside P…Q is not exercised).";
+  r.rules = {"HAAS.G71.FMT", "HAAS.G71.D", "HAAS.G71.R1", "HAAS.G71.SETTINGS"};
+  r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) {
+    return toOneBlock(p, params, OneBlockDialect::Haas, whyNot);
+  };
+  r.compare = compareToolpaths;
+  return r;
+}
+
+Relation gCodeSystemBRelation() { return gCodeSystemRelation(GCodeSystem::B); }
+Relation gCodeSystemCRelation() { return gCodeSystemRelation(GCodeSystem::C); }
 
 Relation series10OneBlockRelation() {
   Relation r;
@@ -198,7 +353,9 @@ Relation series10OneBlockRelation() {
       "cycle without a programmed Δd before it (D would have nothing to say). Expected: the same toolpath. "
       "Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.FS10.FMT", "G71.FS10.D", "G71.DD.MODAL", "G71.E.MODAL"};
-  r.transform = toSeries10;
+  r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) {
+    return toOneBlock(p, params, OneBlockDialect::Series10, whyNot);
+  };
   r.compare = compareToolpaths;
   return r;
 }

@@ -7,7 +7,9 @@
 
 #include "reference/gcode/writer.h"
 #include "reference/interpreter/block_motion.h"
+#include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
+#include "reference/model/profile.h"
 
 namespace cyclecert {
 
@@ -204,6 +206,18 @@ class Reader {
 
 }  // namespace
 
+MachineParams machineParamsOf(const ParamSettings& params) {
+  MachineParams m;
+  for (const auto& [name, value] : params) {
+    try {
+      m.set(name, value);
+    } catch (const std::invalid_argument&) {
+      // skipped: the engine running the program names the bad setting
+    }
+  }
+  return m;
+}
+
 std::optional<LatheProgram> readLatheProgram(const Program& program, std::string& whyNot) {
   try {
     return Reader(program).read();
@@ -211,6 +225,28 @@ std::optional<LatheProgram> readLatheProgram(const Program& program, std::string
     whyNot = r.what();
     return std::nullopt;
   }
+}
+
+std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot) {
+  const GCodeSystem system = gCodeSystemOf(*findProfile("fanuc-0i-f"), machineParamsOf(params));
+  if (system != GCodeSystem::A) {
+    whyNot = "the settings select " + gCodeSystemName(system) +
+             " (3401#6 GSB / #7 GSC): the relations read G code system A programs (X/Z absolute, U/W "
+             "incremental, G70–G72 the cycles), which the words of this one do not mean";
+    return std::nullopt;
+  }
+  return readLatheProgram(program, whyNot);
+}
+
+bool finishesAtCycleStarts(const Program& p, const LatheProgram& lathe, std::string& whyNot) {
+  for (std::size_t i = 0; i < lathe.blocks.size(); ++i) {
+    if (lathe.blocks[i].kind == BlockKind::Finish && !lathe.blocks[i].finishAtCycleStart) {
+      whyNot = "line " + std::to_string(p.blocks[i].line) +
+               ": G70 does not run a roughing cycle's shape from that cycle's start point";
+      return false;
+    }
+  }
+  return true;
 }
 
 WordRole roleOf(const BlockInfo& info, const Word& w) {

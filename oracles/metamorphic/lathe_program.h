@@ -20,13 +20,22 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "reference/interpreter/modal_state.h"
+#include "reference/model/params.h"
 #include "reference/model/geometry.h"
 #include "reference/model/program.h"
 
 namespace cyclecert {
+
+// Parameter settings by number or mnemonic, applied in order (as a spec case's "params").
+using ParamSettings = std::vector<std::pair<std::string, double>>;
+
+// The settings over the parameter catalogue's defaults (a FANUC profile's): what a FANUC profile
+// reads them as. A setting the catalogue refuses is skipped (the engine that runs the program names it).
+MachineParams machineParamsOf(const ParamSettings& params);
 
 enum class BlockKind {
   Plain,        // positioning, cutting, or no motion; the shape blocks ns…nf are plain blocks
@@ -84,8 +93,20 @@ struct LatheProgram {
   Extent reach{0, 0, 0, 0};
 };
 
-// Reads the program, or returns nothing and says why (line and word) it is outside the vocabulary.
+// Reads the program as a G code system A program, or returns nothing and says why (line and word)
+// it is outside the vocabulary.
 std::optional<LatheProgram> readLatheProgram(const Program& program, std::string& whyNot);
+
+// The same, for a program that runs with these settings: refused (with the reason) when they select
+// G code system B or C (3401#6 GSB, #7 GSC, PROG.GSYS.SELECT as the FANUC profiles read them) —
+// there U/W are no increments, G90/G91 are modes and system C's G71 is metric input, so the
+// vocabulary's words would be misread. Every relation reads its source through this.
+std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot);
+
+// A shape that G70 runs from somewhere else than its roughing cycle's start point means another
+// geometry with incremental words than with absolute ones: relations that rewrite positions refuse
+// it (false, with the G70's line in whyNot).
+bool finishesAtCycleStarts(const Program& p, const LatheProgram& lathe, std::string& whyNot);
 
 // The role of a word of a block the reader accepted.
 WordRole roleOf(const BlockInfo& info, const Word& word);

@@ -71,19 +71,6 @@ void commandFromTheStart(Program& program, int from10, int to) {
   program.blocks.insert(program.blocks.begin(), b);
 }
 
-// A shape that G70 runs from somewhere else than its roughing cycle's start point means another
-// geometry with incremental words than with absolute ones: relations that rewrite positions refuse.
-bool finishesAtCycleStarts(const Program& p, const LatheProgram& lathe, std::string& whyNot) {
-  for (std::size_t i = 0; i < lathe.blocks.size(); ++i) {
-    if (lathe.blocks[i].kind == BlockKind::Finish && !lathe.blocks[i].finishAtCycleStart) {
-      whyNot = "line " + std::to_string(p.blocks[i].line) +
-               ": G70 does not run a roughing cycle's shape from that cycle's start point";
-      return false;
-    }
-  }
-  return true;
-}
-
 // ---- parameters ---------------------------------------------------------------------------------
 
 std::string parameterNumber(const std::string& name) {
@@ -119,7 +106,7 @@ Relation mirrorZ() {
       "toolpath with z → −z and every arc reversed. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G72.ALLOW", "G72.POINTS", "G71.T1.RETRACT45", "G72.RETRACT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo&, WordRole role, Word& w) {
       switch (role) {
@@ -155,7 +142,7 @@ Relation mirrorX() {
       "lathe_program.h.";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G71.LIMIT.HEIGHT", "G72.ALLOW", "G72.POINTS"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     const double x0 = std::max(1.0, std::ceil(lathe->reach.xMax));
     Program out = mapWords(p, *lathe, [x0](const BlockInfo&, WordRole role, Word& w) {
@@ -194,7 +181,7 @@ Relation scale(double k) {
       "lathe_program.h.";
   r.rules = {"G71.OP", "G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.FST"};
   r.transform = [k](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [k](const BlockInfo&, WordRole role, Word& w) {
       if (isLength(role)) setValue(w, k * w.value);
@@ -219,7 +206,7 @@ Relation translateZ(double dz) {
       "lathe_program.h.";
   r.rules = {"G72.POINTS", "G71.OP", "G72.STEP5", "G71.DTP"};
   r.transform = [dz](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [dz](const BlockInfo&, WordRole role, Word& w) {
       if (role == WordRole::AbsFirst) setValue(w, w.value + dz);
@@ -244,7 +231,7 @@ Relation translateX(double dx) {
       "Expected: x + dx. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G72.POINTS", "G71.OP", "G71.LIMIT.HEIGHT"};
   r.transform = [dx](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [dx](const BlockInfo&, WordRole role, Word& w) {
       if (role == WordRole::AbsSecond) setValue(w, w.value + 2 * dx);
@@ -271,7 +258,7 @@ Relation splitSegment() {
       "its cycle's start point. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.T1.SEMIFIN", "G72.STEP3", "G72.STEP7", "G71.T2.FOLLOW", "G71.T2.VALLEY", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     if (lathe->cycles.empty()) {
       whyNot = "no G71/G72 cycle: nothing to split";
@@ -311,7 +298,7 @@ Relation absoluteIncremental() {
       "the vocabulary of lathe_program.h.";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.HEAD.NOX", "G71.TYPE.SELECT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo& info, WordRole role, Word& w) {
       if (!info.shapeOf) return;
@@ -341,7 +328,7 @@ Relation radiusCentre() {
       "Expected: the same toolpath. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.T1.MONO", "G71.T1.SEMIFIN", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
     Program out = p;
     for (std::size_t i = 0; i < out.blocks.size(); ++i) {
@@ -389,7 +376,7 @@ Relation plane(int gCode) {
   r.rules = {gCode == 17 ? "G71.FMT.XY" : "G71.FMT.YZ", "G71.FMT.ZX", "G71.ALLOW.UNITS", "G71.ADDR.SHARED"};
   r.transform = [gCode, to](const Program& p, const ParamSettings& params,
                             std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     for (const RoughingCycleInfo& c : lathe->cycles) {
       if (c.code == 72) {
@@ -433,7 +420,7 @@ Relation metricInch() {
       "Expected: the same toolpath (always in mm), within a tolerance covering the printed digits.";
   r.rules = {"G72.RANGE", "G71.ALLOW.UNITS", "G71.FST"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo&, WordRole role, Word& w) {
       if (isLength(role) || role == WordRole::Feed) setValue(w, w.value / kMmPerInch);
@@ -456,7 +443,7 @@ Relation parameterDefault() {
       "blocks would change the parameters between cycles). Expected: the same toolpath.";
   r.rules = {"G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ADDR.SHARED"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     std::optional<std::size_t> first;
     for (std::size_t i = 0; i < lathe->blocks.size(); ++i) {
@@ -505,7 +492,7 @@ Relation transpose() {
       "vocabulary of lathe_program.h.";
   r.rules = {"G72.FMT", "G72.POINTS", "G72.DD", "G72.ALLOW", "G71.OP", "G72.STEP3", "G72.RETRACT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, whyNot);
+    const auto lathe = readLatheProgram(p, params, whyNot);
     if (!lathe) return std::nullopt;
     const double c = std::max(0.0, std::ceil(-lathe->reach.zMin));
     Program out = mapWords(p, *lathe, [c](const BlockInfo& info, WordRole role, Word& w) {
@@ -567,7 +554,8 @@ const std::vector<Relation>& allRelations() {
   static const std::vector<Relation> relations = {
       mirrorZ(),        mirrorX(),     translateZ(12.5), translateX(5), scale(2.5),          splitSegment(),
       absoluteIncremental(), radiusCentre(), plane(17), plane(19), metricInch(), parameterDefault(), transpose(),
-      series10OneBlockRelation(), huazhongOneBlockRelation(),
+      series10OneBlockRelation(), huazhongOneBlockRelation(), haasOneBlockRelation(), gCodeSystemBRelation(),
+      gCodeSystemCRelation(),
   };
   return relations;
 }

@@ -15,13 +15,11 @@
 #include <utility>
 #include <vector>
 
+#include "oracles/metamorphic/lathe_program.h"
 #include "reference/model/program.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
-
-// Parameter settings by number or mnemonic, applied in order (as a spec case's "params").
-using ParamSettings = std::vector<std::pair<std::string, double>>;
 
 // What a relation makes of one source case.
 struct FollowUp {
@@ -51,7 +49,7 @@ struct Relation {
 
 // Every relation, in a stable order: mirror-z, mirror-x, translate-z, translate-x, scale-k,
 // split-segment, abs-inc, r-ik, plane-g17, plane-g19, metric-inch, param-default, transpose,
-// fs10-one-block, hnc-one-block (format_relations.h).
+// fs10-one-block, hnc-one-block, haas-one-block, gsys-b, gsys-c (format_relations.h).
 const std::vector<Relation>& allRelations();
 const Relation* findRelation(std::string_view id);
 

@@ -49,10 +49,12 @@ std::string xz(Point p) {
 }
 
 // The parameters whose meaning the translation carries: Δd and e (5132/5133, through I and R), DTP
-// (through the appended return) and FCV (0001#1: the Series 10/11 one block is read, its D becomes
-// Δd and so LinuxCNC's I, G71.FS10.D).
+// (through the appended return), FCV (0001#1: the Series 10/11 one block is read, its D becomes
+// Δd and so LinuxCNC's I, G71.FS10.D) and the G code system (3401#6 GSB, #7 GSC: the program is
+// read in system B or C, PROG.GSYS.SELECT; the translation writes LinuxCNC's own codes).
 bool translatedParameter(const ParamSpec& p) {
-  return p.number == "5132" || p.number == "5133" || p.number == "5108#1" || p.number == "0001#1";
+  return p.number == "5132" || p.number == "5133" || p.number == "5108#1" || p.number == "0001#1" ||
+         p.number == "3401#6" || p.number == "3401#7";
 }
 
 // HNC.G71.FST: after the Huazhong G71 the program runs ns…nf again as the finishing path; the
