@@ -107,9 +107,9 @@ TEST_F(Cli, MalformedProgramNamesFileLineAndColumn) {
 }
 
 TEST_F(Cli, NotYetSupportedExitsWith3) {
-  const CliRun r = run("plan " + write("g73.nc", "G0 X70 Z2;\nG73 U5 W0 R4;\nG73 P10 Q11 U0.2 W0.1 F0.1;\nN10 G01 X50 Z0;\nN11 G1 Z-50;\n"));
+  const CliRun r = run("plan " + write("g75.nc", "G0 X70 Z2;\nG75 R1;\nG75 X40 Z-20 P3000 Q2000 F0.1;\n"));
   EXPECT_EQ(r.exitCode, 3);
-  EXPECT_NE(r.err.find("line 2: G73 pattern repeating cycle is not planned by the reference yet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("line 2: G75 outer diameter grooving cycle is not planned by the reference yet"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, PlanACaseReportsWhetherTheExpectationIsMet) {

@@ -165,8 +165,8 @@ TEST_F(DiffCli, BothAlarmingAgreeAndAMissedAlarmDiverges) {
 }
 
 TEST_F(DiffCli, AnEngineThatIsNotApplicableCannotBeCompared) {
-  // G73 is not planned by the reference yet: not applicable, so nothing to compare.
-  const CliRun r = run("diff --engine reference --vs mutant:retract-angle " + corpus("seed004-g73.nc"));
+  // G74.1 is not planned by the reference yet: not applicable, so nothing to compare.
+  const CliRun r = run("diff --engine reference --vs mutant:retract-angle " + corpus("seed002-o0008-g74_1.nc"));
   EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, "not applicable: ")) << r.out;
   EXPECT_TRUE(contains(r.out, "cannot compare the engines: reference is not applicable and mutant:retract-angle is not applicable"))

@@ -112,7 +112,6 @@ TEST(Interpreter, NoFeedAnywhereIsPS0011) {
 }
 
 TEST(Interpreter, CyclesTheReferenceCannotPlanAreNotSupported) {
-  EXPECT_THROW(plan("G0 X70 Z2;\nG73 U5 W0 R4;\nG73 P10 Q11 U0.2 W0.1 F0.1;\nN10 G01 X50 Z0;\nN11 G01 Z-50;\n"), NotSupported);
   EXPECT_THROW(plan("G00 X70 Z10;\nG74.1 X66 Z0 P30000 Q50000 H-10 D-20 A45 B60;\n"), NotSupported);
 }
 

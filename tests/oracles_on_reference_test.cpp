@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "harness/judging.h"
 #include "harness/reference_plan.h"
@@ -18,8 +20,16 @@ class OraclesOnReference : public ::testing::TestWithParam<std::string> {};
 TEST_P(OraclesOnReference, FindNothing) {
   const SpecCase c = loadSpecCase(GetParam());
   const JudgeRequest request = judgeRequestFor(c);
-  const JudgeInput in = judgeInputFor(request, planSpecCase(c));
-  const std::vector<Finding> findings = judge(in);
+  // G73.*: the oracles do not judge G73 yet and say so (NotSupported); the case's hand-derived
+  // toolpath is checked against the reference by SpecCases. Only that refusal is skipped.
+  std::optional<JudgeInput> in;
+  try {
+    in.emplace(judgeInputFor(request, planSpecCase(c)));
+  } catch (const NotSupported& e) {
+    if (std::string(e.what()).find("the oracles do not judge G73 yet") != std::string::npos) GTEST_SKIP() << e.what();
+    throw;
+  }
+  const std::vector<Finding> findings = judge(*in);
   EXPECT_TRUE(findings.empty()) << c.id << ":\n" << findingsText(findings);
 }
 

@@ -15,4 +15,8 @@ CycleOutcome planG70(const CycleCall& call);
 void applyG72FirstBlock(const CycleCall& call);
 CycleOutcome planG72(const CycleCall& call);
 
+// G73 pattern repeating cycle (seed 004, G73.*): reference/cycles/g73.h plans its passes.
+void applyG73FirstBlock(const CycleCall& call);
+CycleOutcome planG73(const CycleCall& call);
+
 }  // namespace cyclecert

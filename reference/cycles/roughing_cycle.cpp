@@ -50,8 +50,13 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
     checkCycleAddress(*dw, CycleAddress::Allowance, call.modal.inch);
     s.allowanceFirst = physicalLength(dw->value, axes.firstDiameter, call.modal);
   }
-  // G71.FS10.FMT, HAAS.G71.FMT: the one-block forms' D (and Haas's I, K, R1), or D's refusal.
-  readOneBlockWords(call, format.code, s);
+  // G71.FS10.FMT, HAAS.G71.FMT: the one-block forms' D (and Haas's I, K, R1), or D's refusal;
+  // G73.FS10.FMT: G73's I, K, D.
+  if (format.oneBlockWords == RoughingFormat::OneBlockWords::PatternRepeating) {
+    readG73OneBlockWords(call);
+  } else {
+    readOneBlockWords(call, format.code, s);
+  }
   // G71.FST: the F of the cycle blocks, or the modal F before them (the runner keeps it).
   s.feed = call.modal.feed;
   if (s.feed <= 0) {

@@ -13,8 +13,12 @@ namespace cyclecert {
 
 // A roughing cycle's dialect: its code and which plane address carries Δd in the first block.
 struct RoughingFormat {
-  std::string code;  // "G71", "G72"
+  // What the one-block forms (Series 10/11, Haas) add to the block with P and Q: G71/G72's depth of
+  // cut D (and Haas's I, K, R1), or G73's relief I, K and divisions D (G73.FS10.FMT).
+  enum class OneBlockWords { DepthOfCut, PatternRepeating };
+  std::string code;  // "G71", "G72", "G73"
   char depthOfCutAddress;
+  OneBlockWords oneBlockWords = OneBlockWords::DepthOfCut;
 };
 
 // The first block (no P/Q): Δd and e, written into parameters 5132/5133 for the rest of the program.

@@ -103,7 +103,51 @@ void requireZxPlane(const OneBlockDialect& dialect, const CycleCall& call, const
                                             std::to_string(call.modal.plane) + " is in force");
 }
 
+// G73.FS10.FMT: with FCV = 0 (Series 0 format) I, K and D have no meaning in the G73 block with P and Q.
+void refuseSeries10G73Words(const Block& b) {
+  for (char letter : {'I', 'K', 'D'}) {
+    const Word* w = b.find(letter);
+    if (!w) continue;
+    throw cycleBlockAlarm(alarm::kImproperAddress, w->line,
+                          wordAt(*w) + ": " + std::string(1, letter) + " in a G73 P/Q block is the Series 10/11 " +
+                              "program format (I, K = relief, D = divisions); set parameter 0001#1 (FCV) = 1 to read " +
+                              "it (--param FCV=1), or give them as U, W, R in a first G73 block");
+  }
+}
+
+// G73.FS10.FMT: D = the number of divisions, a whole number written without a decimal point.
+double divisionsFromD(const Word& d) {
+  if (d.hasDecimalPoint) {
+    throw cycleBlockAlarm(alarm::kIllegalDecimalPoint, d.line,
+                          wordAt(d) + ": D of the Series 10/11 G73 is the number of divisions, written without a "
+                                      "decimal point (D4)");
+  }
+  if (d.value < 1) {
+    throw cycleBlockAlarm(alarm::kCuttingAmount, d.line, wordAt(d) + ": the number of divisions d of G73 must be at least 1");
+  }
+  if (d.value > 99'999'999) throw cycleBlockAlarm(alarm::kOutOfRange, d.line, wordAt(d) + " has more than 8 digits");
+  return d.value;
+}
+
 }  // namespace
+
+void readG73OneBlockWords(const CycleCall& call) {
+  const Block& b = call.block();
+  if (!call.params.bit("FCV")) {
+    refuseSeries10G73Words(b);
+    return;
+  }
+  const bool inch = call.modal.inch;
+  if (const Word* i = b.find('I')) {
+    checkCycleAddress(*i, CycleAddress::Allowance, inch);
+    call.params.set("5135", i->value * call.modal.unitScale());  // Δi: a radius value, not halved
+  }
+  if (const Word* k = b.find('K')) {
+    checkCycleAddress(*k, CycleAddress::Allowance, inch);
+    call.params.set("5136", k->value * call.modal.unitScale());
+  }
+  if (const Word* d = b.find('D')) call.params.set("5137", divisionsFromD(*d));
+}
 
 const OneBlockDialect* oneBlockDialect(const CycleCall& call) {
   if (call.profile.roughingFormat == RoughingBlockFormat::HaasOneBlock) return &kHaas;

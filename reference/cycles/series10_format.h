@@ -33,4 +33,10 @@ const OneBlockDialect* oneBlockDialect(const CycleCall& call);
 // cycle outside G18).
 void readOneBlockWords(const CycleCall& call, const std::string& code, SecondBlock& sb);
 
+// G73.FS10.FMT: the Series 10/11 G73 block `G73 P Q U W I K D F S T;` (FCV = 1): I = Δi (radius) and
+// K = Δk in the program's units, D = the number of divisions d (a whole number, no decimal point),
+// written into parameters 5135/5136/5137 like a first G73 block's U, W, R. With FCV = 0 an I, K or D
+// there is PS0009 naming FCV. Throws CycleAlarm (PS0009, PS0007, PS0062, PS0003).
+void readG73OneBlockWords(const CycleCall& call);
+
 }  // namespace cyclecert

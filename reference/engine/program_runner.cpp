@@ -59,7 +59,9 @@ class ProgramRunner {
       if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(b, *g, system));
       if (code->group == GGroup::Units) unitsCommanded_ = true;
       applyModalGCode(*code, state_);
-      if (code->function == 700 || code->function == 710 || code->function == 720) cycle = code->function;
+      if (code->function == 700 || code->function == 710 || code->function == 720 || code->function == 730) {
+        cycle = code->function;
+      }
     }
     const AxisWordsMean meaning = axisWordsMeaning(b, system);
     checkCompensationChange(b, before, state_);
@@ -170,6 +172,24 @@ class ProgramRunner {
                      " (or " + (profile_.inchByDefault ? "G20" : "G21") + " to state the default) at the start of the program"});
   }
 
+  // The first block of G71/G72/G73 (no P, no Q): its modal values.
+  static void applyFirstCycleBlock(const CycleCall& call, int cycle) {
+    switch (cycle) {
+      case 710: applyG71FirstBlock(call); break;
+      case 720: applyG72FirstBlock(call); break;
+      default: applyG73FirstBlock(call); break;
+    }
+  }
+
+  static CycleOutcome planCycle(const CycleCall& call, int cycle) {
+    switch (cycle) {
+      case 700: return planG70(call);
+      case 710: return planG71(call);
+      case 720: return planG72(call);
+      default: return planG73(call);
+    }
+  }
+
   std::size_t executeCycle(std::size_t i, int cycle) {
     const Block& b = program_.blocks[i];
     const CycleCall call{program_, i, state_, params_, profile_, options_.tool};
@@ -180,7 +200,7 @@ class ProgramRunner {
       throw a;
     }
     if (cycle != 700 && !b.has('P') && !b.has('Q')) {
-      cycle == 710 ? applyG71FirstBlock(call) : applyG72FirstBlock(call);
+      applyFirstCycleBlock(call, cycle);
       return i + 1;
     }
     requireKnownPlanePosition(b, "G" + std::to_string(cycle / 10) + " starts from it");
@@ -191,7 +211,7 @@ class ProgramRunner {
     }
     keepThePathInOnePlane(b);
     if (!started_) startPath();
-    CycleOutcome out = cycle == 700 ? planG70(call) : cycle == 710 ? planG71(call) : planG72(call);
+    CycleOutcome out = planCycle(call, cycle);
     if (path_.moves.size() + out.moves.size() > kMostMovesPerToolpath) {  // PROG.CAP.MOVES
       throw NotSupported(b.line, "the program would make more than " + std::to_string(kMostMovesPerToolpath) +
                                      " moves; cyclecert plans at most that many per program");

@@ -54,7 +54,7 @@ constexpr Row kTable[] = {
     {{700, G::OneShot, S::Applied, "finishing cycle"}, {700, 700, 720, 700}},
     {{710, G::OneShot, S::Applied, "stock removal in turning"}, {710, 710, 730, 710}},
     {{720, G::OneShot, S::Applied, "stock removal in facing"}, {720, 720, 740, 720}},
-    {{730, G::OneShot, S::NotPlanned, "pattern repeating cycle"}, {730, 730, 750, 730}},
+    {{730, G::OneShot, S::Applied, "pattern repeating cycle"}, {730, 730, 750, 730}},
     {{740, G::OneShot, S::NotPlanned, "end-face peck drilling cycle"}, {740, 740, 760, 740}},
     {{741, G::OneShot, S::NotPlanned, "axial groove cycle"}, {741, 741, kNo, 741}},
     {{750, G::OneShot, S::NotPlanned, "outer diameter grooving cycle"}, {750, 750, 770, 750}},

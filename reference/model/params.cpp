@@ -19,6 +19,18 @@ const std::vector<ParamSpec>& MachineParams::catalogue() {
       {"5133", "", false, 0.0, "mm (radius)",
        "Retract amount e of G71/G72 when the first cycle block gives none; a programmed e overwrites it",
        {"G71.E.MODAL", "G72.DD"}},
+      {"5135", "", false, 0.0, "mm (radius, signed)",
+       "Relief Δi of G73 along the plane's 2nd axis (X), a radius value, when the first G73 block gives none; a "
+       "programmed Δi overwrites it",
+       {"G73.PARAMS", "G73.FMT"}, true},
+      {"5136", "", false, 0.0, "mm (signed)",
+       "Relief Δk of G73 along the plane's 1st axis (Z) when the first G73 block gives none; a programmed Δk "
+       "overwrites it",
+       {"G73.PARAMS", "G73.FMT"}, true},
+      {"5137", "", false, 0.0, "count",
+       "Number of divisions d (rough passes) of G73 when the first G73 block gives none; a programmed d overwrites "
+       "it; 0 (the shipped value) makes a G73 without R alarm PS0062",
+       {"G73.PARAMS", "G73.D.RANGE"}, false, true},
       {"5145", "", false, 0.0, "mm",
        "Allowed non-monotonic motion on the plane's 1st axis (Z) before alarm PS0064",
        {"G71.T1.ALARM"}},
@@ -120,7 +132,8 @@ void MachineParams::set(std::string_view name, double value) {
   if (p.isBit && value != 0 && value != 1) {
     throw std::invalid_argument("parameter " + label() + " is a bit: expected 0 or 1");
   }
-  if (!p.isBit && value < 0) throw std::invalid_argument("parameter " + label() + ": expected a value ≥ 0");
+  if (!p.isBit && !p.isSigned && value < 0) throw std::invalid_argument("parameter " + label() + ": expected a value ≥ 0");
+  if (p.isCount && value != std::floor(value)) throw std::invalid_argument("parameter " + label() + ": expected a whole number");
   values_[indexOf(p)] = value;
 }
 

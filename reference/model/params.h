@@ -17,6 +17,8 @@ struct ParamSpec {
   std::string unit;      // "mm (radius)", "bit", …
   std::string description;
   std::vector<std::string> rules;
+  bool isSigned = false;  // a signed length (G73's relief Δi, Δk): negative values are accepted
+  bool isCount = false;   // a whole number (G73's divisions d)
 };
 
 class UnknownParam : public std::invalid_argument {
