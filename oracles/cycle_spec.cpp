@@ -129,6 +129,7 @@ class SpecReader {
         readFinishingFeeds(b);
         checkFinishingCompensation(b);
       }
+      if (g70 || ((g71 || g72) && (b.has('P') || b.has('Q')))) startMovesAfterCycles();
       if ((g71 || g72) && !b.has('P') && !b.has('Q') && !(g71 && huazhong())) {
         readFirstBlock(b, g71);
       } else if (g71 || g72) {
@@ -163,8 +164,18 @@ class SpecReader {
     state_.position = positionAfterBlock(b, state_);
     if (drawnBeforeCycles) {
       if (auto m = programMove(b, before)) out_.movesBeforeCycles.push_back(*m);
+    } else if (afterCycles_ && axisWordsMoveTheTool(meaning)) {
+      if (auto m = programMove(b, before)) out_.movesAfterCycles.push_back(*m);
     }
     if (huazhongShape_ && axisWordsMoveTheTool(meaning)) recordRunAfterHuazhong(i, b, before);
+  }
+
+  // A cycle block (G70, or G71/G72 with P/Q) ends the moves after the cycles read so far: they were
+  // between cycles. The cycle leaves the tool where it started.
+  void startMovesAfterCycles() {
+    afterCycles_ = true;
+    out_.movesAfterCycles.clear();
+    out_.cyclesEnd = state_.planePoint();
   }
 
   // The block just read as a move of the toolpath from `before`, or nothing when it does not move
@@ -505,7 +516,8 @@ class SpecReader {
   MachineParams params_;
   const ToolOffset& tool_;
   ModalState state_;
-  KnownPosition known_;  // PROG.POSITION: the axes whose work coordinates the program has given
+  KnownPosition known_;
+  bool afterCycles_ = false;  // a cycle has been read: moving blocks go to movesAfterCycles  // PROG.POSITION: the axes whose work coordinates the program has given
   ProgramSpec out_;
   std::optional<Alarm> firstBlockAlarm_;  // a first cycle block outside the range table
   // ns and nf (block indices) of the last Huazhong G71 the rules allow: the program runs on after it.

@@ -60,7 +60,12 @@ struct ProgramSpec {
   bool motionBeforeCycles = false;
   // PROG.WHOLE: the blocks that move the tool from a known position before the first cycle (the
   // approach, a facing cut…): an engine that draws them puts their moves before the cycle's.
-  std::vector<ProgramMove> movesBeforeCycles;  // … and before the first, from a known position (drawn: PROG.WHOLE)
+  std::vector<ProgramMove> movesBeforeCycles;
+  // … and after the last cycle (a G70 counts): a part-off, the way home. They belong to no cycle,
+  // so the oracles judge the path up to them. `cyclesEnd` is where the last cycle leaves the tool
+  // (its start point).
+  std::vector<ProgramMove> movesAfterCycles;
+  Point cyclesEnd;  // … and before the first, from a known position (drawn: PROG.WHOLE)
   std::optional<int> firstCycleBlockLine;  // the first G70/G71/G72 block
   std::vector<Alarm> finishingAlarms;      // G70 blocks the rules forbid (G71.TNRC.NT2)
   std::optional<Alarm> mdiAlarm;           // the program runs in MDI mode (G72.MDI)

@@ -18,6 +18,38 @@ std::optional<std::size_t> lastMoveEndingAt(const JudgeInput& in, std::size_t fr
   return std::nullopt;
 }
 
+// The last move of each block, matched from the end: the last block ends the path; each block ends
+// just before the next one's moves begin (right before a line, before an arc's pieces). Nothing
+// when a block is not found (its index in *unmatched).
+std::optional<std::vector<std::size_t>> lastMovesFromTheEnd(const JudgeInput& in, const std::vector<ProgramMove>& blocks,
+                                                            std::size_t* unmatched) {
+  std::vector<std::size_t> lastMove(blocks.size());
+  std::optional<std::size_t> at;
+  for (std::size_t k = blocks.size(); k-- > 0;) {
+    if (k + 1 == blocks.size()) {
+      at = in.path.moves.empty() ? std::nullopt : lastMoveEndingAt(in, in.path.moves.size() - 1, blocks[k].end, false);
+    } else {
+      at = lastMove[k + 1] == 0 ? std::nullopt : lastMoveEndingAt(in, lastMove[k + 1] - 1, blocks[k].end, blocks[k + 1].arc);
+    }
+    if (!at) {
+      if (unmatched) *unmatched = k;
+      return std::nullopt;
+    }
+    lastMove[k] = *at;
+  }
+  return lastMove;
+}
+
+// The first move of blocks matched by lastMovesFromTheEnd, which follow a move ending at `from`.
+std::size_t firstMoveOf(const JudgeInput& in, const std::vector<ProgramMove>& blocks,
+                        const std::vector<std::size_t>& lastMove, Point from) {
+  std::size_t first = lastMove.front();
+  if (blocks.front().arc && first > 0) {
+    if (auto a = lastMoveEndingAt(in, first - 1, from, true)) first = *a + 1;
+  }
+  return first;
+}
+
 }  // namespace
 
 RunLocation locateRunAfterHuazhong(const JudgeInput& in) {
@@ -25,30 +57,16 @@ RunLocation locateRunAfterHuazhong(const JudgeInput& in) {
   const CycleSpec* cycle = in.program.singleRoughingCycle();
   RunLocation where;
   if (blocks.empty() || !cycle || in.path.alarm) return where;
+  std::size_t unmatched = 0;
+  const auto lastMove = lastMovesFromTheEnd(in, blocks, &unmatched);
+  if (!lastMove) {
+    where.unmatched = unmatched;
+    return where;
+  }
   RunAfterCycle run;
-  run.lastMove.resize(blocks.size());
-  // Matched from the end: the last block ends the path; each block ends just before the next one's
-  // moves begin (right before a line, before an arc's pieces).
-  std::optional<std::size_t> at;
-  for (std::size_t k = blocks.size(); k-- > 0;) {
-    const bool last = k + 1 == blocks.size();
-    if (last) {
-      at = in.path.moves.empty() ? std::nullopt : lastMoveEndingAt(in, in.path.moves.size() - 1, blocks[k].end, false);
-    } else {
-      at = run.lastMove[k + 1] == 0 ? std::nullopt
-                                    : lastMoveEndingAt(in, run.lastMove[k + 1] - 1, blocks[k].end, blocks[k + 1].arc);
-    }
-    if (!at) {
-      where.unmatched = k;
-      return where;
-    }
-    run.lastMove[k] = *at;
-  }
+  run.lastMove = *lastMove;
   // HNC.G71.RETURN: the cycle ends at A, where the block after G71 starts.
-  run.roughingEnd = run.lastMove.front();
-  if (blocks.front().arc && run.roughingEnd > 0) {
-    if (auto a = lastMoveEndingAt(in, run.roughingEnd - 1, cycle->start, true)) run.roughingEnd = *a + 1;
-  }
+  run.roughingEnd = firstMoveOf(in, blocks, run.lastMove, cycle->start);
   run.judgedEnd = in.path.moves.size();
   for (std::size_t k = blocks.size(); k-- > 0;) {
     if (blocks[k].finishing) {
@@ -60,8 +78,15 @@ RunLocation locateRunAfterHuazhong(const JudgeInput& in) {
   return where;
 }
 
+std::size_t firstMoveAfterTheCycles(const JudgeInput& in) {
+  const std::vector<ProgramMove>& blocks = in.program.movesAfterCycles;
+  if (blocks.empty() || !in.program.runAfterHuazhong.empty() || in.path.alarm) return in.path.moves.size();
+  const auto lastMove = lastMovesFromTheEnd(in, blocks, nullptr);
+  return lastMove ? firstMoveOf(in, blocks, *lastMove, in.program.cyclesEnd) : in.path.moves.size();
+}
+
 std::size_t movesJudgedAgainstThePart(const JudgeInput& in) {
-  if (in.program.runAfterHuazhong.empty()) return in.path.moves.size();
+  if (in.program.runAfterHuazhong.empty()) return firstMoveAfterTheCycles(in);
   const RunLocation where = locateRunAfterHuazhong(in);
   return where.run ? where.run->judgedEnd : in.path.moves.size();
 }
@@ -79,7 +104,7 @@ std::size_t firstMoveOfTheCycles(const JudgeInput& in) {
 }
 
 MoveRange movesOfTheRoughing(const JudgeInput& in) {
-  MoveRange range{firstMoveOfTheCycles(in), in.path.moves.size()};
+  MoveRange range{firstMoveOfTheCycles(in), firstMoveAfterTheCycles(in)};
   if (in.program.runAfterHuazhong.empty()) return range;
   const RunLocation where = locateRunAfterHuazhong(in);
   if (where.run) range.end = where.run->roughingEnd;

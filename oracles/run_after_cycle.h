@@ -30,8 +30,13 @@ struct RunLocation {
 // program runs on after.
 RunLocation locateRunAfterHuazhong(const JudgeInput& in);
 
+// PROG.WHOLE: the first of the moves the program makes after its last cycle (a part-off, the way
+// home: ProgramSpec::movesAfterCycles), found at the end of the path by where each block ends; the
+// path's size when there are none or the engine's path does not end with them.
+std::size_t firstMoveAfterTheCycles(const JudgeInput& in);
+
 // How many moves of the path the geometric, retract and pass-level oracles judge: up to the end of
-// a Huazhong finishing run, else all of them.
+// a Huazhong finishing run, else up to the moves after the last cycle.
 std::size_t movesJudgedAgainstThePart(const JudgeInput& in);
 
 // PROG.WHOLE: the first move of the cycles — after the moves the program makes before its first

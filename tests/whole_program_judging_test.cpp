@@ -52,5 +52,41 @@ TEST(WholeProgramJudging, AWrongPassAfterTheFacingCutIsStillFound) {
   EXPECT_TRUE(passLevels);
 }
 
+// After the last cycle (a G70 counts) the program parts off along X: for a G72 that is the cut
+// axis, and the parting cut runs through the part beyond the shape. It belongs to no cycle: it was
+// judged a pass off Δd's levels, with no retract, gouging the part.
+const char* const kG72G70ThenPartOff =
+    "G21 G99;\nG00 X100. Z100.;\nG00 X82. Z2.;\nG72 W2. R0.5;\nG72 P10 Q30 U0.4 W0.1 F0.2;\nN10 G00 Z-10.;\n"
+    "N20 G01 X40.;\nN30 Z0.;\nG70 P10 Q30;\nG00 X90. Z-20.;\nG01 X-1. F0.05;\nG00 X100.;\nZ100.;\nM30;\n";
+
+std::vector<Finding> partOffFindings(const Toolpath& path) {
+  JudgeRequest request;
+  request.program = {kG72G70ThenPartOff, "partoff.nc", "fanuc-0i-f", {}, {}};
+  return judge(judgeInputFor(request, path));
+}
+
+TEST(WholeProgramJudging, APartOffAfterTheLastCycleIsNoPass) {
+  const Toolpath path = planWithReference({kG72G70ThenPartOff, "partoff.nc", "fanuc-0i-f", {}, {}});
+  ASSERT_FALSE(path.alarm);
+  ASSERT_EQ(path.cycles.size(), 2u);
+  const std::vector<Finding> findings = partOffFindings(path);
+  EXPECT_TRUE(findings.empty()) << findings.front().oracle << ": " << findings.front().message;
+  // An engine that stops at the end of the cycles is judged alike.
+  Toolpath cyclesOnly = path;
+  cyclesOnly.moves.resize(path.moves.size() - 4);
+  EXPECT_TRUE(partOffFindings(cyclesOnly).empty());
+}
+
+TEST(WholeProgramJudging, AWrongPassBeforeThePartOffIsStillFound) {
+  Toolpath path = planWithReference({kG72G70ThenPartOff, "partoff.nc", "fanuc-0i-f", {}, {}});
+  const std::size_t pass = path.cycles.front().firstMove + 2;
+  ASSERT_EQ(path.moves[pass].kind, MoveKind::Feed);
+  path.moves[pass - 1].to.z -= 0.5;
+  path.moves[pass].to.z -= 0.5;
+  bool passLevels = false;
+  for (const Finding& f : partOffFindings(path)) passLevels = passLevels || f.oracle == "pass-levels";
+  EXPECT_TRUE(passLevels);
+}
+
 }  // namespace
 }  // namespace cyclecert
