@@ -33,7 +33,7 @@ void applyModal(const Block& b, ModalState& s) {
 // PROG.GROUP.UNKNOWN, PROG.GROUP.COMP: applies the block's modal codes and returns the alarm its G
 // codes raise, as the runner does (reference/interpreter/block_groups.h), or nothing.
 std::optional<Alarm> readBlockGroups(const Block& b, ModalState& s) {
-  if (const Word* g = firstUnknownGCode(b, s.gCodeSystem)) return improperGCode(b, *g, s.gCodeSystem).alarm();
+  if (const Word* g = firstUnknownGCode(b, s.gCodeSystem)) return improperGCode(b, *g, s).alarm();
   const ModalState before = s;
   applyModal(b, s);
   try {

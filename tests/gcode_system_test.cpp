@@ -296,3 +296,20 @@ TEST(GCodeSystemShape, SystemCReadsItsOwnNumbers) {
 
 }  // namespace
 }  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+// The haas and gsk profiles read system A and ignore 3401: the way to system B/C they name is a
+// FANUC profile with the parameter, not the parameter alone (which would change nothing there).
+TEST(GCodeSystemMessages, AProfileWithoutParameter3401NamesAFanucProfile) {
+  for (const char* profile : {"haas", "gsk"}) {
+    const std::string why = notSupported("G90 G00 X40. Z2.;\nM30;\n", {{"3401#6", 1}}, profile);
+    EXPECT_NE(why.find("--profile fanuc-0i-f --param 3401#6=1"), std::string::npos) << profile << ": " << why;
+  }
+  const std::string fanuc = notSupported("G90 G00 X40. Z2.;\nM30;\n", {});
+  EXPECT_NE(fanuc.find("(--param 3401#6=1)"), std::string::npos) << fanuc;
+}
+
+}  // namespace
+}  // namespace cyclecert

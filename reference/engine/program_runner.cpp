@@ -55,8 +55,8 @@ class ProgramRunner {
     const GCodeSystem system = state_.gCodeSystem;
     for (const Word* g : b.all('G')) {
       const GCode* code = findGCode(system, gCode10(g->value));
-      if (!code) throw improperGCode(b, *g, system);
-      if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(b, *g, system));
+      if (!code) throw improperGCode(b, *g, state_);
+      if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(b, *g, state_));
       if (code->group == GGroup::Units) unitsCommanded_ = true;
       applyModalGCode(*code, state_);
       if (code->function == 700 || code->function == 710 || code->function == 720 || code->function == 730) {

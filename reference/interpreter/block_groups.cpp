@@ -5,13 +5,15 @@
 
 namespace cyclecert {
 
-CycleAlarm improperGCode(const Block& b, const Word& g, GCodeSystem system) {
+CycleAlarm improperGCode(const Block& b, const Word& g, const ModalState& s) {
+  const GCodeSystem system = s.gCodeSystem;
   return CycleAlarm(alarm::kImproperGCode, b.line,
                     g.text + " is not a G code of this controller in " + gCodeSystemName(system) +
-                        otherSystemsMeaning(system, gCode10(g.value)));
+                        otherSystemsMeaning(system, gCode10(g.value), s.gCodeSystemByParameters));
 }
 
-std::string notPlannedReason(const Block& b, const Word& g, GCodeSystem system) {
+std::string notPlannedReason(const Block& b, const Word& g, const ModalState& s) {
+  const GCodeSystem system = s.gCodeSystem;
   const int g10 = gCode10(g.value);
   const GCode* code = findGCode(system, g10);
   std::string why = gCodeLabel(g10) + " " + (code ? code->name : "") + " is not planned by the reference yet";
@@ -20,7 +22,7 @@ std::string notPlannedReason(const Block& b, const Word& g, GCodeSystem system) 
   if (system == GCodeSystem::A && g10 == 920 && b.has('S') && !hasAxisWord(b)) {
     why += " (in G code system A, G92 is the threading cycle; the maximum spindle speed clamp is G50 S)";
   }
-  return why + otherSystemsMeaning(system, g10);
+  return why + otherSystemsMeaning(system, g10, s.gCodeSystemByParameters);
 }
 
 const Word* firstUnknownGCode(const Block& b, GCodeSystem system) {

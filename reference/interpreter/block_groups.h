@@ -13,12 +13,12 @@ namespace cyclecert {
 // PROG.GROUP.UNKNOWN, PROG.GSYS.OTHER: PS0010 for a G word that is not a code of the system's list,
 // naming what it is in the other G code systems, the parameter that selects them, and how this
 // system writes it (system A's G91 → U/W, G33 → G32; system B's G50 → G92).
-CycleAlarm improperGCode(const Block& b, const Word& g, GCodeSystem system);
+CycleAlarm improperGCode(const Block& b, const Word& g, const ModalState& s);
 
 // The reason a code the reference does not plan is reported (its NotSupported text), with what the
 // number means in the other G code systems (system A's G90 cycle is system B/C's absolute
 // programming, --param 3401#6=1).
-std::string notPlannedReason(const Block& b, const Word& g, GCodeSystem system);
+std::string notPlannedReason(const Block& b, const Word& g, const ModalState& s);
 
 // The block's first G word outside the system's list, or nullptr.
 const Word* firstUnknownGCode(const Block& b, GCodeSystem system);

@@ -132,6 +132,7 @@ ModalState initialModalState(const Profile& profile, const MachineParams& params
   ModalState s;
   s.inch = profile.inchByDefault;  // PROG.UNITS
   s.gCodeSystem = gCodeSystemOf(profile, params);
+  s.gCodeSystemByParameters = profile.gCodeSystemByParameters;
   return s;
 }
 
@@ -225,7 +226,7 @@ bool usableInShapeProgram(const GCode& code) {
   return false;
 }
 
-std::string otherSystemsMeaning(GCodeSystem system, int g10) {
+std::string otherSystemsMeaning(GCodeSystem system, int g10, bool byParameters) {
   if (system == GCodeSystem::Huazhong) return "";
   const GCode* here = findGCode(system, g10);
   std::string out;
@@ -235,11 +236,13 @@ std::string otherSystemsMeaning(GCodeSystem system, int g10) {
     if (other == system || !there || (here && here->function == there->function)) continue;
     if (std::find(told.begin(), told.end(), there->function) != told.end()) continue;
     told.push_back(there->function);
-    std::string where = gCodeSystemName(other) + " (" + selectingParameter(other) + ")";
+    // A profile that does not read 3401 (gsk, haas) reads system A: the FANUC profiles read B/C.
+    const std::string how = byParameters ? "" : "--profile fanuc-0i-f ";
+    std::string where = gCodeSystemName(other) + " (" + how + selectingParameter(other) + ")";
     for (const GCodeSystem also : {GCodeSystem::B, GCodeSystem::C}) {
       const GCode* same = findGCode(also, g10);
       if (also != other && also != system && same && same->function == there->function) {
-        where += " and " + gCodeSystemName(also) + " (" + selectingParameter(also) + ")";
+        where += " and " + gCodeSystemName(also) + " (" + how + selectingParameter(also) + ")";
       }
     }
     out += "; in " + where + " " + gCodeLabel(g10) + " is " + there->name;

@@ -107,6 +107,7 @@ bool usableInShapeProgram(const GCode& code);
 // PROG.GSYS.OTHER: what the code ×10 means in the other FANUC systems and the parameter that
 // selects them ("; in G code system B (--param 3401#6=1) G77 is the outer diameter cutting cycle"),
 // or "" when it means the same there or the system is not a FANUC one.
-std::string otherSystemsMeaning(GCodeSystem system, int g10);
+// byParameters: whether the profile reads 3401 (else the way names a FANUC profile too).
+std::string otherSystemsMeaning(GCodeSystem system, int g10, bool byParameters);
 
 }  // namespace cyclecert

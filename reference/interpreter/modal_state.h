@@ -22,6 +22,7 @@ struct ModalState {
   int workCoordinates = 54;  // group 14: G54…G59 (their offsets are modelled as zero: PROG.WCS)
   double feed = 0;       // modal F, in mm/min or mm/rev
   GCodeSystem gCodeSystem = GCodeSystem::A;  // the list the block's G numbers are read in (PROG.GSYS.*)
+  bool gCodeSystemByParameters = false;  // the profile lets parameter 3401 choose it (the FANUC profiles)
   bool incremental = false;  // group 03 G91 (systems B/C, Huazhong): X/Y/Z are incremental
 
   PlaneAxes axes() const { return planeAxes(plane); }
