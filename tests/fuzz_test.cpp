@@ -420,6 +420,8 @@ TEST(Fuzz, EveryMutantIsFoundShrunkAndKeptAsARegression) {
   int mutants = 0;
   for (const auto& [name, description] : listEngines()) {
     if (name.rfind("mutant:", 0) != 0) continue;
+    // The G73 faults are drawn with --cycles g73 (fuzz_g73_test.cpp: EveryG73MutantIsCaught…).
+    if (name.rfind("mutant:g73-", 0) == 0) continue;
     ++mutants;
     SCOPED_TRACE(name);
     auto engine = makeEngine(name);

@@ -41,6 +41,28 @@ std::string notApplicable(const SpecCase& c) {
   return t.notApplicable;
 }
 
+// G73.*: FANUC's pattern repeating cycle has no LinuxCNC counterpart (LinuxCNC's G73 drills): not
+// applicable with that reason — before the parameters 5135–5137 a G73 case sets, and in system C,
+// where the cycle is written G75 (and G73 is G71's roughing, which translates).
+TEST(LinuxCncTranslate, G73IsNotApplicableBecauseLinuxCncsG73Drills) {
+  const std::string g73 = "G00 X60 Z2;\nG73 U3 W0 R2;\nG73 P10 Q20 U0.4 W0.1 F0.2;\nN10 G01 X30 Z0;\nX40 Z-10;\n"
+                          "Z-30;\nN20 X56;\n";
+  const std::string reason = "LinuxCNC's G73 is a drilling cycle (chip-break peck)";
+  EXPECT_NE(notApplicable(makeCase("g73", g73)).find(reason), std::string::npos);
+  EXPECT_NE(notApplicable(makeCase("g73", g73)).find("line 2"), std::string::npos);
+  EXPECT_NE(notApplicable(makeCase("g73-params", g73, "fanuc-0i-f", {{"5135", 3}, {"5137", 2}})).find(reason),
+            std::string::npos);
+  EXPECT_NE(notApplicable(makeCase("g73-gsk", g73, "gsk")).find(reason), std::string::npos);
+  std::string g75 = "G90 G95;\n" + g73;
+  for (std::size_t at; (at = g75.find("G73")) != std::string::npos;) g75.replace(at, 3, "G75");
+  EXPECT_NE(notApplicable(makeCase("g75-gsc", g75, "fanuc-0i-f", {{"3401#7", 1}})).find(reason), std::string::npos);
+  // System C's G73 is G71's roughing: it is translated, not refused as a pattern repeating cycle.
+  std::string g73AsG71 = std::string("G90 G95;\n") + kStepped;
+  for (std::size_t at; (at = g73AsG71.find("G71")) != std::string::npos;) g73AsG71.replace(at, 3, "G73");
+  EXPECT_NE(translated(makeCase("g73-gsc-roughing", g73AsG71, "fanuc-0i-f", {{"3401#7", 1}})).find("G71.1"),
+            std::string::npos);
+}
+
 // PROG.WHOLE: the reference draws the approach from the first positioning on; the translation starts
 // at A, so a program that moves from a known position before its cycle is not applicable, while
 // one whose only positioning is the move to A (in one block or two) still translates.

@@ -21,7 +21,7 @@ namespace {
 
 const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
                       [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
-                      [--timeout S] [--formats LIST]
+                      [--timeout S] [--formats LIST] [--cycles LIST]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
@@ -65,6 +65,11 @@ Options:
                       finishing run of ns…nf after the cycle), haas (G71 P Q U W D1.5 [R1] F, profile
                       haas, 5133 = e, G41/G42 in block ns), gsys-b / gsys-c (the two blocks in G code
                       system B / C: --param 3401#6=1 / 3401#7=1, G90 G95, in C G73/G74 and G72), or all
+  --cycles LIST       the cycles drawn, comma-separated (default g71,g72, which keeps the cases of a
+                      seed as they were): g71, g72, g73 (pattern repeating: shapes that need not be
+                      monotone, d, Δi, Δk, the four quadrants, G70 after it, and one at a time R0,
+                      R2.5, no Q or block ns in G02 with the alarm expected; two-block format), or
+                      all. With g73 and g71/g72, one case in three (two) is G73
 Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,
 another campaign in OUT, or a result not written.
 )HELP";
@@ -144,6 +149,14 @@ static int commandFuzz(const std::vector<std::string>& args) {
             options.formats = parseCycleFormats(v);
           } catch (const std::invalid_argument& e) {
             throw UsageError(std::string("--formats: ") + e.what());
+          }
+        }},
+       {"--cycles",
+        [&](const std::string& v) {
+          try {
+            options.cycles = parseFuzzCycles(v);
+          } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--cycles: ") + e.what());
           }
         }}},
       "fuzz");

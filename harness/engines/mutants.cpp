@@ -131,6 +131,67 @@ std::string compensationSidesSwapped(const std::string& text) {
   return writeProgram(p);
 }
 
+// G73: the program's G73 blocks, the first (Δi, Δk, d: no P) and the one with P (the Series 10/11
+// one block carries I, K and D there).
+bool isG73(const Block& b) { return b.hasG(730); }
+
+// The G73 fault "one pass too few": d read as d − 1 (R in the first block, D in the Series 10/11
+// block, parameter 5137), so the passes are shared out over one division less.
+SpecCase g73DivisionsLessOne(SpecCase c) {
+  Program p = parseProgram(c.program, "mutant");
+  for (Block& b : p.blocks) {
+    if (!isG73(b)) continue;
+    const char letter = b.has('P') ? 'D' : 'R';
+    for (Word& w : b.words) {
+      if (w.letter == letter) w = makeWord(letter, w.value - 1);
+    }
+  }
+  c.program = writeProgram(p);
+  for (auto& [name, value] : c.params) {
+    if (name == "5137") value -= 1;
+  }
+  return c;
+}
+
+// The G73 fault "relief towards the part": Δi and Δk with their signs flipped (U/W of the first
+// block, I/K of the Series 10/11 block, parameters 5135/5136), so each pass is shifted into the part.
+SpecCase g73ReliefFlipped(SpecCase c) {
+  Program p = parseProgram(c.program, "mutant");
+  for (Block& b : p.blocks) {
+    if (!isG73(b)) continue;
+    const bool oneBlock = b.has('P');
+    for (Word& w : b.words) {
+      const bool relief = oneBlock ? (w.letter == 'I' || w.letter == 'K') : (w.letter == 'U' || w.letter == 'W');
+      if (relief) w = makeWord(w.letter, -w.value);
+    }
+  }
+  c.program = writeProgram(p);
+  for (auto& [name, value] : c.params) {
+    if (name == "5135" || name == "5136") value = -value;
+  }
+  return c;
+}
+
+// The G73 fault "last pass without the allowance": each G73 cycle's last pass (its approach, block
+// ns and shape) follows the finish shape itself instead of the shape shifted by (Δw, Δu/2).
+void g73LastPassOnTheShape(Toolpath& t) {
+  for (const CycleRecord& cycle : t.cycles) {
+    if (cycle.code != "G73") continue;
+    const std::size_t begin = cycle.firstMove, end = std::min(t.moves.size(), cycle.firstMove + cycle.moveCount);
+    int last = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (t.moves[i].phase == "pass") last = std::max(last, t.moves[i].pass);
+    }
+    std::size_t first = begin;
+    while (first < end && !(t.moves[first].phase == "pass" && t.moves[first].pass == last)) ++first;
+    if (first > begin && cites(t.moves[first - 1], "G73.APPROACH") && !cites(t.moves[first], "G73.APPROACH")) --first;
+    for (std::size_t i = first; i < end && t.moves[i].phase != "return" && !cites(t.moves[i], "G73.RETURN"); ++i) {
+      t.moves[i].to = t.moves[i].to - cycle.allowance;
+      if (t.moves[i].center) *t.moves[i].center = *t.moves[i].center - cycle.allowance;
+    }
+  }
+}
+
 struct Fault {
   std::string name, what;
   std::function<EngineResult(SpecCase)> run;
@@ -205,6 +266,12 @@ const std::vector<Fault>& faults() {
        }},
       {"pocket-entry-rapid", "enters type II pockets at rapid, without the feed from the clearance height (5134)",
        [](SpecCase c) { return planned(c, pocketEntriesAtRapid); }},
+      {"g73-divisions", "plans G73 with one division too few (d read as d − 1)",
+       [](SpecCase c) { return planned(g73DivisionsLessOne(std::move(c))); }},
+      {"g73-relief-sign", "shifts G73's passes towards the part (Δi, Δk signs flipped)",
+       [](SpecCase c) { return planned(g73ReliefFlipped(std::move(c))); }},
+      {"g73-last-pass-allowance", "cuts G73's last pass on the finish shape, without the allowance",
+       [](SpecCase c) { return planned(c, g73LastPassOnTheShape); }},
   };
   return all;
 }

@@ -14,58 +14,71 @@ namespace cyclecert {
 
 namespace {
 
-struct NamedFormat {
-  CycleFormat format;
+template <typename T>
+struct Named {
+  T value;
   std::string_view name;
 };
-constexpr NamedFormat kFormatNames[] = {
+constexpr Named<CycleFormat> kFormatNames[] = {
     {CycleFormat::FanucTwoBlocks, "two-block"}, {CycleFormat::Series10OneBlock, "fs10"},
     {CycleFormat::HuazhongOneBlock, "hnc"},     {CycleFormat::HaasOneBlock, "haas"},
     {CycleFormat::SystemB, "gsys-b"},           {CycleFormat::SystemC, "gsys-c"}};
+constexpr Named<FuzzCycle> kCycleNames[] = {{FuzzCycle::G71, "g71"}, {FuzzCycle::G72, "g72"}, {FuzzCycle::G73, "g73"}};
 
-std::string knownFormatNames() {
-  std::string names;
-  for (const NamedFormat& f : kFormatNames) names += std::string(names.empty() ? "" : ", ") + std::string(f.name);
-  return names + " or all";
+template <typename T, std::size_t N>
+std::string knownNames(const Named<T> (&names)[N]) {
+  std::string text;
+  for (const Named<T>& n : names) text += std::string(text.empty() ? "" : ", ") + std::string(n.name);
+  return text + " or all";
 }
 
-}  // namespace
-
-std::string_view cycleFormatName(CycleFormat f) {
-  for (const NamedFormat& n : kFormatNames) {
-    if (n.format == f) return n.name;
+template <typename T, std::size_t N>
+std::string_view nameOf(const Named<T> (&names)[N], T value) {
+  for (const Named<T>& n : names) {
+    if (n.value == value) return n.name;
   }
   return "?";
 }
 
-CycleFormats parseCycleFormats(std::string_view text) {
+// A comma-separated list of names (or "all") as the values they name, each once, in the order given.
+template <typename T, std::size_t N>
+std::vector<T> parseNames(const Named<T> (&names)[N], std::string_view text, const std::string& what) {
+  std::vector<T> values;
   if (text == "all") {
-    CycleFormats all;
-    for (const NamedFormat& f : kFormatNames) all.push_back(f.format);
-    return all;
+    for (const Named<T>& n : names) values.push_back(n.value);
+    return values;
   }
-  CycleFormats formats;
   std::size_t from = 0;
   while (from <= text.size()) {
     const std::size_t comma = std::min(text.find(',', from), text.size());
     const std::string_view word = text.substr(from, comma - from);
-    const auto* named = std::find_if(std::begin(kFormatNames), std::end(kFormatNames),
-                                     [&](const NamedFormat& f) { return f.name == word; });
-    if (named == std::end(kFormatNames)) {
-      throw std::invalid_argument("unknown cycle format '" + std::string(word) + "' in '" + std::string(text) +
-                                  "': give a comma-separated list of " + knownFormatNames());
+    const auto* named = std::find_if(std::begin(names), std::end(names), [&](const Named<T>& n) { return n.name == word; });
+    if (named == std::end(names)) {
+      throw std::invalid_argument("unknown " + what + " '" + std::string(word) + "' in '" + std::string(text) +
+                                  "': give a comma-separated list of " + knownNames(names));
     }
-    if (std::find(formats.begin(), formats.end(), named->format) == formats.end()) formats.push_back(named->format);
+    if (std::find(values.begin(), values.end(), named->value) == values.end()) values.push_back(named->value);
     from = comma + 1;
   }
-  return formats;
+  return values;
 }
 
-std::string cycleFormatsText(const CycleFormats& formats) {
+template <typename T, std::size_t N>
+std::string namesText(const Named<T> (&names)[N], const std::vector<T>& values) {
   std::string text;
-  for (CycleFormat f : formats) text += std::string(text.empty() ? "" : ",") + std::string(cycleFormatName(f));
+  for (T v : values) text += std::string(text.empty() ? "" : ",") + std::string(nameOf(names, v));
   return text;
 }
+
+}  // namespace
+
+std::string_view cycleFormatName(CycleFormat f) { return nameOf(kFormatNames, f); }
+CycleFormats parseCycleFormats(std::string_view text) { return parseNames(kFormatNames, text, "cycle format"); }
+std::string cycleFormatsText(const CycleFormats& formats) { return namesText(kFormatNames, formats); }
+
+std::string_view fuzzCycleName(FuzzCycle c) { return nameOf(kCycleNames, c); }
+FuzzCycles parseFuzzCycles(std::string_view text) { return parseNames(kCycleNames, text, "cycle"); }
+std::string fuzzCyclesText(const FuzzCycles& cycles) { return namesText(kCycleNames, cycles); }
 
 namespace {
 
@@ -150,11 +163,12 @@ struct Draws {
   // were): an F in the shape and where, compensation, its nose radius and tip, 5134.
   std::vector<int> later;
   CycleFormat format = CycleFormat::FanucTwoBlocks;  // drawn last, and only when the run asks for several
+  int onlyCycle = 0;  // 71 or 72 when the run asks for that one only (not drawn: chosen); 0 both
 };
 
-void chooseCycle(FuzzCase& c, const std::vector<int>& choice) {
+void chooseCycle(FuzzCase& c, const std::vector<int>& choice, int onlyCycle) {
   c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
-  c.cycle = choice[1] % 2 ? 72 : 71;
+  c.cycle = onlyCycle ? onlyCycle : choice[1] % 2 ? 72 : 71;
   c.mirrorCut = choice[2] % 4 == 1;
   c.mirrorDepth = choice[3] % 4 == 1;
   c.typeII = choice[4] % 3 == 1;
@@ -297,7 +311,7 @@ FuzzCase caseFrom(Draws d) {
   d.choice.resize(16, 0);
   d.later.resize(6, 0);
   FuzzCase c;
-  chooseCycle(c, d.choice);
+  chooseCycle(c, d.choice, d.onlyCycle);
   fitToFormat(c, d.format);
   drawCycleParameters(c, d);
   drawShape(c, d);
@@ -311,15 +325,17 @@ FuzzCase caseFrom(Draws d) {
 
 }  // namespace
 
-rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats) {
-  if (formats.empty()) throw std::invalid_argument("genFuzzCase: no cycle format to draw from");
+namespace {
+
+// The G71/G72 cases, `onlyCycle` 71 or 72 when the run asks for one of them (0: both).
+rc::Gen<FuzzCase> genRoughingCase(const CycleFormats& formats, int onlyCycle) {
   // One format: nothing drawn (the draws before it are RapidCheck's splits in order, unchanged).
   rc::Gen<CycleFormat> format = formats.size() == 1 ? rc::gen::just(formats.front()) : rc::gen::elementOf(formats);
   return rc::gen::apply(
-      [](std::vector<int> choice, std::vector<FuzzSegment> segments, std::vector<int> downs, int dd, int e, int du,
-         int dw, int above, int along, int b, std::vector<int> later, CycleFormat format) {
+      [onlyCycle](std::vector<int> choice, std::vector<FuzzSegment> segments, std::vector<int> downs, int dd, int e,
+                  int du, int dw, int above, int along, int b, std::vector<int> later, CycleFormat format) {
         return caseFrom({std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b,
-                         std::move(later), format});
+                         std::move(later), format, onlyCycle});
       },
       rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
       // Segments: 8 at most are kept (drawShape), after one of the first 10 may be split in two.
@@ -336,6 +352,21 @@ rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats) {
       std::move(format));
 }
 
+bool asks(const FuzzCycles& cycles, FuzzCycle c) { return std::find(cycles.begin(), cycles.end(), c) != cycles.end(); }
+
+}  // namespace
+
+rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats, const FuzzCycles& cycles) {
+  if (formats.empty()) throw std::invalid_argument("genFuzzCase: no cycle format to draw from");
+  if (cycles.empty()) throw std::invalid_argument("genFuzzCase: no cycle to draw from");
+  const bool g71 = asks(cycles, FuzzCycle::G71), g72 = asks(cycles, FuzzCycle::G72);
+  if (!asks(cycles, FuzzCycle::G73)) return genRoughingCase(formats, g71 && g72 ? 0 : g71 ? 71 : 72);
+  if (!g71 && !g72) return genG73Case();
+  const std::size_t roughing = static_cast<std::size_t>(g71) + static_cast<std::size_t>(g72);
+  return rc::gen::weightedOneOf<FuzzCase>(
+      {{roughing, genRoughingCase(formats, g71 && g72 ? 0 : g71 ? 71 : 72)}, {1, genG73Case()}});
+}
+
 // Frame directions as the machine sees them: G71 keeps the axes (each may be mirrored), G72
 // exchanges them.
 namespace {
@@ -344,7 +375,7 @@ struct MachineSigns {
 };
 MachineSigns machineSigns(const FuzzCase& c) {
   const int cut = c.mirrorCut ? -1 : 1, depth = c.mirrorDepth ? -1 : 1;
-  return c.cycle == 71 ? MachineSigns{cut, 0, 0, depth} : MachineSigns{0, cut, depth, 0};
+  return c.cycle != 72 ? MachineSigns{cut, 0, 0, depth} : MachineSigns{0, cut, depth, 0};
 }
 }  // namespace
 
@@ -424,8 +455,8 @@ struct Placement {
   std::string words(long cut, long depth) const {
     const long pc = c.mirrorCut ? cutOffset - cut : cutOffset + cut;
     const long pd = c.mirrorDepth ? depthOffset - depth : depthOffset + depth;
-    const long z = c.cycle == 71 ? pc : pd;
-    const long x = c.cycle == 71 ? pd : pc;  // a radius: the X word is the diameter
+    const long z = c.cycle != 72 ? pc : pd;  // G73 is drawn in G71's frame
+    const long x = c.cycle != 72 ? pd : pc;  // a radius: the X word is the diameter
     return "X" + mm(2 * x) + " Z" + mm(z);
   }
   // Convex in the frame is G03 for G71 (outer, towards the chuck); exchanging the axes and each
@@ -440,7 +471,7 @@ struct Placement {
   std::string allowanceWords() const {
     const long depth = c.mirrorDepth ? -c.allowanceDepth : c.allowanceDepth;
     const long cut = c.mirrorCut ? -c.allowanceCut : c.allowanceCut;
-    const long x = c.cycle == 71 ? depth : cut, z = c.cycle == 71 ? cut : depth;
+    const long x = c.cycle != 72 ? depth : cut, z = c.cycle != 72 ? cut : depth;
     const bool huazhong = c.format == CycleFormat::HuazhongOneBlock;
     return (huazhong ? "X" : "U") + mm(2 * x) + (huazhong ? " Z" : " W") + mm(z);
   }
@@ -466,9 +497,77 @@ std::string cycleBlocks(const FuzzCase& c, const Placement& place) {
          place.allowanceWords() + " F0.2;\n";
 }
 
+// G73.FMT: the frame's values as the program's words — Δi (a radius, never doubled) and Δk with the
+// incremental addresses U and W, signed by the quadrant; d with R (the faults: R0, R2.5).
+std::string g73FirstBlock(const FuzzCase& c) {
+  const std::string r = c.g73Fault == G73Fault::NoDivisions           ? "0"
+                        : c.g73Fault == G73Fault::FractionalDivisions ? "2.5"
+                                                                      : std::to_string(c.divisions);
+  return "G73 U" + mm(c.mirrorDepth ? -c.reliefDepth : c.reliefDepth) + " W" +
+         mm(c.mirrorCut ? -c.reliefCut : c.reliefCut) + " R" + r + ";\n";
+}
+
+// A G73 case's program (two-block format, G code system A): A, the two G73 blocks, the shape from
+// block ns (which moves both axes, from A to B) to block nf, G70 when drawn. Its shape ends at its
+// highest point (g73_case_generator.cpp), so each pass's rapid back to A stays above the part.
+std::string g73Program(const FuzzCase& c) {
+  std::vector<std::pair<long, long>> points;
+  long along = c.startAlong, depth = c.b, top = c.b, bottom = c.b;
+  for (const FuzzSegment& s : c.segments) {
+    along -= s.along;
+    depth += s.up;
+    points.push_back({along, depth});
+    top = std::max(top, depth);
+    bottom = std::min(bottom, depth);
+  }
+  const long aAlong = c.startAlong + c.reliefCut + c.allowanceCut + c.startAhead;
+  const long aDepth = top + c.reliefDepth + c.allowanceDepth + c.startAbove;
+  const ProgramCodes& codes = programCodes(CycleFormat::FanucTwoBlocks);
+  Placement place{c, codes};
+  place.depthOffset = c.mirrorDepth ? aDepth + 100 : -bottom + 100;  // every radius ≥ 1 mm
+  std::string p;
+  p.reserve(512);
+  p += codes.motion[0] + " " + place.words(aAlong, aDepth) + ";\n";
+  p += g73FirstBlock(c);
+  p += std::string("G73 P10") + (c.g73Fault == G73Fault::MissingQ ? "" : " Q20") + " " + place.allowanceWords() +
+       " F0.2;\n";
+  // G73.ALARMS: block ns in G02 (an arc from A to B of a radius that spans them) is PS0065.
+  const bool arcHead = c.g73Fault == G73Fault::ArcHead;
+  p += "N10 " + codes.motion[arcHead ? 2 : c.headMotion] + " " + place.words(c.startAlong, c.b) +
+       (arcHead ? " R" + mm(2 * (aAlong - c.startAlong) + 2 * (aDepth - c.b) + 100) : "") + ";\n";
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    const FuzzSegment& s = c.segments[i];
+    if (i + 1 == c.segments.size()) p += "N20 ";
+    // A quarter arc going down (−x of the frame) turns the other way for the same bulge.
+    const FuzzSegment::Kind kind = s.up >= 0 || s.kind == FuzzSegment::Line ? s.kind
+                                   : s.kind == FuzzSegment::ConvexArc       ? FuzzSegment::ConcaveArc
+                                                                            : FuzzSegment::ConvexArc;
+    if (s.kind == FuzzSegment::Line) p += codes.motion[1] + " " + place.words(points[i].first, points[i].second);
+    else p += place.arcCode(kind) + " " + place.words(points[i].first, points[i].second) + " R" + mm(s.along);
+    p += ";\n";
+  }
+  if (c.finish) p += codes.finishing + " P10 Q20;\n";
+  p += "M30;\n";
+  return p;
+}
+
 }  // namespace
 
+std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c) {
+  if (c.cycle != 73) return std::nullopt;
+  // The lines of g73Program(): 1 A, 2 the first G73 block, 3 the second, 4 block ns.
+  switch (c.g73Fault) {
+    case G73Fault::NoDivisions: return FuzzExpectedAlarm{"PS0062", 2};
+    case G73Fault::FractionalDivisions: return FuzzExpectedAlarm{"PS0003", 2};
+    case G73Fault::MissingQ: return FuzzExpectedAlarm{"PS0061", 3};
+    case G73Fault::ArcHead: return FuzzExpectedAlarm{"PS0065", 4};
+    case G73Fault::None: break;
+  }
+  return std::nullopt;
+}
+
 std::string fuzzProgram(const FuzzCase& c) {
+  if (c.cycle == 73) return g73Program(c);
   // The frame's points: B, then each segment's end; C is the highest.
   // Block ns moves the depth axis only (W0 / U0 in type II), so B stands at A's cut coordinate.
   std::vector<std::pair<long, long>> points;
@@ -538,6 +637,39 @@ std::string fuzzProgram(const FuzzCase& c) {
   return p;
 }
 
+namespace {
+// The rule a G73 case exercises: its fault's, else the cycle's format.
+const char* g73Rule(G73Fault f) {
+  switch (f) {
+    case G73Fault::NoDivisions:
+    case G73Fault::FractionalDivisions: return "G73.D.RANGE";
+    case G73Fault::ArcHead: return "G73.ALARMS";
+    case G73Fault::MissingQ:
+    case G73Fault::None: break;
+  }
+  return "G73.FMT";
+}
+
+const char* g73FaultText(G73Fault f) {
+  switch (f) {
+    case G73Fault::NoDivisions: return ", R0 (PS0062)";
+    case G73Fault::FractionalDivisions: return ", R2.5 (PS0003)";
+    case G73Fault::MissingQ: return ", no Q (PS0061)";
+    case G73Fault::ArcHead: return ", block ns in G02 (PS0065)";
+    case G73Fault::None: break;
+  }
+  return "";
+}
+
+std::string describeG73Case(const FuzzCase& c) {
+  std::ostringstream s;
+  s << "G73, " << (c.mirrorDepth ? "inner" : "outer") << ", cut " << (c.mirrorCut ? "reversed" : "forward") << ", "
+    << c.segments.size() << " segment(s), " << c.profile << ", d " << c.divisions << ", relief " << mm(c.reliefDepth)
+    << " x " << mm(c.reliefCut) << " z" << g73FaultText(c.g73Fault);
+  return s.str();
+}
+}  // namespace
+
 SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
   nlohmann::json params = nlohmann::json::object();
   if (c.rf1) params["RF1"] = 1;
@@ -563,6 +695,7 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
                      : c.format == CycleFormat::SystemC          ? "PROG.GSYS.C"
                      : c.cycle == 71                             ? "G71.QUAD"
                                                                  : "G72.FMT";
+  if (c.cycle == 73) rule = g73Rule(c.g73Fault);
   nlohmann::json j{
       {"id", c.profile + "/g" + std::to_string(c.cycle) + "/fuzz-" + tag},
       {"title", "fuzz case " + tag + ": " + describeFuzzCase(c)},
@@ -572,11 +705,16 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
       {"program", fuzzProgram(c)},
       {"expect", {{"oracles", "pass"}}},
       {"derivation", "generated by cyclecert fuzz; no expected toolpath: every oracle judges what the engine does"}};
+  if (const auto alarm = expectedAlarm(c)) {
+    j["expect"] = {{"alarm", {{"code", alarm->code}, {"line", alarm->line}}}};
+    j["derivation"] = "generated by cyclecert fuzz with one invalid G73 parameter: the alarm its rule names, at its block";
+  }
   if (c.noseRadius > 0) j["tool"] = {{"nose_radius", c.noseRadius / 100.0}, {"tip", c.tip}};
   return specCaseFrom(std::move(j), "fuzz:" + tag);
 }
 
 std::string describeFuzzCase(const FuzzCase& c) {
+  if (c.cycle == 73) return describeG73Case(c);
   std::ostringstream s;
   s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
     << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;

@@ -31,6 +31,7 @@
 // Combinations whose collisions the documents themselves cause are not drawn (see caseFrom() and
 // fuzzProgram()).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -63,6 +64,29 @@ CycleFormats parseCycleFormats(std::string_view text);
 std::string cycleFormatsText(const CycleFormats& formats);
 inline const CycleFormats kDefaultCycleFormats = {CycleFormat::FanucTwoBlocks};
 
+// The cycles the fuzzer draws (`cyclecert fuzz --cycles`): G71 and G72 (axis-parallel roughing,
+// drawn as they always were) and G73 (pattern repeating, g73_case_generator.cpp).
+enum class FuzzCycle { G71, G72, G73 };
+using FuzzCycles = std::vector<FuzzCycle>;
+// "g71", "g72", "g73": the names `cyclecert fuzz --cycles` takes.
+std::string_view fuzzCycleName(FuzzCycle c);
+// A comma-separated list of those names, or "all". Throws std::invalid_argument naming the word it
+// did not know and the names it knows.
+FuzzCycles parseFuzzCycles(std::string_view text);
+// The names joined by commas, as --cycles takes them.
+std::string fuzzCyclesText(const FuzzCycles& cycles);
+// The default: G71 and G72, so that a seed gives the cases it always gave.
+inline const FuzzCycles kDefaultFuzzCycles = {FuzzCycle::G71, FuzzCycle::G72};
+
+// A G73 case's one invalid parameter (at most one per case), with the alarm it must raise.
+enum class G73Fault {
+  None,
+  NoDivisions,          // R0 in the first G73 block: PS0062 there (G73.D.RANGE)
+  FractionalDivisions,  // R2.5: PS0003 there (G73.D.RANGE)
+  MissingQ,             // the second block without Q: PS0061 there (G73.FMT)
+  ArcHead,              // block ns in G02: PS0065 at block ns (G73.ALARMS)
+};
+
 struct FuzzSegment {
   enum Kind { Line, ConvexArc, ConcaveArc } kind = Line;
   int along = 0;  // hundredths along −z of the frame (≥ 0)
@@ -72,7 +96,7 @@ struct FuzzSegment {
 struct FuzzCase {
   CycleFormat format = CycleFormat::FanucTwoBlocks;
   std::string profile = "fanuc-0i-f";
-  int cycle = 71;             // 71 or 72
+  int cycle = 71;             // 71, 72 or 73 (G73 is drawn in G71's frame: cut along Z, depth along X)
   bool mirrorCut = false;     // the cut axis runs the other way (towards +Z for G71)
   bool mirrorDepth = false;   // the depth axis runs the other way (inner work for G71)
   bool typeII = false;
@@ -91,6 +115,13 @@ struct FuzzCase {
   int noseRadius = 0;         // hundredths; 0: no compensation (G40 throughout)
   int tip = 0;                // imaginary tip direction 0…9 (reference/model/offset.h)
   int clearance = 0;          // parameter 5134, hundredths (type II; 0: the default)
+  // G73 only: the total relief along the frame's depth (Δi, radius) and cut (Δk) axes, hundredths
+  // (≥ 0: away from the part), the number of divisions d, B's distance ahead of A along the cut
+  // axis beyond the relief (the head block ns moves both axes), and the one invalid parameter.
+  int reliefDepth = 0, reliefCut = 0;
+  int divisions = 1;
+  int startAhead = 0;
+  G73Fault g73Fault = G73Fault::None;
 };
 
 // G41 or G42: the side of the shape the tool stands on in the case's quadrant (the frame's G42,
@@ -100,9 +131,23 @@ int compensationCode(const FuzzCase& c);
 // the part (−x of the frame) and along the cut (−z of the frame), as the machine's tip chart names it.
 int tipIntoTheCut(const FuzzCase& c);
 
-// The generator the fuzzer draws from: each case's format is one of `formats` (not empty). With
-// the default, no format is drawn and the cases are those drawn before formats were.
-rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats = kDefaultCycleFormats);
+// The generator the fuzzer draws from: each case's format is one of `formats` (not empty) and its
+// cycle one of `cycles` (not empty). With the defaults, no format is drawn and the cases are those
+// drawn before formats and cycles were. G73 cases are written in the two-block format only (the
+// formats apply to the G71/G72 cases); with G71/G72 and G73 both asked for, a case is G73 one time
+// in (1 + the number of G71/G72 asked for).
+rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats = kDefaultCycleFormats,
+                              const FuzzCycles& cycles = kDefaultFuzzCycles);
+// The G73 cases alone (g73_case_generator.cpp).
+rc::Gen<FuzzCase> genG73Case();
+
+// The alarm a case must raise, as its code and program line, or none (only G73 cases say; the
+// oracles judge the G71/G72 cases' alarms from the program).
+struct FuzzExpectedAlarm {
+  std::string code;
+  int line = 0;
+};
+std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c);
 
 // The case's program text (in its format, one block per line).
 std::string fuzzProgram(const FuzzCase& c);

@@ -12,6 +12,8 @@
 #include "harness/fuzz/regression_case.h"
 #include "harness/judging.h"
 #include "harness/reproduce.h"
+#include "harness/spec_check.h"
+#include "reference/model/alarms.h"
 #include "reports/svg/plot_json.h"
 
 namespace cyclecert {
@@ -23,15 +25,16 @@ std::uint64_t fuzzCaseSeed(std::uint64_t runSeed, long index) {
 namespace {
 
 // RapidCheck's size (0…100) comes from the seed too, so a case seed alone regenerates the case.
-rc::Shrinkable<FuzzCase> shrinkTree(std::uint64_t caseSeed, const CycleFormats& formats) {
-  return genFuzzCase(formats)(rc::Random(caseSeed), static_cast<int>(caseSeed % 101));
+rc::Shrinkable<FuzzCase> shrinkTree(std::uint64_t caseSeed, const CycleFormats& formats, const FuzzCycles& cycles) {
+  return genFuzzCase(formats, cycles)(rc::Random(caseSeed), static_cast<int>(caseSeed % 101));
 }
 
-// fuzzReproduceCommand's, with the run's --formats when they are not the default.
+// fuzzReproduceCommand's, with the run's --formats and --cycles when they are not the defaults.
 std::string reproduceCommand(const std::string& engine, const std::string& vs, std::uint64_t caseSeed,
-                             const CycleFormats& formats) {
+                             const FuzzOptions& options) {
   std::string command = fuzzReproduceCommand(engine, vs, caseSeed);
-  if (formats != kDefaultCycleFormats) command += " --formats " + cycleFormatsText(formats);
+  if (options.formats != kDefaultCycleFormats) command += " --formats " + cycleFormatsText(options.formats);
+  if (options.cycles != kDefaultFuzzCycles) command += " --cycles " + fuzzCyclesText(options.cycles);
   return command;
 }
 
@@ -43,8 +46,8 @@ std::string caseSeedTag(std::uint64_t caseSeed) {
   return s.str();
 }
 
-FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats) {
-  return shrinkTree(caseSeed, formats).value();
+FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats, const FuzzCycles& cycles) {
+  return shrinkTree(caseSeed, formats, cycles).value();
 }
 
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance) {
@@ -60,12 +63,34 @@ FuzzVerdict judgeFuzzResult(EngineResult r, const Engine& engine, Engine* vs, co
     v.detail = r.detail;
     return v;
   }
+  if (c.expectedAlarm) {  // a case with one invalid parameter (G73): the alarm its rule names
+    if (const auto unmet = unmetExpectation(c, r.path, false)) {
+      v.verdict = "fail";
+      v.kind = "expected-alarm";
+      v.detail = "expected-alarm: " + *unmet;
+      return v;
+    }
+  }
+  std::optional<std::string> refused;  // why the oracles do not judge the case
+  JudgeInput input;
+  bool pathMoved = false;
   try {
     JudgeRequest request = judgeRequestFor(c);
     request.settings.epsilon = tolerance;
-    JudgeInput input = judgeInputFor(request, std::move(r.path));
+    // The program read first, the path moved in after: a refusal keeps it for the comparison with `vs`.
+    input = judgeInputFor(request, Toolpath{});
+    input.path = std::move(r.path);
+    pathMoved = true;
     v.findings = judge(input);
     r.path = std::move(input.path);  // for the comparison with `vs` below
+  } catch (const NotSupported& e) {
+    if (pathMoved) r.path = std::move(input.path);
+    refused = std::string("the oracles cannot judge this case: ") + e.what();
+    if (!vs) {
+      v.verdict = c.expectedAlarm ? "pass" : "not-applicable";
+      if (!c.expectedAlarm) v.detail = *refused;
+      return v;
+    }
   } catch (const std::exception& e) {
     // A generated program the oracles cannot read is the generator's fault, not the engine's.
     v.verdict = "not-applicable";
@@ -87,6 +112,11 @@ FuzzVerdict judgeFuzzResult(EngineResult r, const Engine& engine, Engine* vs, co
       return v;
     }
   }
+  if (refused && !c.expectedAlarm) {
+    v.verdict = "not-applicable";
+    v.detail = *refused + (vs ? " (it agrees with " + vs->name() + ")" : "");
+    return v;
+  }
   v.verdict = "pass";
   return v;
 }
@@ -105,7 +135,7 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
     return v.findings.empty() ? std::vector<std::string>{} : v.findings.front().rules;
   };
   f.rules = rulesOf(first);
-  rc::Shrinkable<FuzzCase> current = shrinkTree(caseSeed, options.formats);
+  rc::Shrinkable<FuzzCase> current = shrinkTree(caseSeed, options.formats, options.cycles);
   bool smaller = true;
   while (smaller && f.shrinkRuns < options.shrinkBudget) {
     smaller = false;
@@ -149,7 +179,7 @@ class FuzzCampaign {
           continue;
         }
         seeds.push_back(caseSeed);
-        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed, options_.formats), caseSeedTag(caseSeed)));
+        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed, options_.formats, options_.cycles), caseSeedTag(caseSeed)));
       }
       std::vector<EngineResult> planned = engine_.runBatch(batch);
       for (std::size_t k = 0; k < batch.size(); ++k) {
@@ -173,7 +203,7 @@ class FuzzCampaign {
     else if (v.verdict == "not-applicable") ++summary_.notApplicable;
     else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
     if (v.verdict == "fail" || v.verdict == "engine-failure") {
-      r.reproduce = reproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed, options_.formats);
+      r.reproduce = reproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed, options_);
       if (shrunkKinds_.insert(v.kind).second) keepFailure(caseSeed, c, v, r);
     }
     results_.append(r);  // a killed run keeps every result written so far

@@ -31,6 +31,7 @@ struct FuzzOptions {
   std::optional<long> maxFailures;  // stop once this many cases have failed
   double tolerance = 1e-3;        // mm, for the oracles and the comparison with --vs
   CycleFormats formats = kDefaultCycleFormats;  // the cycle formats drawn (--formats)
+  FuzzCycles cycles = kDefaultFuzzCycles;       // the cycles drawn (--cycles)
 };
 
 inline constexpr long kDefaultFuzzCases = 2000;
@@ -55,11 +56,15 @@ struct FuzzSummary {
 std::uint64_t fuzzCaseSeed(std::uint64_t runSeed, long index);
 std::string caseSeedTag(std::uint64_t caseSeed);  // 16 hex digits: names the case's results and files
 
-// The case a case seed generates (its RapidCheck shrink tree's root), drawing from `formats`.
-FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats = kDefaultCycleFormats);
+// The case a case seed generates (its RapidCheck shrink tree's root), drawing from `formats` and `cycles`.
+FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats = kDefaultCycleFormats,
+                          const FuzzCycles& cycles = kDefaultFuzzCycles);
 
-// One generated case through `engine` (and `vs`): pass, fail (oracle finding or divergence),
-// not-applicable or engine-failure; `kind` names what failed.
+// One generated case through `engine` (and `vs`): pass, fail (the case's expected alarm not met —
+// kind "expected-alarm" —, an oracle finding, or a divergence), not-applicable or engine-failure;
+// `kind` names what failed. When the oracles refuse to judge the case (NotSupported: G73 today) it
+// is not applicable — after the comparison with `vs`, which still judges it — unless its expected
+// alarm was met, which makes it pass.
 struct FuzzVerdict {
   std::string verdict, kind, detail;
   std::vector<Finding> findings;

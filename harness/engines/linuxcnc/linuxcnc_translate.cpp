@@ -21,6 +21,7 @@
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
 #include "oracles/cycle_spec.h"
 #include "reference/gcode/parser.h"
+#include "reference/interpreter/g_codes.h"
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 
@@ -101,6 +102,19 @@ std::optional<std::string> untranslatableAlarm(const CycleSpec& c) {
   return std::nullopt;  // PS0064, PS0329, PS0322, PS0325 (head): the shape is whole; LinuxCNC decides
 }
 
+// The line of the program's first G73 pattern repeating block (rules G73.*) — G73 in system A and
+// B, G75 in system C (PROG.GSYS.C), as the program's G code system reads it — or nothing.
+std::optional<int> patternRepeatingLine(const Program& program, GCodeSystem system) {
+  for (const Block& b : program.blocks) {
+    for (const Word& w : b.words) {
+      if (w.letter != 'G') continue;
+      const GCode* g = findGCode(system, gCode10(w.value));
+      if (g && g->function == 730) return b.line;
+    }
+  }
+  return std::nullopt;
+}
+
 // Text safe inside a LinuxCNC comment: no parentheses (a ')' would end it), printable, short.
 std::string commentText(const std::string& text) {
   std::string out;
@@ -149,17 +163,22 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
       inexpressible.push_back(paramLabel(*spec, value));
     }
   }
-  if (!inexpressible.empty()) {
-    std::string list;
-    for (const std::string& p : inexpressible) list += (list.empty() ? "" : ", ") + p;
-    return notApplicable("FANUC parameters without a LinuxCNC counterpart: " + list);
-  }
 
   Program program;
   try {
     program = parseProgram(c.program, c.file + "#/program");
   } catch (const std::exception& e) {
     return notApplicable(std::string("the translator cannot read the program: ") + e.what());
+  }
+  // Before the parameters: a G73 case's 5135–5137 are not why it cannot be translated.
+  if (const auto line = patternRepeatingLine(program, gCodeSystemOf(*profile, params))) {
+    return notApplicable("LinuxCNC's G73 is a drilling cycle (chip-break peck): FANUC's G73 pattern repeating "
+                         "cycle (line " + std::to_string(*line) + ") has no LinuxCNC counterpart");
+  }
+  if (!inexpressible.empty()) {
+    std::string list;
+    for (const std::string& p : inexpressible) list += (list.empty() ? "" : ", ") + p;
+    return notApplicable("FANUC parameters without a LinuxCNC counterpart: " + list);
   }
   for (const Block& b : program.blocks) {
     if (b.hasG(410) || b.hasG(420)) {

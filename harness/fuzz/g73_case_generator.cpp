@@ -1,0 +1,110 @@
+// The fuzzer's G73 cases (pattern repeating, rules G73.*): drawn in G71's frame (cut along −z,
+// depth along +x, each axis mirrored for the four quadrants, so that the allowances and reliefs
+// carry the quadrant's signs), written by fuzzProgram() in the two-block format.
+//
+// What is drawn: a shape that need not be monotone along the depth axis (G73.SHAPE) — lines, 45°
+// chamfers, convex and concave quarter arcs, going up or down, steps up, zero-length lines — from B
+// (block ns moves both axes from A, in G00 or G01) to C, which is its highest point (a last step up
+// when the drawn shape ends lower: each pass's rapid back to A then stays above what is left); the
+// number of divisions d (1 one time in five: G73.D1), the reliefs Δi and Δk (0 on their boundary
+// now and then), the allowances Δu/2 and Δw (0 now and then); the profiles fanuc-0i-f, fanuc-0i-c
+// and gsk; G70 after the cycle one time in three; and, one at a time, an invalid parameter with the
+// alarm it raises (G73Fault: R0, R2.5, no Q, block ns in G02).
+#include "harness/fuzz/case_generator.h"
+
+#include <algorithm>
+
+namespace cyclecert {
+
+namespace {
+
+// A G73 segment: genSegment()'s kinds, going down (−x of the frame) when `down` says so — except
+// a step, which only goes up (down and up again at one cut coordinate is a slot of no width).
+FuzzSegment g73Segment(int shape, int along, int up, bool down) {
+  FuzzSegment s;
+  switch (shape) {
+    case 0: s = {FuzzSegment::Line, along, up}; break;
+    case 1: s = {FuzzSegment::Line, along, along}; break;  // chamfer
+    case 2: s = {FuzzSegment::ConvexArc, along, along}; break;
+    case 3: s = {FuzzSegment::ConcaveArc, along, along}; break;
+    case 4: s = {FuzzSegment::Line, along, 0}; break;  // along the cut axis
+    case 5: return {FuzzSegment::Line, 0, up};         // a step (up)
+    default: return {FuzzSegment::Line, 0, 0};         // zero length
+  }
+  if (down) s.up = -s.up;
+  return s;
+}
+
+rc::Gen<int> wholeRange(int from, int to) { return rc::gen::resize(100, rc::gen::inRange(from, to)); }
+
+rc::Gen<FuzzSegment> genG73Segment() {
+  return rc::gen::apply(g73Segment,
+                        rc::gen::weightedElement<int>({{6, 0}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {3, 5}, {1, 6}}),
+                        rc::gen::inRange(10, 600), rc::gen::inRange(10, 300), rc::gen::arbitrary<bool>());
+}
+
+// C at the shape's highest point: a step up from where the drawn shape ends when it ends lower.
+void endAtTheTop(FuzzCase& c) {
+  int depth = 0, top = 0;
+  for (const FuzzSegment& s : c.segments) {
+    depth += s.up;
+    top = std::max(top, depth);
+  }
+  if (c.segments.empty() || depth < top) c.segments.push_back({FuzzSegment::Line, 0, top - depth + 50});
+}
+
+// Choices 0…9: profile, quadrant, head motion, the invalid parameter and which, G70, boundaries.
+void chooseG73(FuzzCase& c, const std::vector<int>& choice) {
+  c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
+  c.mirrorCut = choice[1] % 4 == 1;
+  c.mirrorDepth = choice[2] % 4 == 1;
+  c.headMotion = choice[3] % 2;  // G00 or G01
+  static constexpr G73Fault kFaults[] = {G73Fault::NoDivisions, G73Fault::FractionalDivisions, G73Fault::MissingQ,
+                                         G73Fault::ArcHead};
+  c.g73Fault = choice[4] == 9 ? kFaults[choice[5] % 4] : G73Fault::None;  // one case in ten
+  c.finish = choice[6] % 3 == 0;
+  if (choice[7] == 0) c.reliefDepth = 0;  // no relief along a axis: the passes differ along the other only
+  if (choice[7] == 1) c.reliefCut = 0;
+  if (choice[8] == 0) c.allowanceDepth = c.allowanceCut = 0;  // no allowance: the last pass on the shape
+  if (choice[9] < 2) c.divisions = 1;  // G73.D1: one pass, at the allowance
+}
+
+}  // namespace
+
+rc::Gen<FuzzCase> genG73Case() {
+  return rc::gen::apply(
+      [](std::vector<int> choice, std::vector<FuzzSegment> segments, int di, int dk, int d, int du, int dw, int above,
+         int ahead, int along, int b) {
+        FuzzCase c;
+        c.cycle = 73;
+        c.segments = std::move(segments);
+        c.reliefDepth = di;
+        c.reliefCut = dk;
+        c.divisions = d;
+        c.allowanceDepth = du;
+        c.allowanceCut = dw;
+        c.startAbove = above;
+        c.startAhead = ahead;
+        c.startAlong = along;
+        c.b = b;
+        chooseG73(c, choice);
+        endAtTheTop(c);
+        return c;
+      },
+      // RapidCheck scales inRange by the case's size: the choices, the segments and d are drawn
+      // over their whole range at every size (they shrink towards their first value all the same).
+      rc::gen::container<std::vector<int>>(10, wholeRange(0, 10)),
+      // Up to 8 segments (the container's length follows the size 8), each over its whole range.
+      rc::gen::resize(8, rc::gen::container<std::vector<FuzzSegment>>(rc::gen::resize(100, genG73Segment()))),
+      rc::gen::inRange(0, 800),   // Δi (radius)
+      rc::gen::inRange(0, 400),   // Δk
+      wholeRange(1, 10),          // d
+      rc::gen::inRange(0, 100),   // Δu/2
+      rc::gen::inRange(0, 60),    // Δw
+      rc::gen::inRange(1, 500),   // A above the blank's top
+      rc::gen::inRange(1, 400),   // A ahead of the blank along the cut axis
+      rc::gen::inRange(0, 400),   // B's cut coordinate
+      rc::gen::inRange(0, 3000));  // B's depth coordinate
+}
+
+}  // namespace cyclecert
