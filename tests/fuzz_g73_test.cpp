@@ -108,7 +108,9 @@ TEST(FuzzG73Generator, CoversShapesDivisionsReliefsQuadrantsAndFaults) {
       if (s.kind == FuzzSegment::ConvexArc) ++seen[s.up < 0 ? "convex arc down" : "convex arc up"];
       if (s.kind == FuzzSegment::ConcaveArc) ++seen[s.up < 0 ? "concave arc down" : "concave arc up"];
       EXPECT_GE(s.along, 0);
-      if (s.along == 0) EXPECT_GE(s.up, 0) << "a step goes up only";
+      if (s.along == 0) {
+        EXPECT_GE(s.up, 0) << "a step goes up only";
+      }
     }
     if (down) ++seen["not monotone"];
     // C is the shape's highest point.
@@ -144,10 +146,9 @@ TEST(FuzzG73Generator, WritesTheManualsTwoBlocks) {
   c.startAhead = 20;
   c.headMotion = 1;
   c.finish = true;
-  // Depths: B 15, 13, 18, C 21 = the top; A at 21 + 3 + 0.2 + 0.5 = 24.7 (x 49.4 with the offset 0:
-  // the lowest depth 13 → offset −13 + 1 mm… placed so that the lowest point is at radius 1).
-  // Offset: −1300 + 100 = −1200 hundredths: B x = 2·(15 − 12) = 6, A x = 2·(24.7 − 12) = 25.4.
-  // Along: A at 1 + 0.5 + 0.1 + 0.2 = 1.8; B at 1, then −9, −14, −14.
+  // Frame depths (radius): B 15, then 13, 18, C 21 = the top; A at 21 + 3 + 0.2 + 0.5 = 24.7. The
+  // lowest point (13) is placed at radius 1 mm: X = 2·(depth − 12), so B X6, A X25.4, X2, X12, X18.
+  // Along Z: A at 1 + 0.5 + 0.1 + 0.2 = 1.8; B at 1, then −9, −14, −14.
   EXPECT_EQ(fuzzProgram(c),
             "G00 X25.4 Z1.8;\n"
             "G73 U3 W0.5 R3;\n"
@@ -235,6 +236,7 @@ TEST(FuzzG73Verdicts, RefusedCasesAreComparedAndAlarmsJudged) {
   const FuzzVerdict missing = judgeFuzzCase(*divisions, reference.get(), fuzzSpecCase(c, "t"), 1e-3);
   EXPECT_EQ(missing.verdict, "fail") << missing.detail;
   SpecCase wrongAlarm = fuzzSpecCase(c, "t");
+  wrongAlarm.oraclesOnly = false;  // as fuzzSpecCase writes a case with an expected alarm
   wrongAlarm.expectedAlarm = ExpectedAlarm{};
   wrongAlarm.expectedAlarm->code = "PS0061";
   wrongAlarm.expectedAlarm->line = 3;
@@ -299,6 +301,37 @@ TEST(FuzzG73, EveryG73MutantIsCaughtByCheckAndByTheFuzzer) {
   }
 }
 
+// The G73 mutants change G73 only: in G code system C, G73 is G71's roughing (its R is e, its U
+// Δd), and a system C G75 is the pattern repeating cycle they change.
+TEST(FuzzG73, TheG73MutantsReadTheProgramsGCodeSystem) {
+  const SpecCase g71InSystemC =
+      loadSpecCase(CYCLECERT_SOURCE_DIR "/specs/cases/fanuc-0i-f/program/gsys-c-g73-g71-metric.json");
+  auto reference = makeEngine("reference");
+  const Toolpath expected = reference->run(g71InSystemC).path;
+  ASSERT_FALSE(expected.moves.empty());
+  SpecCase g75 = loadSpecCase(CYCLECERT_SOURCE_DIR "/specs/cases/fanuc-0i-f/g73/d2-two-passes.json");
+  g75.params.push_back({"3401#7", 1});
+  g75.program = "G90 G95;\n" + g75.program;
+  for (std::size_t at; (at = g75.program.find("G73")) != std::string::npos;) g75.program.replace(at, 3, "G75");
+  const Toolpath g75Planned = reference->run(g75).path;
+  ASSERT_FALSE(g75Planned.alarm);
+  for (const char* name : {"mutant:g73-divisions", "mutant:g73-relief-sign"}) {
+    SCOPED_TRACE(name);
+    const EngineResult r = makeEngine(name)->run(g71InSystemC);
+    EXPECT_FALSE(r.path.alarm);
+    EXPECT_EQ(r.path.moves.size(), expected.moves.size());
+    for (std::size_t i = 0; i < std::min(r.path.moves.size(), expected.moves.size()); ++i) {
+      EXPECT_LE(distance(r.path.moves[i].to, expected.moves[i].to), 1e-9) << "move " << i;
+    }
+    const Toolpath mutated = makeEngine(name)->run(g75).path;
+    bool differs = mutated.moves.size() != g75Planned.moves.size();
+    for (std::size_t i = 0; !differs && i < mutated.moves.size(); ++i) {
+      differs = distance(mutated.moves[i].to, g75Planned.moves[i].to) > 1e-6;
+    }
+    EXPECT_TRUE(differs) << "the system C G75 is G73: the mutant changes it";
+  }
+}
+
 // A shrunk failure of an alarm case keeps the alarm it must raise (not "every oracle passes").
 TEST(FuzzG73, AnAlarmCaseIsKeptWithItsAlarm) {
   FuzzFailure f;
@@ -312,7 +345,9 @@ TEST(FuzzG73, AnAlarmCaseIsKeptWithItsAlarm) {
   fs::remove_all(dir);
   ASSERT_TRUE(kept.expectedAlarm);
   EXPECT_EQ(kept.expectedAlarm->code, "PS0061");
+  EXPECT_EQ(kept.expectedAlarm->line, 3);
   EXPECT_FALSE(kept.oraclesOnly);
+  EXPECT_NE(kept.derivation.find("the alarm its rule names"), std::string::npos) << kept.derivation;
 }
 
 class FuzzG73Cli : public CliFixture {};

@@ -10,6 +10,9 @@
 #include "harness/reference_plan.h"
 #include "reference/gcode/parser.h"
 #include "reference/gcode/writer.h"
+#include "reference/interpreter/g_codes.h"
+#include "reference/model/params.h"
+#include "reference/model/profile.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {
@@ -131,16 +134,37 @@ std::string compensationSidesSwapped(const std::string& text) {
   return writeProgram(p);
 }
 
-// G73: the program's G73 blocks, the first (Δi, Δk, d: no P) and the one with P (the Series 10/11
-// one block carries I, K and D there).
-bool isG73(const Block& b) { return b.hasG(730); }
+// The case's G code system (PROG.GSYS.*): G73 is the pattern repeating cycle in systems A and B,
+// G75 in system C (where G73 is G71's roughing).
+GCodeSystem gCodeSystemOf(const SpecCase& c) {
+  const Profile* profile = findProfile(c.profile.empty() ? "fanuc-0i-f" : c.profile);
+  if (!profile) return GCodeSystem::A;
+  MachineParams params = profile->defaults;
+  for (const auto& [name, value] : c.params) {
+    try {
+      params.set(name, value);
+    } catch (const std::exception&) {  // the reference names a bad parameter when it plans the case
+    }
+  }
+  return gCodeSystemOf(*profile, params);
+}
+
+// A G73 block of the program — the first (Δi, Δk, d: no P) or the one with P (the Series 10/11 one
+// block carries I, K and D there) — as its G code system reads it.
+bool isG73(const Block& b, GCodeSystem system) {
+  return std::any_of(b.words.begin(), b.words.end(), [&](const Word& w) {
+    const GCode* g = w.letter == 'G' ? findGCode(system, gCode10(w.value)) : nullptr;
+    return g && g->function == 730;
+  });
+}
 
 // The G73 fault "one pass too few": d read as d − 1 (R in the first block, D in the Series 10/11
 // block, parameter 5137), so the passes are shared out over one division less.
 SpecCase g73DivisionsLessOne(SpecCase c) {
   Program p = parseProgram(c.program, "mutant");
+  const GCodeSystem system = gCodeSystemOf(c);
   for (Block& b : p.blocks) {
-    if (!isG73(b)) continue;
+    if (!isG73(b, system)) continue;
     const char letter = b.has('P') ? 'D' : 'R';
     for (Word& w : b.words) {
       if (w.letter == letter) w = makeWord(letter, w.value - 1);
@@ -157,8 +181,9 @@ SpecCase g73DivisionsLessOne(SpecCase c) {
 // block, I/K of the Series 10/11 block, parameters 5135/5136), so each pass is shifted into the part.
 SpecCase g73ReliefFlipped(SpecCase c) {
   Program p = parseProgram(c.program, "mutant");
+  const GCodeSystem system = gCodeSystemOf(c);
   for (Block& b : p.blocks) {
-    if (!isG73(b)) continue;
+    if (!isG73(b, system)) continue;
     const bool oneBlock = b.has('P');
     for (Word& w : b.words) {
       const bool relief = oneBlock ? (w.letter == 'I' || w.letter == 'K') : (w.letter == 'U' || w.letter == 'W');
