@@ -159,6 +159,7 @@ TEST(FuzzG73Generator, WritesTheManualsTwoBlocks) {
             "N20 G01 X18 Z-14;\n"
             "G70 P10 Q20;\n"
             "M30;\n");
+  EXPECT_EQ(describeFuzzCase(c), "G73, outer, cut forward, 3 segment(s), fanuc-0i-f, d 3, Δi 3 Δk 0.5, Δu/2 0.2 Δw 0.1, G70");
   // Inner, towards +Z: the reliefs and allowances change sign with their axis; the arc's sense flips twice.
   c.mirrorDepth = c.mirrorCut = true;
   c.finish = false;

@@ -664,8 +664,9 @@ const char* g73FaultText(G73Fault f) {
 std::string describeG73Case(const FuzzCase& c) {
   std::ostringstream s;
   s << "G73, " << (c.mirrorDepth ? "inner" : "outer") << ", cut " << (c.mirrorCut ? "reversed" : "forward") << ", "
-    << c.segments.size() << " segment(s), " << c.profile << ", d " << c.divisions << ", relief " << mm(c.reliefDepth)
-    << " x " << mm(c.reliefCut) << " z" << g73FaultText(c.g73Fault);
+    << c.segments.size() << " segment(s), " << c.profile << ", d " << c.divisions << ", Δi " << mm(c.reliefDepth)
+    << " Δk " << mm(c.reliefCut) << ", Δu/2 " << mm(c.allowanceDepth) << " Δw " << mm(c.allowanceCut)
+    << (c.finish ? ", G70" : "") << g73FaultText(c.g73Fault);
   return s.str();
 }
 }  // namespace
