@@ -101,6 +101,9 @@ TEST(FuzzG73Generator, CoversShapesDivisionsReliefsQuadrantsAndFaults) {
     if (c.allowanceDepth == 0 && c.allowanceCut == 0) ++seen["no allowance"];
     if (c.finish) ++seen["G70"];
     ++seen["head G0" + std::to_string(c.headMotion)];
+    if (c.headMotion == 0) {
+      EXPECT_EQ(c.reliefCut, 0) << "a G00 block ns only without Δk";
+    }
     ++seen["fault " + std::to_string(static_cast<int>(c.g73Fault))];
     bool down = false;
     for (const FuzzSegment& s : c.segments) {

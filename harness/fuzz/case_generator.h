@@ -1,6 +1,7 @@
 #pragma once
-// The fuzzer's cases (`cyclecert fuzz`): RapidCheck generators of G71/G72 roughing programs, each
-// a spec case without an expectation (the oracles and, with --vs, a second engine judge it).
+// The fuzzer's cases (`cyclecert fuzz`): RapidCheck generators of G71/G72 (and G73) programs, each
+// a spec case without an expectation (the oracles and, with --vs, a second engine judge it; a G73
+// case with an invalid parameter expects its alarm).
 //
 // A case is drawn in the cycle's own frame — cut axis z (cuts run towards −z), depth axis x (passes
 // go down towards −x) — and then placed in the machine: G71 cuts along Z with the depth along X,
@@ -30,6 +31,9 @@
 // code written through the G code table, oracles/metamorphic/g_code_writing.h).
 // Combinations whose collisions the documents themselves cause are not drawn (see caseFrom() and
 // fuzzProgram()).
+//
+// G73 cases (pattern repeating) are drawn when the run asks for them (FuzzCycles, `fuzz --cycles`):
+// g73_case_generator.cpp says what is drawn; fuzzProgram() writes them in the two-block format.
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -4,12 +4,12 @@
 //
 // What is drawn: a shape that need not be monotone along the depth axis (G73.SHAPE) — lines, 45°
 // chamfers, convex and concave quarter arcs, going up or down, steps up, zero-length lines — from B
-// (block ns moves both axes from A, in G00 or G01) to C, which is its highest point (a last step up
-// when the drawn shape ends lower: each pass's rapid back to A then stays above what is left); the
-// number of divisions d (1 one time in five: G73.D1), the reliefs Δi and Δk (0 on their boundary
-// now and then), the allowances Δu/2 and Δw (0 now and then); the profiles fanuc-0i-f, fanuc-0i-c
-// and gsk; G70 after the cycle one time in three; and, one at a time, an invalid parameter with the
-// alarm it raises (G73Fault: R0, R2.5, no Q, block ns in G02).
+// (block ns moves both axes from A, in G01, or G00 when Δk = 0) to C, which is its highest point (a
+// last step up when the drawn shape ends lower: each pass's rapid back to A then stays above what is
+// left); the number of divisions d (1 one time in five: G73.D1), the reliefs Δi and Δk (0 on their
+// boundary now and then), the allowances Δu/2 and Δw (0 now and then); the profiles fanuc-0i-f,
+// fanuc-0i-c and gsk; G70 after the cycle one time in three; and, one case in ten, one invalid
+// parameter with the alarm it raises (G73Fault: R0, R2.5, no Q, block ns in G02).
 #include "harness/fuzz/case_generator.h"
 
 #include <algorithm>
@@ -58,7 +58,6 @@ void chooseG73(FuzzCase& c, const std::vector<int>& choice) {
   c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
   c.mirrorCut = choice[1] % 4 == 1;
   c.mirrorDepth = choice[2] % 4 == 1;
-  c.headMotion = choice[3] % 2;  // G00 or G01
   static constexpr G73Fault kFaults[] = {G73Fault::NoDivisions, G73Fault::FractionalDivisions, G73Fault::MissingQ,
                                          G73Fault::ArcHead};
   c.g73Fault = choice[4] == 9 ? kFaults[choice[5] % 4] : G73Fault::None;  // one case in ten
@@ -67,6 +66,10 @@ void chooseG73(FuzzCase& c, const std::vector<int>& choice) {
   if (choice[7] == 1) c.reliefCut = 0;
   if (choice[8] == 0) c.allowanceDepth = c.allowanceCut = 0;  // no allowance: the last pass on the shape
   if (choice[9] < 2) c.divisions = 1;  // G73.D1: one pass, at the allowance
+  // Block ns in G00 or G01 (G73.HEAD) — G00 only without Δk: with Δk each pass's B lies behind the
+  // last pass's, and a G00 block ns would end in the material that pass left (where the shape near B
+  // is flat or rises): the programmer's collision on any controller, so not drawn.
+  c.headMotion = c.reliefCut == 0 ? choice[3] % 2 : 1;
 }
 
 }  // namespace
