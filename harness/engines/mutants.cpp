@@ -209,6 +209,7 @@ void g73LastPassOnTheShape(Toolpath& t) {
     }
     std::size_t first = begin;
     while (first < end && !(t.moves[first].phase == "pass" && t.moves[first].pass == last)) ++first;
+    if (first == end) continue;  // no pass (nothing to cut)
     if (first > begin && cites(t.moves[first - 1], "G73.APPROACH") && !cites(t.moves[first], "G73.APPROACH")) --first;
     for (std::size_t i = first; i < end && t.moves[i].phase != "return" && !cites(t.moves[i], "G73.RETURN"); ++i) {
       t.moves[i].to = t.moves[i].to - cycle.allowance;
