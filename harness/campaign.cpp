@@ -38,7 +38,7 @@ std::vector<std::string> mergedFields(const json& a, const json& b) {
   if (text(a, "command") != text(b, "command")) return {};
   // Runs of different engines fill different engines' parts of one report, which compares them.
   if (text(a, "engine") != text(b, "engine")) return {"spec_suite_hash"};
-  if (text(a, "command") == "fuzz") return {"engine_version", "vs", "seed", "formats", "shards", "spec_suite_hash"};
+  if (text(a, "command") == "fuzz") return {"engine_version", "vs", "seed", "formats", "cycles", "shards", "spec_suite_hash"};
   return {"engine_version", "spec_suite_hash"};
 }
 
@@ -46,7 +46,7 @@ std::vector<std::string> mergedFields(const json& a, const json& b) {
 
 std::optional<CampaignDifference> resumeDifference(const std::vector<SourcedRecord>& existing, const SourcedRecord& next) {
   static const std::vector<std::string> sameCommand{"engine", "engine_version", "vs",
-                                                     "seed",   "formats",        "shard", "spec_suite_hash"};
+                                                     "seed",   "formats",        "cycles", "shard", "spec_suite_hash"};
   static const std::vector<std::string> otherCommand{"engine", "engine_version"};
   for (const SourcedRecord& r : existing) {
     const bool same = text(r.record, "command") == text(next.record, "command");
@@ -81,8 +81,11 @@ std::optional<CampaignDifference> mergeDifference(const std::vector<std::vector<
 
 std::string differenceText(const CampaignDifference& d) {
   const std::string name = d.field == "shards" ? "shard count" : d.field;
-  // formats: absent in a record is the default format (two-block)
-  const auto value = [&](const std::string& v) { return d.field == "formats" && v == "none" ? std::string("two-block") : v; };
+  // formats, cycles: absent in a record is the default (two-block; g71,g72)
+  const auto value = [&](const std::string& v) {
+    if (v != "none") return v;
+    return d.field == "formats" ? std::string("two-block") : d.field == "cycles" ? std::string("g71,g72") : v;
+  };
   return name + " " + value(d.first) + " in " + d.firstSource + ", " + value(d.second) + " in " + d.secondSource;
 }
 

@@ -54,6 +54,7 @@ json runRecordJson(const RunRecord& r) {
   if (r.cases) j["cases"] = *r.cases;
   if (!r.shard.empty()) j["shard"] = r.shard;
   if (!r.formats.empty()) j["formats"] = r.formats;  // absent: the default, as in records written before --formats
+  if (!r.cycles.empty()) j["cycles"] = r.cycles;     // absent: the default (g71,g72), as before --cycles
   return j;
 }
 
@@ -108,6 +109,7 @@ void checkSameCampaign(const std::string& outDir, const std::vector<json>& runs,
   std::string hint = "resume with the same options";
   if (d->field == "seed" && d->first != "none") hint += " (--seed " + d->first + ")";
   if (d->field == "formats") hint += " (--formats " + (d->first == "none" ? std::string("two-block") : d->first) + ")";
+  if (d->field == "cycles") hint += " (--cycles " + (d->first == "none" ? std::string("g71,g72") : d->first) + ")";
   throw CampaignMismatchError("cannot resume the run in '" + outDir + "': this run is of another campaign: " +
                               differenceText(*d) + "; " + hint + ", write to another --out, or give " +
                               kMixCampaignsFlag + " to mix the two in one report knowingly");

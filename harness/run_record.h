@@ -23,6 +23,7 @@ struct RunRecord {
   std::optional<long> cases;  // fuzz: the campaign's --cases (none with --time alone)
   std::string shard;          // fuzz: "K/N" with --shard, else ""
   std::string formats;        // fuzz: --formats when not the default (two-block), else "": another campaign
+  std::string cycles;         // fuzz: --cycles when not the default (g71,g72), else "": another campaign
   std::vector<std::string> argv;
 };
 

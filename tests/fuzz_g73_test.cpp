@@ -365,6 +365,16 @@ TEST_F(FuzzG73Cli, CyclesOptionDrawsG73AndBadNamesExitWith2) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("--cycles: unknown cycle 'g74'"), std::string::npos) << bad.err;
   EXPECT_NE(run("fuzz --help").out.find("--cycles LIST"), std::string::npos);
+  // run.json records the cycles: resuming with others is another campaign, refused and named.
+  EXPECT_NE(read(out + "/run.json").find("\"cycles\": \"g73\""), std::string::npos) << read(out + "/run.json");
+  const CliRun other = run("fuzz --engine reference --cases 60 --seed 3 --no-save --resume --out " + out);
+  EXPECT_EQ(other.exitCode, 2) << other.out << other.err;
+  EXPECT_NE(other.err.find("cycles g73 in"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("g71,g72 in this run"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("(--cycles g73)"), std::string::npos) << other.err;
+  const CliRun more = run("fuzz --engine reference --cycles g73 --cases 60 --seed 3 --no-save --resume --out " + out);
+  EXPECT_EQ(more.exitCode, 0) << more.out << more.err;
+  EXPECT_NE(more.out.find("50 already done"), std::string::npos) << more.out;
 }
 
 }  // namespace

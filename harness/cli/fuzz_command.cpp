@@ -54,7 +54,7 @@ Options:
   --tolerance T       mm, for the oracles and --vs (default 0.001)
   --max-failures N    stop once N cases have failed
   --resume            continue the run in OUT (--cases may grow); refused when OUT holds another
-                      campaign (another --engine, --vs, engine version, --seed, --formats, --shard or
+                      campaign (another --engine, --vs, engine version, --seed, --formats, --cycles, --shard or
                       spec suite)
   --mix-campaigns     with --resume: continue even so (the report then mixes the two)
   --timeout S         per-case timeout for engines in another process (default 10)
@@ -82,7 +82,7 @@ that appears in more than one input (the same engine and case) is kept once; tor
 runs are skipped and counted. `cyclecert report DIR` then writes the joined report.
 
 The inputs' run.json records must be of one campaign: fuzz runs the shards of one --engine, --vs,
-engine version, --seed, --formats, shard count, spec suite and (their latest runs) --cases; check runs of one
+engine version, --seed, --formats, --cycles, shard count, spec suite and (their latest runs) --cases; check runs of one
 spec suite (and one version per engine). Otherwise the merge is refused, naming the field that
 differs and the inputs, unless --mix-campaigns. DIR is locked as `check` and `fuzz` lock their OUT.
 
@@ -176,6 +176,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
   record.cases = options.cases;
   if (options.shards > 1) record.shard = std::to_string(options.shard) + "/" + std::to_string(options.shards);
   if (options.formats != kDefaultCycleFormats) record.formats = cycleFormatsText(options.formats);
+  if (options.cycles != kDefaultFuzzCycles) record.cycles = fuzzCyclesText(options.cycles);
   recordRun(options.outDir, record, options.resume, mixCampaigns);
   const FuzzSummary s = runFuzz(*engine, vs.get(), options, std::cerr);
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
