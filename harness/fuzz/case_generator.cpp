@@ -507,19 +507,37 @@ std::string g73FirstBlock(const FuzzCase& c) {
          mm(c.mirrorCut ? -c.reliefCut : c.reliefCut) + " R" + r + ";\n";
 }
 
+// The shape's points in the frame (along the cut, depth), from B by each segment, with the
+// highest and lowest depth and the furthest point back along the cut.
+struct ShapeWalk {
+  std::vector<std::pair<long, long>> points;
+  long top = 0, bottom = 0, behind = 0;
+};
+
+ShapeWalk walkShape(const FuzzCase& c) {
+  ShapeWalk w;
+  w.points.reserve(c.segments.size());
+  long along = c.startAlong, depth = c.b;
+  w.top = w.bottom = c.b;
+  w.behind = c.startAlong;
+  for (const FuzzSegment& s : c.segments) {
+    along -= s.along;
+    depth += s.up;
+    w.points.push_back({along, depth});
+    w.top = std::max(w.top, depth);
+    w.bottom = std::min(w.bottom, depth);
+    w.behind = std::min(w.behind, along);
+  }
+  return w;
+}
+
 // A G73 case's program (two-block format, G code system A): A, the two G73 blocks, the shape from
 // block ns (which moves both axes, from A to B) to block nf, G70 when drawn. Its shape ends at its
 // highest point (g73_case_generator.cpp), so each pass's rapid back to A stays above the part.
 std::string g73Program(const FuzzCase& c) {
-  std::vector<std::pair<long, long>> points;
-  long along = c.startAlong, depth = c.b, top = c.b, bottom = c.b;
-  for (const FuzzSegment& s : c.segments) {
-    along -= s.along;
-    depth += s.up;
-    points.push_back({along, depth});
-    top = std::max(top, depth);
-    bottom = std::min(bottom, depth);
-  }
+  const ShapeWalk walk = walkShape(c);
+  const std::vector<std::pair<long, long>>& points = walk.points;
+  const long top = walk.top, bottom = walk.bottom;
   const long aAlong = c.startAlong + c.reliefCut + c.allowanceCut + c.startAhead;
   const long aDepth = top + c.reliefDepth + c.allowanceDepth + c.startAbove;
   const ProgramCodes& codes = programCodes(CycleFormat::FanucTwoBlocks);
@@ -570,16 +588,9 @@ std::string fuzzProgram(const FuzzCase& c) {
   if (c.cycle == 73) return g73Program(c);
   // The frame's points: B, then each segment's end; C is the highest.
   // Block ns moves the depth axis only (W0 / U0 in type II), so B stands at A's cut coordinate.
-  std::vector<std::pair<long, long>> points;
-  long along = c.startAlong, depth = c.b, top = c.b, bottom = c.b, behind = c.startAlong;
-  for (const FuzzSegment& s : c.segments) {
-    along -= s.along;
-    depth += s.up;
-    points.push_back({along, depth});
-    top = std::max(top, depth);
-    bottom = std::min(bottom, depth);
-    behind = std::min(behind, along);
-  }
+  const ShapeWalk walk = walkShape(c);
+  const std::vector<std::pair<long, long>>& points = walk.points;
+  const long top = walk.top, bottom = walk.bottom, behind = walk.behind;
   const long startDepth = top + c.startAbove, startAlong = c.startAlong;
   const ProgramCodes& codes = programCodes(c.format);
   Placement place{c, codes};
