@@ -151,23 +151,21 @@ class SpecReader {
   void readMotionOutsideCycles(std::size_t i, const Block& b) {
     const AxisWordsMean meaning = axisWordsMeaning(b, state_.gCodeSystem);
     if (huazhongShape_) requireFollowableAfterHuazhong(b, meaning);
-    if (axisWordsMoveTheTool(meaning)) {
-      if (!out_.cycles.empty()) {
-        out_.motionAfterCycles = true;
-      } else if (known_.known(state_.axes().first) && known_.known(state_.axes().second)) {
-        out_.motionBeforeCycles = true;
-      }
-    }
-    const bool drawnBeforeCycles = axisWordsMoveTheTool(meaning) && out_.motionBeforeCycles && out_.cycles.empty();
+    const bool moves = axisWordsMoveTheTool(meaning), beforeCycles = out_.cycles.empty();
+    if (moves && !beforeCycles) out_.motionAfterCycles = true;
+    // Before the cycles, the path starts at the first known position; from then on every move is drawn.
+    const PlaneAxes axes = state_.axes();
+    if (moves && beforeCycles && known_.known(axes.first) && known_.known(axes.second)) out_.motionBeforeCycles = true;
     followKnownAxes(known_, b, meaning, state_);
     const Point before = state_.planePoint();
     state_.position = positionAfterBlock(b, state_);
-    if (drawnBeforeCycles) {
+    if (!moves) return;
+    if (beforeCycles && out_.motionBeforeCycles) {
       if (auto m = programMove(b, before)) out_.movesBeforeCycles.push_back(*m);
-    } else if (afterCycles_ && axisWordsMoveTheTool(meaning)) {
+    } else if (afterCycles_) {
       if (auto m = programMove(b, before)) out_.movesAfterCycles.push_back(*m);
     }
-    if (huazhongShape_ && axisWordsMoveTheTool(meaning)) recordRunAfterHuazhong(i, b, before);
+    if (huazhongShape_) recordRunAfterHuazhong(i, b, before);
   }
 
   // A cycle block (G70, or G71/G72 with P/Q) ends the moves after the cycles read so far: they were

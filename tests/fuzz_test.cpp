@@ -179,9 +179,9 @@ TEST(FuzzGenerator, AFormatDrawChangesOnlyWhatTheFormatWrites) {
   for (CycleFormat f : kAllFormats) EXPECT_GT(seen[f], 120) << cycleFormatName(f);
 }
 
-// Hand-read blocks: Δd 1.25 mm is D1250 (least input increments, G71.FS10.D) with FCV = 1 and e in
-// 5133; the Huazhong block carries U(Δd) R(e) and the allowances as X (diameter) and Z.
-TEST(FuzzGenerator, WritesEachFormatsCycleBlock) {
+// One line of the shape, Δd 1.25 mm, e 0.3 mm, allowances Δu/2 0.2 and Δw 0.05 mm, with G70: the
+// case whose cycle blocks the format tests read by hand.
+FuzzCase oneLineCase() {
   FuzzCase c;
   c.segments = {{FuzzSegment::Line, 500, 300}};
   c.b = 1000;
@@ -191,6 +191,13 @@ TEST(FuzzGenerator, WritesEachFormatsCycleBlock) {
   c.allowanceDepth = 20;
   c.allowanceCut = 5;
   c.finish = true;
+  return c;
+}
+
+// Hand-read blocks: Δd 1.25 mm is D1250 (least input increments, G71.FS10.D) with FCV = 1 and e in
+// 5133; the Huazhong block carries U(Δd) R(e) and the allowances as X (diameter) and Z.
+TEST(FuzzGenerator, WritesEachFormatsCycleBlock) {
+  FuzzCase c = oneLineCase();
   EXPECT_NE(fuzzProgram(c).find("G71 U1.25 R0.3;\nG71 P10 Q20 U0.4 W0.05 F0.2;\n"), std::string::npos)
       << fuzzProgram(c);
   c.format = CycleFormat::Series10OneBlock;
@@ -211,15 +218,7 @@ TEST(FuzzGenerator, WritesEachFormatsCycleBlock) {
 // Haas: D in mm with a decimal point (D1.25, D3.), R1 for type II, e in 5133, G42 in block ns;
 // systems B/C: G90 G95 first, the two blocks (system C: G73/G74, G72 finishing), 3401#6 / #7.
 TEST(FuzzGenerator, WritesTheHaasBlockAndTheProgramsInSystemsBAndC) {
-  FuzzCase c;
-  c.segments = {{FuzzSegment::Line, 500, 300}};
-  c.b = 1000;
-  c.startAbove = 100;
-  c.depthOfCut = 125;
-  c.retract = 30;
-  c.allowanceDepth = 20;
-  c.allowanceCut = 5;
-  c.finish = true;
+  FuzzCase c = oneLineCase();
   c.format = CycleFormat::HaasOneBlock;
   c.profile = "haas";
   EXPECT_NE(fuzzProgram(c).find(";\nG71 P10 Q20 U0.4 W0.05 D1.25 F0.2;\nN10 G00 X2;"), std::string::npos)
