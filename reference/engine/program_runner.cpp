@@ -284,14 +284,12 @@ class ProgramRunner {
 
   void requireKnownForIncrementalWords(const Block& b) const {
     if (const char axis = incrementalWordOnUnknownAxis(b)) {
-      const std::string word = b.has(incrementalAddress(axis)) ? std::string(1, incrementalAddress(axis))
+      const std::string word = b.has(incrementalAddressOf(axis)) ? std::string(1, incrementalAddressOf(axis))
                                                                 : std::string("G91 ") + axis;
       throw NotSupported(b.line, known_.describe(axis) + " (" + word + " moves from it); position the tool with an absolute " +
                                      axis + " word");
     }
   }
-
-  static char incrementalAddress(char axis) { return axis == 'X' ? 'U' : axis == 'Y' ? 'V' : 'W'; }
 
   // A positioning or cutting block outside the cycles (PROG.WHOLE, PROG.GCODES: with any other modal
   // codes in the block, G54–G59 and G80 included): once the path has started, it is a move.

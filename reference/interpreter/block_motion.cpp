@@ -40,6 +40,13 @@ AxisPosition targetPosition(const Block& b, const ModalState& s) {
   return p;
 }
 
+char incrementalAddressOf(char axis) {
+  for (const AxisLetters& a : kAxes) {
+    if (a.axis == axis) return a.incremental;
+  }
+  return 0;
+}
+
 bool setsAxisAbsolutely(const Block& b, char axis, const ModalState& s) { return !s.incremental && b.has(axis); }
 
 bool movesAxisIncrementally(const Block& b, char axis, const ModalState& s) {
@@ -82,19 +89,17 @@ AxisPosition positionAfterBlock(const Block& b, const ModalState& s) {
 }
 
 void followKnownAxes(KnownPosition& known, const Block& b, AxisWordsMean meaning, const ModalState& s) {
-  static constexpr char kAxes[] = {'X', 'Y', 'Z'};
-  static constexpr char kIncrements[] = {'U', 'V', 'W'};
   const bool toReference = meaning == AxisWordsMean::ReferenceReturn;
   if (toReference || meaning == AxisWordsMean::MachineCoordinates) {
     const std::string command = !toReference ? "G53" : b.hasG(300) ? "G30" : "G28";
-    for (int i = 0; i < 3; ++i) {
-      if (b.has(kAxes[i]) || b.has(kIncrements[i])) known.forget(kAxes[i], {b.line, command, toReference});
+    for (const AxisLetters& a : kAxes) {
+      if (b.has(a.absolute) || b.has(a.incremental)) known.forget(a.axis, {b.line, command, toReference});
     }
     return;
   }
   if (!axisWordsMoveTheTool(meaning) && meaning != AxisWordsMean::CoordinateSetting) return;
-  for (const char axis : kAxes) {
-    if (setsAxisAbsolutely(b, axis, s)) known.learn(axis);
+  for (const AxisLetters& a : kAxes) {
+    if (setsAxisAbsolutely(b, a.axis, s)) known.learn(a.axis);
   }
 }
 

@@ -20,6 +20,9 @@ bool hasAxisWord(const Block& b);
 // incremental under G91 (PROG.GSYS.INCREMENTAL); U/V/W incremental.
 AxisPosition targetPosition(const Block& b, const ModalState& s);
 
+// The incremental address of an axis in G code system A: X → U, Y → V, Z → W (0 for another letter).
+char incrementalAddressOf(char axis);
+
 // Whether the block gives the axis ('X', 'Y', 'Z') an absolute coordinate (X under G90 or in
 // system A), or moves it by an increment (U, or X under G91).
 bool setsAxisAbsolutely(const Block& b, char axis, const ModalState& s);
