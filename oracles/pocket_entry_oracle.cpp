@@ -65,7 +65,8 @@ class PocketEntryOracle : public Oracle {
 }  // namespace
 
 bool judgesPocketEntries(const CycleSpec& c, const JudgeSettings& settings) {
-  return c.typeII && c.clearance > settings.tolerance();
+  // G73 has no pockets to enter: its passes follow the whole shape from A (G73.APPROACH).
+  return !c.patternRepeating() && c.typeII && c.clearance > settings.tolerance();
 }
 
 std::vector<Segment> pocketEntryProbes(const JudgeInput& in, const CycleSpec& c, std::size_t i) {
