@@ -35,7 +35,8 @@ struct MaterialReplay {
   // Per move: material the pocket-entry oracle's continuations of a rapid cross (pocketEntryProbes,
   // oracles.h); empty unless that oracle judges the cycle.
   std::vector<Crossing> pocketEntryCrossings;
-  // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
+  // Per move: the layer a feed removes where it may be thicker than the layer limit (Δd, or G73's
+  // division step: CycleSpec::layerLimit) — nothing for the feeds a
   // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).
   std::vector<std::optional<Thickest>> removedThickness;
   std::optional<MaterialModel> model;  // after the last move (always set by replayMaterial)

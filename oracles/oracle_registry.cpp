@@ -48,7 +48,9 @@ bool isShiftedG73Head(const JudgeInput& in, const CycleSpec& c, std::size_t i, d
   Segment ends;  // where the shifted B may stand: B + (Δw, Δu/2) + t·(Δk, Δi), t ∈ [0, 1]
   ends.from = b;
   ends.to = b + c.relief;
-  return distance(to - from, head.to - head.from) <= tol && distanceToSegment(to, ends) <= tol;
+  // G70.EX, G73.G70: G70 after G73 follows block ns to B itself.
+  const bool g70Head = in.program.hasFinishingCycle && distance(to, head.to) <= tol;
+  return distance(to - from, head.to - head.from) <= tol && (distanceToSegment(to, ends) <= tol || g70Head);
 }
 
 bool runsOnProfile(const JudgeInput& in, const CycleSpec& c, const std::vector<Segment>& rough, std::size_t i,

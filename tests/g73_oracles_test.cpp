@@ -203,6 +203,16 @@ TEST(G73Judging, AG00HeadIsARapidWhereverItMeetsTheBlank) {
   EXPECT_TRUE(reports(judged(program, fed), "feeds"));
 }
 
+// G70.EX after G73 with a G00 block ns: G70's rapid to B passes through the allowance in front of
+// it (Δw = 0.1 here) as programmed; not a rapid through material the engine chose.
+TEST(G73Judging, G70sG00HeadAfterG73) {
+  const std::string program =
+      "G00 X70 Z5;\nG73 U4 W3 R5;\nG73 P10 Q11 U0.2 W0.1 F0.1;\nN10 G00 X50 Z0;\nG3 X40 Z-15 R22;\nG2 Z-45 R25;\n"
+      "N11 G1 Z-50;\nG70 P10 Q11;\n";
+  const std::vector<Finding> findings = judged(program, planned(program));
+  EXPECT_TRUE(findings.empty()) << findingsText(findings);
+}
+
 // The oracles that do not apply to G73 skip it: no pass levels, no 45° retract, no pocket entry.
 TEST(G73Judging, PassLevelsRetractAndPocketEntryDoNotJudgeG73) {
   Toolpath path = planned(seed004("G73U5W0R3;"));
