@@ -213,6 +213,16 @@ TEST(G73Judging, G70sG00HeadAfterG73) {
   EXPECT_TRUE(findings.empty()) << findingsText(findings);
 }
 
+// Each oracle declares whether it judges G73: all but pass-levels, retract and pocket-entry.
+TEST(G73Judging, EachOracleDeclaresWhetherItJudgesG73) {
+  for (const auto& oracle : allOracles()) {
+    const bool skips = oracle->id() == "pass-levels" || oracle->id() == "retract" || oracle->id() == "pocket-entry";
+    EXPECT_EQ(oracle->judges(CycleFamily::G73), !skips) << oracle->id();
+    EXPECT_TRUE(oracle->judges(CycleFamily::G71)) << oracle->id();
+    EXPECT_TRUE(oracle->judges(CycleFamily::G72)) << oracle->id();
+  }
+}
+
 // The oracles that do not apply to G73 skip it: no pass levels, no 45° retract, no pocket entry.
 TEST(G73Judging, PassLevelsRetractAndPocketEntryDoNotJudgeG73) {
   Toolpath path = planned(seed004("G73U5W0R3;"));
