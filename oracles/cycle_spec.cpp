@@ -4,6 +4,7 @@
 // checks would agree with it by construction.
 #include "oracles/cycle_spec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -277,7 +278,8 @@ class SpecReader {
     if (auto bad = readG73Series10Words(b)) return bad;
     if (c.feed <= 0) return forbidden("PS0011", b.line, "no cutting feed");
     c.relief = {params_.get("5136"), params_.get("5135")};
-    c.divisions = static_cast<int>(params_.get("5137"));
+    const double divisions = params_.get("5137");
+    c.divisions = !(divisions >= 1) ? 0 : static_cast<int>(std::min(divisions, 1e9));  // 5137 may be set to anything
     if (c.divisions < 1) return forbidden("PS0062", b.line, "the number of divisions d of G73 is 0 (5137)");
     if (ns == kNotFound || nf == kNotFound || nf < ns) return forbidden("PS0063", b.line, "block P or Q not found");
     return std::nullopt;
