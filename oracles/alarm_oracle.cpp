@@ -13,7 +13,8 @@ class AlarmOracle : public Oracle {
  public:
   std::string id() const override { return "alarm"; }
   std::vector<std::string> rules() const override {
-    return {"G71.T1.ALARM", "G71.T2.MONO", "G72.T1.MONO", "G71.HEAD.G0G1", "G71.HEAD.NOX", "G71.LIMIT.HEIGHT", "G72.RANGE"};
+    return {"G71.T1.ALARM", "G71.T2.MONO", "G72.T1.MONO", "G71.HEAD.G0G1", "G71.HEAD.NOX", "G71.LIMIT.HEIGHT", "G72.RANGE",
+            "G73.ALARMS", "G73.D.RANGE", "G73.FS10.FMT", "G73.HEAD"};
   }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {

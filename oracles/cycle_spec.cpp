@@ -4,6 +4,7 @@
 // checks would agree with it by construction.
 #include "oracles/cycle_spec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -108,6 +109,13 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
   return std::nullopt;
 }
 
+// G73.HEAD, G73.SHAPE: block ns commands G00 or G01 (PS0065); it need not be parallel to an axis,
+// and the shape need not be monotone (no PS0064/PS0329, no G71.LIMIT.HEIGHT).
+std::optional<Alarm> checkG73Head(const Block& head) {
+  if (!head.hasG(0) && !head.hasG(10)) return forbidden("PS0065", head.line, "block ns has no G00/G01");
+  return std::nullopt;
+}
+
 class SpecReader {
  public:
   SpecReader(const Program& program, const Profile& profile, const MachineParams& params, const ToolOffset& tool)
@@ -122,18 +130,24 @@ class SpecReader {
       // PROG.GSYS.*: the cycles by their function (system C writes G72/G73/G74).
       const GCodeSystem system = state_.gCodeSystem;
       const bool g70 = hasGFunction(b, 700, system), g71 = hasGFunction(b, 710, system),
-                 g72 = hasGFunction(b, 720, system);
-      if (hasGFunction(b, 730, system)) refuseToJudgeG73(b);
-      if ((g70 || g71 || g72) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
+                 g72 = hasGFunction(b, 720, system), g73 = hasGFunction(b, 730, system);
+      if (g73) refuseOtherG73Dialects(b);
+      const bool roughing = g71 || g72 || g73;
+      if ((g70 || roughing) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
       if (g70) {
         readFinishingFeeds(b);
         checkFinishingCompensation(b);
       }
-      if (g70 || ((g71 || g72) && (b.has('P') || b.has('Q')))) startMovesAfterCycles();
-      if ((g71 || g72) && !b.has('P') && !b.has('Q') && !(g71 && huazhong())) {
+      if (g70 || (roughing && (b.has('P') || b.has('Q')))) startMovesAfterCycles();
+      if (g73 && !b.has('P') && !b.has('Q')) {
+        readG73FirstBlock(b);
+      } else if (g73) {
+        i = readCycle(i, CycleFamily::G73);
+        continue;
+      } else if ((g71 || g72) && !b.has('P') && !b.has('Q') && !(g71 && huazhong())) {
         readFirstBlock(b, g71);
       } else if (g71 || g72) {
-        i = readCycle(i, g71 ? "G71" : "G72");
+        i = readCycle(i, g71 ? CycleFamily::G71 : CycleFamily::G72);
         continue;
       } else if (!g70 && hasAxisWord(b)) {
         readMotionOutsideCycles(i, b);
@@ -189,12 +203,84 @@ class SpecReader {
     return m;
   }
 
-  // G73.*: the oracles know axis-parallel roughing only; G73's stock is the near-net blank and its
-  // passes follow the whole shape. Judging its path as G71's would give false findings.
-  [[noreturn]] static void refuseToJudgeG73(const Block& b) {
-    throw NotSupported(b.line, "the oracles do not judge G73 yet (the pattern repeating cycle): its passes and "
-                               "blank are not modelled by them; compare an engine with the reference instead "
-                               "(cyclecert diff, or check's hand-derived toolpath expectations)");
+  // G73.DIALECTS: the Huazhong and Haas G73 are other formats, not in cyclecert's sources: the
+  // oracles do not read them (nor does the reference plan them).
+  void refuseOtherG73Dialects(const Block& b) const {
+    if (profile_.roughingFormat == RoughingBlockFormat::FanucTwoBlocks) return;
+    throw NotSupported(b.line, "the oracles do not read G73 of the " + profile_.name +
+                                   " profile (G73.DIALECTS: its format is not in cyclecert's sources)");
+  }
+
+  // G73.FMT, G73.PARAMS, G73.D.RANGE: the first G73 block's U (Δi, the plane's 2nd-axis
+  // incremental address, a radius value), W (Δk, the 1st's) and R (d) are modal: they overwrite
+  // parameters 5135/5136/5137. U/W outside the address table, or an R that is no whole number
+  // ≥ 1, is the alarm the next G73 cycle stops with.
+  void readG73FirstBlock(const Block& b) {
+    const PlaneAxes axes = state_.axes();
+    try {
+      for (char letter : {axes.secondInc, axes.firstInc}) {
+        if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::Allowance, state_.inch);
+      }
+    } catch (const CycleAlarm& a) {
+      firstBlockAlarm_ = a.alarm();
+      return;
+    }
+    const Word* r = b.find('R');
+    if (r && r->value < 1) {
+      firstBlockAlarm_ = forbidden("PS0062", b.line, "the number of divisions d of G73 must be at least 1");
+      return;
+    }
+    if (r && (r->value != std::floor(r->value) || r->value > 99'999'999)) {
+      firstBlockAlarm_ = forbidden("PS0003", b.line, "d of G73 is not a whole number within 1…99999999");
+      return;
+    }
+    if (const Word* di = b.find(axes.secondInc)) params_.set("5135", di->value * state_.unitScale());
+    if (const Word* dk = b.find(axes.firstInc)) params_.set("5136", dk->value * state_.unitScale());
+    if (r) params_.set("5137", r->value);
+  }
+
+  // G73.FS10.FMT: with FCV = 1 the block with P and Q may give I (Δi), K (Δk) and D (d, no decimal
+  // point, ≥ 1), which write 5135/5136/5137; with FCV = 0 any of them is PS0009.
+  std::optional<Alarm> readG73Series10Words(const Block& b) {
+    if (!params_.bit("FCV")) {
+      for (char letter : {'I', 'K', 'D'}) {
+        if (b.find(letter)) return forbidden("PS0009", b.line, std::string(1, letter) + " in a G73 P/Q block needs FCV = 1");
+      }
+      return std::nullopt;
+    }
+    try {
+      for (char letter : {'I', 'K'}) {
+        if (const Word* w = b.find(letter)) checkCycleAddress(*w, CycleAddress::Allowance, state_.inch);
+      }
+    } catch (const CycleAlarm& a) {
+      return a.alarm();
+    }
+    const Word* d = b.find('D');
+    if (d && d->hasDecimalPoint) return forbidden("PS0007", b.line, "D of the Series 10/11 G73 has a decimal point");
+    if (d && d->value < 1) return forbidden("PS0062", b.line, "D, the number of divisions, is below 1");
+    if (d && d->value > 99'999'999) return forbidden("PS0003", b.line, "D has more than 8 digits");
+    if (const Word* i = b.find('I')) params_.set("5135", i->value * state_.unitScale());
+    if (const Word* k = b.find('K')) params_.set("5136", k->value * state_.unitScale());
+    if (d) params_.set("5137", d->value);
+    return std::nullopt;
+  }
+
+  // G73.FMT, G73.ALARMS, G73.D.RANGE, G73.FS10.FMT: the block with P and Q, in the order the
+  // documented checks come: P/Q present (PS0061), the address table, the Series 10/11 words, the
+  // feed (PS0011), d ≥ 1 (PS0062, from 5137), the blocks P and Q name (PS0063).
+  std::optional<Alarm> g73BlockAlarm(const Block& b, CycleSpec& c, std::size_t ns, std::size_t nf) {
+    const PlaneAxes axes = state_.axes();
+    if (firstBlockAlarm_) return firstBlockAlarm_;
+    if (!b.has('P') || !b.has('Q')) return forbidden("PS0061", b.line, "P or Q missing");
+    if (auto bad = rangeAlarm(b, axes.firstInc, axes.secondInc)) return bad;
+    if (auto bad = readG73Series10Words(b)) return bad;
+    if (c.feed <= 0) return forbidden("PS0011", b.line, "no cutting feed");
+    c.relief = {params_.get("5136"), params_.get("5135")};
+    const double divisions = params_.get("5137");
+    c.divisions = !(divisions >= 1) ? 0 : static_cast<int>(std::min(divisions, 1e9));  // 5137 may be set to anything
+    if (c.divisions < 1) return forbidden("PS0062", b.line, "the number of divisions d of G73 is 0 (5137)");
+    if (ns == kNotFound || nf == kNotFound || nf < ns) return forbidden("PS0063", b.line, "block P or Q not found");
+    return std::nullopt;
   }
 
   // G70.EX: the F words of the finishing shape apply in G70.
@@ -389,17 +475,27 @@ class SpecReader {
     out_.runAfterHuazhong.push_back(m);
   }
 
-  std::size_t readCycle(std::size_t index, const std::string& code) {
+  static std::string codeOf(CycleFamily f) {
+    switch (f) {
+      case CycleFamily::G71: return "G71";
+      case CycleFamily::G72: return "G72";
+      case CycleFamily::G73: return "G73";
+    }
+    return "G71";
+  }
+
+  std::size_t readCycle(std::size_t index, CycleFamily family) {
     const Block& b = program_.blocks[index];
     const PlaneAxes axes = state_.axes();
     // HNC.G71.FMT: X = Δx (diameter) and Z = Δz allowances instead of U and W; Δd and r in the block.
-    const bool oneBlock = huazhong() && code == "G71";
+    const bool oneBlock = huazhong() && family == CycleFamily::G71;
     const char allowanceFirst = oneBlock ? 'Z' : axes.firstInc, allowanceSecond = oneBlock ? 'X' : axes.secondInc;
     std::optional<Alarm> huazhongAlarm;
     if (oneBlock && (b.has('P') || b.has('Q'))) huazhongAlarm = readHuazhongDepth(b);
     CycleSpec c;
     haasTypeII_ = false;
-    c.code = code;
+    c.code = codeOf(family);
+    c.family = family;
     c.line = b.line;
     c.start = state_.planePoint();
     c.feed = state_.feed;
@@ -412,7 +508,9 @@ class SpecReader {
     const Word* p = b.find('P');
     const Word* q = b.find('Q');
     const std::size_t ns = blockOfSequence(p), nf = blockOfSequence(q);
-    if (firstBlockAlarm_ && !oneBlock) {
+    if (family == CycleFamily::G73) {
+      c.forbiddenBy = g73BlockAlarm(b, c, ns, nf);
+    } else if (firstBlockAlarm_ && !oneBlock) {
       c.forbiddenBy = firstBlockAlarm_;
     } else if (huazhongAlarm) {
       c.forbiddenBy = huazhongAlarm;
@@ -452,11 +550,15 @@ class SpecReader {
     ModalState s = state_;
     const Block& head = program_.blocks[ns];
     const PlaneAxes axes = s.axes();
-    const bool g71 = c.code == "G71";
+    const bool g71 = c.family != CycleFamily::G72;
     const char depthAbs = g71 ? axes.second : axes.first, depthInc = g71 ? axes.secondInc : axes.firstInc;
     const char cutAbs = g71 ? axes.first : axes.second, cutInc = g71 ? axes.firstInc : axes.secondInc;
-    c.typeII = head.has(cutAbs) || head.has(cutInc) || haasTypeII_;  // HAAS.G71.R1
+    // HAAS.G71.R1; G73 has no types: its passes follow the whole shape (G73.SHAPE).
+    c.typeII = !c.patternRepeating() && (head.has(cutAbs) || head.has(cutInc) || haasTypeII_);
     c.headIsRapid = !head.hasG(10);
+    // G73.HEAD: block ns without G00/G01 is refused before the shape is read (its G02/G03 would
+    // make the next blocks arcs).
+    if (c.patternRepeating() && (c.forbiddenBy = checkG73Head(head))) return;
     for (std::size_t i = ns; i <= nf; ++i) {
       const Block& b = program_.blocks[i];
       if (auto bad = checkShapeCommands(b, s.gCodeSystem, profile_.toleratesTnrcInShape ||
@@ -480,10 +582,10 @@ class SpecReader {
       s.position = targetPosition(b, s);
     }
     if (c.shape.empty()) c.shape.push_back(Segment{SegmentKind::Line, c.start, c.start, {}, head.line});
-    c.semiFinish = !params_.bit(c.typeII ? "RF2" : "RF1");
+    c.semiFinish = !c.patternRepeating() && !params_.bit(c.typeII ? "RF2" : "RF1");
     c.noRepeatedPath = params_.bit("NSP");
     compensate(c, profile_.compensatesTnrcInShape ? tnrcOfBlock(head) : 40);
-    if (!c.forbiddenBy) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_,
+    if (!c.forbiddenBy && !c.patternRepeating()) c.forbiddenBy = checkShape(c, head, head.has(depthAbs) || head.has(depthInc), params_,
                                            !huazhong());  // seed 003 has no LIMIT.HEIGHT (its example 2 ends below A)
   }
 
@@ -536,6 +638,11 @@ int CycleSpec::cutDirection() const {
   const Point from = toFrame(*this, typeII ? start : shape.front().to), to = toFrame(*this, shape.back().to);
   const int c = signOf(to.z - from.z);
   return c != 0 ? c : -1;
+}
+
+double CycleSpec::divisionStep() const {
+  const double total = std::hypot(relief.z, relief.x);
+  return divisions > 1 ? total / (divisions - 1) : total;
 }
 
 std::vector<Segment> CycleSpec::roughProfile() const {

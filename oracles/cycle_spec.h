@@ -15,8 +15,14 @@
 
 namespace cyclecert {
 
+// The roughing cycle's family: how its passes are laid out and which rules they follow. G71 and G72
+// rough axis-parallel layers Δd apart (along z and x); G73 follows the whole finish shape d times,
+// shifted by shares of the relief (Δi, Δk) (G73.PASS.SHIFT).
+enum class CycleFamily { G71, G72, G73 };
+
 struct CycleSpec {
-  std::string code;              // "G71" or "G72"
+  std::string code;              // "G71", "G72" or "G73", for messages (the family decides)
+  CycleFamily family = CycleFamily::G71;
   int line = 0;                  // the block with P and Q
   bool typeII = false;
   Point start;                   // A, plane coordinates (z = 1st axis, x = 2nd axis, radius)
@@ -30,8 +36,21 @@ struct CycleSpec {
   bool noRepeatedPath = false;   // NSP: the second A'→B' of type II with pockets is a rapid
   bool headIsRapid = true;       // block ns is G00 (else G01): infeeds are rapids, else feeds (G72.STEP2)
   double clearance = 0;          // 5134: type II's rapid approach into a pocket stops this short (G71.T2.POCKET.EXIT)
-  // The frame: G71 cuts along z (the plane's 1st axis), G72 along x.
-  bool cutsAlongZ() const { return code != "G72"; }
+  // G73 (G73.FMT, G73.PARAMS): the total relief (Δk along z, Δi along x, radius; signed), from the
+  // first G73 block's W/U (or the Series 10/11 block's K/I) or parameters 5136/5135, and d, the
+  // number of divisions (R, D or 5137).
+  Point relief;
+  int divisions = 0;
+  bool patternRepeating() const { return family == CycleFamily::G73; }
+  // G73.PASS.SHIFT, G73.D1: how far apart two passes stand — the shift (Δk, Δi)/(d − 1) between
+  // consecutive passes, as a length (the whole relief for d = 1, whose one pass removes it all).
+  double divisionStep() const;
+  // depth-per-pass: the thickest layer one feed may remove — Δd for G71/G72 (along the depth axis),
+  // the division step for G73 (along the relief, the direction its material is measured in).
+  double layerLimit() const { return patternRepeating() ? divisionStep() : depthOfCut; }
+  // The frame: G71 (and G73, whose relief sets its material's frame) cuts along z (the plane's 1st
+  // axis), G72 along x.
+  bool cutsAlongZ() const { return family != CycleFamily::G72; }
   // Sign of the infeed on the depth axis (from A towards B) and of the cut on the cut axis.
   int depthDirection() const;
   int cutDirection() const;
@@ -83,7 +102,7 @@ struct ProgramSpec {
   std::optional<Alarm> firstAlarm() const;
 };
 
-// Reads the program's G71/G72 cycles. Throws ParseError for malformed text and std::runtime_error
+// Reads the program's G71/G72/G73 cycles. Throws ParseError for malformed text and std::runtime_error
 // for programs the oracles cannot read (with the reason).
 ProgramSpec readProgramSpec(const Program& program, const Profile& profile, const MachineParams& params,
                             const ToolOffset& tool, bool mdi = false);

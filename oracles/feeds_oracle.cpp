@@ -13,13 +13,19 @@ namespace {
 class FeedsOracle : public Oracle {
  public:
   std::string id() const override { return "feeds"; }
-  std::vector<std::string> rules() const override { return {"G71.FST", "G72.FST", "G70.EX", "G72.STEP2", "G71.HEAD.G0G1"}; }
+  std::vector<std::string> rules() const override {
+    return {"G71.FST", "G72.FST", "G70.EX", "G72.STEP2", "G71.HEAD.G0G1", "G73.PASS", "G73.HEAD"};
+  }
 
   // Rapids as rapids: the infeeds along the head block (at A' on the cut axis, towards the part)
   // are rapids after a G00 head block and cutting feed after a G01 one (G72.STEP2, G71.HEAD.G0G1).
   void judgeInfeeds(const JudgeInput& in, std::vector<Finding>& out) const {
     const CycleSpec* c = in.program.singleRoughingCycle();
     if (!c || (c->typeII && c->noRepeatedPath)) return;  // G71.NSP makes the second A'→B' a rapid
+    if (c->patternRepeating()) {
+      judgeG73Heads(in, *c, out);
+      return;
+    }
     const double tol = in.settings.tolerance();
     // On the head line itself: engines that round print 4 decimals at worst. (The whole tolerance
     // would take in the first µm of a steep wall after B, where a pocket entry may rapid.)
@@ -42,6 +48,18 @@ class FeedsOracle : public Oracle {
       out.push_back(finding(*this, i, std::string("an infeed along the head block is a ") +
                                           (c->headIsRapid ? "cutting feed, but block ns is G00: it must be a rapid"
                                                           : "rapid, but block ns is G01: it must be at the cutting feed")));
+    }
+  }
+
+  // G73.HEAD: block ns, shifted for each pass, moves as programmed — a rapid after G00, cutting feed
+  // after G01 (the passes' other moves run at F: G73.PASS, judged with every feed below).
+  void judgeG73Heads(const JudgeInput& in, const CycleSpec& c, std::vector<Finding>& out) const {
+    const double tol = in.settings.tolerance();
+    for (std::size_t i = 0; i < in.path.moves.size(); ++i) {
+      if (!isShiftedG73Head(in, c, i, tol) || (in.path.moves[i].kind == MoveKind::Rapid) == c.headIsRapid) continue;
+      out.push_back(finding(*this, i, std::string("block ns of G73, shifted for a pass, is a ") +
+                                          (c.headIsRapid ? "cutting feed, but block ns is G00: it must be a rapid"
+                                                         : "rapid, but block ns is G01: it must be at the cutting feed")));
     }
   }
 

@@ -63,7 +63,9 @@ bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance
 class NoGougeOracle : public Oracle {
  public:
   std::string id() const override { return "no-gouge"; }
-  std::vector<std::string> rules() const override { return {"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD"}; }
+  std::vector<std::string> rules() const override {
+    return {"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD", "G73.PASS.SHIFT"};
+  }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
@@ -81,18 +83,25 @@ class NoGougeOracle : public Oracle {
   }
 };
 
-// rapids-in-air: no rapid crosses material that is still there at that moment.
+// rapids-in-air: no rapid crosses material that is still there at that moment. G73: the approach to
+// each pass and the return to A (G73.APPROACH, G73.RETURN) cross none of the blank still standing;
+// block ns, when it is G00, is followed as programmed (G73.HEAD) — where it meets the blank is the
+// program's choice, not the engine's, so it is not judged here (feeds judges that it is a rapid).
 class RapidsInAirOracle : public Oracle {
  public:
   std::string id() const override { return "rapids-in-air"; }
-  std::vector<std::string> rules() const override { return {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN"}; }
+  std::vector<std::string> rules() const override {
+    return {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN", "G73.APPROACH", "G73.RETURN"};
+  }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
+    const bool programmedRapidHead = r->cycle->patternRepeating() && r->cycle->headIsRapid;
     for (std::size_t i = 0; i < r->rapidCrossings.size(); ++i) {
       const Crossing& c = r->rapidCrossings[i];
       if (c.length <= 0) continue;
+      if (programmedRapidHead && isShiftedG73Head(in, *r->cycle, i, tolerance(in))) continue;
       std::ostringstream m;
       m << "rapid move " << i << " crosses " << c.length << " mm of material still standing";
       Finding f = finding(*this, i, m.str());
@@ -104,16 +113,19 @@ class RapidsInAirOracle : public Oracle {
 };
 
 // complete: what remains beyond the target after the last move is no thicker than the rules allow:
-// Δd without the semi-finish pass, the tolerance with it (or after G70).
+// Δd without the semi-finish pass, the tolerance with it (or after G70). G73: the tolerance — its
+// last pass runs at the allowance (G73.PASS.SHIFT, G73.D1), or G70 at the shape.
 class CompleteOracle : public Oracle {
  public:
   std::string id() const override { return "complete"; }
-  std::vector<std::string> rules() const override { return {"G71.T1.SEMIFIN", "G72.STEP7", "G71.T2.RETURN", "G71.T2.VALLEY"}; }
+  std::vector<std::string> rules() const override {
+    return {"G71.T1.SEMIFIN", "G72.STEP7", "G71.T2.RETURN", "G71.T2.VALLEY", "G73.PASS.SHIFT", "G73.D1"};
+  }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
-    const bool finished = r->cycle->semiFinish || in.program.hasFinishingCycle;
+    const bool finished = r->cycle->semiFinish || r->cycle->patternRepeating() || in.program.hasFinishingCycle;
     const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
     if (!leftoverMayExceed(*r, allowed, tolerance(in))) return;
     const BgRegion left = leftover(*r, tolerance(in));
@@ -135,21 +147,26 @@ class CompleteOracle : public Oracle {
   }
 };
 
-// depth-per-pass: no feed removes a layer thicker than Δd (measured along the depth axis).
+// depth-per-pass: no feed removes a layer thicker than Δd (measured along the depth axis); G73: than
+// the division step |(Δk, Δi)|/(d − 1) (the whole relief for d = 1), measured along the relief
+// (CycleSpec::layerLimit; the material's frame, awayFrom).
 class DepthPerPassOracle : public Oracle {
  public:
   std::string id() const override { return "depth-per-pass"; }
-  std::vector<std::string> rules() const override { return {"G71.OP", "G72.DD", "G71.DD.MODAL"}; }
+  std::vector<std::string> rules() const override {
+    return {"G71.OP", "G72.DD", "G71.DD.MODAL", "G73.PASS.SHIFT", "G73.D1", "G73.PARAMS"};
+  }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
-    const double allowed = r->cycle->depthOfCut + tolerance(in);
+    const double allowed = r->cycle->layerLimit() + tolerance(in);
     for (std::size_t i = 0; i < r->removedThickness.size(); ++i) {
       const auto& t = r->removedThickness[i];
       if (!t || t->thickness <= allowed) continue;
       std::ostringstream m;
-      m << "move " << i << " removes a layer " << t->thickness << " mm thick; Δd = " << r->cycle->depthOfCut;
+      m << "move " << i << " removes a layer " << t->thickness << " mm thick; "
+        << (r->cycle->patternRepeating() ? "the G73 division step is " : "Δd = ") << r->cycle->layerLimit();
       Finding f = finding(*this, i, m.str());
       f.witness.segment = in.path.segment(i);
       f.witness.point = t->where;
@@ -164,9 +181,11 @@ class PassLevelsOracle : public Oracle {
  public:
   std::string id() const override { return "pass-levels"; }
   std::vector<std::string> rules() const override { return {"G72.STEP2", "G72.STEP6", "G71.T1.STEP6", "G71.OP"}; }
+  bool judges(CycleFamily f) const override { return f != CycleFamily::G73; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const CycleSpec* c = ctx.replay ? ctx.replay->cycle : nullptr;
-    if (c && !c->typeII) judgePassLevels(ctx.in, *c, out);
+    // G73's passes follow the whole shape, not levels (depth-per-pass judges how far apart they stand).
+    if (c && !c->typeII && !c->patternRepeating()) judgePassLevels(ctx.in, *c, out);
   }
 
  private:

@@ -14,7 +14,10 @@ std::vector<Finding> judge(const JudgeInput& in) {
   const std::optional<MaterialReplay> replay = replayMaterial(in);
   const JudgeContext ctx{in, replay ? &*replay : nullptr};
   std::vector<Finding> findings;
-  for (const auto& oracle : allOracles()) oracle->judge(ctx, findings);
+  const CycleSpec* cycle = in.program.singleRoughingCycle();
+  for (const auto& oracle : allOracles()) {
+    if (!cycle || oracle->judges(cycle->family)) oracle->judge(ctx, findings);
+  }
   return findings;
 }
 

@@ -10,8 +10,15 @@
 
 namespace cyclecert {
 
-// G71 steps along x, G72 along z; the shadow points back towards the start side.
+// G71 steps along x, G72 along z; the shadow points back towards the start side. G73's passes stand
+// apart along its relief (Δk, Δi) (G73.PASS.SHIFT): its material is measured along the relief (or,
+// without one, along the allowance; without either, as G71's).
 Point awayFrom(const CycleSpec& c) {
+  if (c.patternRepeating()) {
+    for (Point along : {c.relief, c.allowance}) {
+      if (std::hypot(along.z, along.x) > kGeomEps) return along;
+    }
+  }
   const int d = c.depthDirection();
   return c.cutsAlongZ() ? Point{0, -static_cast<double>(d)} : Point{-static_cast<double>(d), 0};
 }
@@ -111,7 +118,18 @@ std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& fr
 
 }  // namespace
 
+std::vector<Segment> nearNetBlankProfile(const CycleSpec& c) {
+  std::vector<Segment> blank;
+  if (c.shape.size() < 2) return blank;
+  const Point grown = c.relief + c.allowance;
+  for (auto s = c.shape.begin() + 1; s != c.shape.end(); ++s) blank.push_back(s->shifted(grown));
+  return blank;
+}
+
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
+  // G73: the near-net blank (a casting or forging), everything behind the shape after block ns
+  // grown by (Δk + Δw, Δi + Δu/2) — the first pass's path.
+  if (c.patternRepeating()) return partRegionOf(nearNetBlankProfile(c), away, reach, chordTolerance);
   const DepthFrame frame(away);
   const double level = frame.depth(c.start);
   const std::vector<Segment> shape = stockBoundingShape(c, frame, level);
@@ -157,6 +175,7 @@ double reachFor(const JudgeInput& in, const CycleSpec& c) {
     grow(s.from);
     grow(s.to);
   }
+  size += std::hypot(c.relief.z, c.relief.x);  // G73's blank stands out by the relief
   for (const Move& m : in.path.moves) grow(m.to);
   for (Point p : in.stock.outline) grow(p);
   grow({in.stock.frontZ, 0});
@@ -224,7 +243,7 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
                                               const JudgeSettings& settings) {
   const Point away = model.away();
   const double tolerance = settings.tolerance();
-  const double allowed = c.depthOfCut + tolerance;
+  const double allowed = c.layerLimit() + tolerance;
   // Most passes provably remove no more than Δd: the material's top over the move, measured
   // against it as finely as the region below would be, bounds the layer (thickness.h,
   // standsThickerThan) and spares making the material left.

@@ -35,7 +35,8 @@ struct MaterialReplay {
   // Per move: material the pocket-entry oracle's continuations of a rapid cross (pocketEntryProbes,
   // oracles.h); empty unless that oracle judges the cycle.
   std::vector<Crossing> pocketEntryCrossings;
-  // Per move: the layer a feed removes where it may be thicker than Δd — nothing for the feeds a
+  // Per move: the layer a feed removes where it may be thicker than the layer limit (Δd, or G73's
+  // division step: CycleSpec::layerLimit) — nothing for the feeds a
   // bound shows remove no more, and for those on the finish shape (G70 removes the allowance).
   std::vector<std::optional<Thickest>> removedThickness;
   std::optional<MaterialModel> model;  // after the last move (always set by replayMaterial)
@@ -50,8 +51,8 @@ struct MaterialReplay {
 // (within 5145/5146) keeps the undercut beneath its overhang outside the part.
 BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance);
 
-// The stock a cycle implies: between the start point's level and the finish shape over the shape's
-// span along the cut axis — built as that band minus the part region, so that a shape touching
+// The stock a cycle implies: for G73 the near-net blank (nearNetBlankProfile); else between the
+// start point's level and the finish shape over the shape's span along the cut axis — built as that band minus the part region, so that a shape touching
 // the start level (a collar) splits it cleanly.
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance);
 
@@ -59,6 +60,10 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
 // (perpendicular to `away`) and intersected with itself — slivers narrower than 2·width along the
 // cut axis disappear, layers that are thin along the depth axis but wide stay.
 BgRegion withoutSkins(const BgRegion& region, Point away, double width);
+
+// G73's near-net blank's profile: the shape after block ns grown by the relief and the allowance
+// (the first pass's path, G73.PASS.SHIFT); the blank is everything behind it (impliedStockOf).
+std::vector<Segment> nearNetBlankProfile(const CycleSpec& c);
 
 // Direction from the part towards the cycle's start side along its depth axis.
 Point awayFrom(const CycleSpec& c);

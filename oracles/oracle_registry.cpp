@@ -40,6 +40,19 @@ bool isCutAlongCutAxis(const JudgeInput& in, const CycleSpec& c, std::size_t i, 
          c.cutDirection() * (to.z - from.z) > tol;
 }
 
+bool isShiftedG73Head(const JudgeInput& in, const CycleSpec& c, std::size_t i, double tol) {
+  if (!c.patternRepeating() || c.shape.empty() || i >= in.path.moves.size()) return false;
+  const Segment& head = c.shape.front();
+  const Point from = in.path.from(i), to = in.path.moves[i].to;
+  const Point b = head.to + c.allowance;
+  Segment ends;  // where the shifted B may stand: B + (Δw, Δu/2) + t·(Δk, Δi), t ∈ [0, 1]
+  ends.from = b;
+  ends.to = b + c.relief;
+  // G70.EX, G73.G70: G70 after G73 follows block ns to B itself.
+  const bool g70Head = in.program.hasFinishingCycle && distance(to, head.to) <= tol;
+  return distance(to - from, head.to - head.from) <= tol && (distanceToSegment(to, ends) <= tol || g70Head);
+}
+
 bool runsOnProfile(const JudgeInput& in, const CycleSpec& c, const std::vector<Segment>& rough, std::size_t i,
                    double tol) {
   const Point mid = 0.5 * (in.path.from(i) + in.path.moves[i].to);

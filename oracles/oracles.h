@@ -27,6 +27,10 @@ Point inFrame(const CycleSpec& c, Point p);
 // Whether move i is a cut along the cycle's cut axis: a line in cutting feed, level along the depth
 // axis and forward along the cut (within tol).
 bool isCutAlongCutAxis(const JudgeInput& in, const CycleSpec& c, std::size_t i, double tol);
+// G73.HEAD, G73.PASS.SHIFT: whether move i is block ns shifted for a pass — the move A → B as
+// programmed (same vector, within tol), ending on B + (Δw, Δu/2) + t·(Δk, Δi), t ∈ [0, 1] — or
+// at B itself with a G70 after the cycle (G73.G70). False for other families.
+bool isShiftedG73Head(const JudgeInput& in, const CycleSpec& c, std::size_t i, double tol);
 // Whether move i runs on the rough profile (the semi-finish pass, type II's bottom cuts) or, with a
 // G70, on the finish shape: its middle lies within tol of either. Such a cut is no roughing pass.
 bool runsOnProfile(const JudgeInput& in, const CycleSpec& c, const std::vector<Segment>& rough, std::size_t i,

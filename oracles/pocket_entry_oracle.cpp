@@ -44,6 +44,7 @@ class PocketEntryOracle : public Oracle {
  public:
   std::string id() const override { return "pocket-entry"; }
   std::vector<std::string> rules() const override { return {"G71.T2.POCKET.EXIT"}; }
+  bool judges(CycleFamily f) const override { return f != CycleFamily::G73; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const MaterialReplay* r = ctx.replay;
     if (!r || !judgesPocketEntries(*r->cycle, ctx.in.settings)) return;
@@ -65,7 +66,8 @@ class PocketEntryOracle : public Oracle {
 }  // namespace
 
 bool judgesPocketEntries(const CycleSpec& c, const JudgeSettings& settings) {
-  return c.typeII && c.clearance > settings.tolerance();
+  // G73 has no pockets to enter: its passes follow the whole shape from A (G73.APPROACH).
+  return !c.patternRepeating() && c.typeII && c.clearance > settings.tolerance();
 }
 
 std::vector<Segment> pocketEntryProbes(const JudgeInput& in, const CycleSpec& c, std::size_t i) {

@@ -17,11 +17,14 @@ class RetractOracle : public Oracle {
  public:
   std::string id() const override { return "retract"; }
   std::vector<std::string> rules() const override { return {"G71.T1.RETRACT45", "G72.STEP4", "G72.RETRACT", "G71.T2.FOLLOW"}; }
+  bool judges(CycleFamily f) const override { return f != CycleFamily::G73; }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const CycleSpec* c = in.program.singleRoughingCycle();
-    if (!c || in.path.alarm) return;
+    // G73 has no retract: each pass ends with the rapid back to A (G73.RETURN), which rapids-in-air
+    // and returns-to-start judge.
+    if (!c || in.path.alarm || c->patternRepeating()) return;
     Check check{*c, in, c->roughProfile(), in.settings.tolerance()};
     const MoveRange judged = movesOfTheRoughing(in);
     for (std::size_t i = judged.begin; i < judged.end; ++i) {

@@ -13,14 +13,15 @@ namespace {
 class ReturnsToStartOracle : public Oracle {
  public:
   std::string id() const override { return "returns-to-start"; }
-  std::vector<std::string> rules() const override { return {"G72.STEP8", "G71.T1.STEP8", "G71.T2.RETURN", "G70.EX", "G71.DTP"}; }
+  std::vector<std::string> rules() const override { return {"G72.STEP8", "G71.T1.STEP8", "G71.T2.RETURN", "G70.EX", "G71.DTP", "G73.RETURN"}; }
 
   // G71.DTP, type I after the semi-finish pass: DTP = 1 returns from C' straight to A; DTP = 0 along
   // the depth axis first, then along the cut axis (our reading of the missing figure).
   // `last` is the cycle's last move.
   void judgeReturnShape(const JudgeInput& in, std::size_t last, std::vector<Finding>& out) const {
     const CycleSpec* c = in.program.singleRoughingCycle();
-    if (!c || c->typeII || !c->semiFinish || last < 1) return;
+    // G73 returns from the last pass straight to A (G73.RETURN): no DTP shape; its end is judged.
+    if (!c || c->typeII || c->patternRepeating() || !c->semiFinish || last < 1) return;
     const double tol = in.settings.tolerance();
     const Point cPrime = c->shape.back().to + c->allowance;
     const Point end = inFrame(*c, in.path.moves[last].to), before = inFrame(*c, in.path.from(last));

@@ -221,19 +221,7 @@ TEST(G73InAProgram, OtherDialectsAreNotSupported) {
                NotSupported);
 }
 
-// The oracles do not judge G73 yet: a clear NotSupported, not false findings.
-TEST(G73Judging, TheOraclesRefuseAPlannedG73) {
-  JudgeRequest request;
-  request.program = {kSeed004, "seed004.nc", "fanuc-0i-f", {}, {}};
-  const Toolpath path = planWithReference(request.program);
-  try {
-    (void)judgeInputFor(request, path);
-    FAIL() << "the oracles judged a G73";
-  } catch (const NotSupported& e) {
-    EXPECT_NE(std::string(e.what()).find("the oracles do not judge G73 yet"), std::string::npos) << e.what();
-    EXPECT_EQ(e.line(), 2);
-  }
-}
+// The oracles judge G73: tests/g73_oracles_test.cpp.
 
 }  // namespace
 }  // namespace cyclecert

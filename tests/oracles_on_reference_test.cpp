@@ -20,16 +20,8 @@ class OraclesOnReference : public ::testing::TestWithParam<std::string> {};
 TEST_P(OraclesOnReference, FindNothing) {
   const SpecCase c = loadSpecCase(GetParam());
   const JudgeRequest request = judgeRequestFor(c);
-  // G73.*: the oracles do not judge G73 yet and say so (NotSupported); the case's hand-derived
-  // toolpath is checked against the reference by SpecCases. Only that refusal is skipped.
-  std::optional<JudgeInput> in;
-  try {
-    in.emplace(judgeInputFor(request, planSpecCase(c)));
-  } catch (const NotSupported& e) {
-    if (std::string(e.what()).find("the oracles do not judge G73 yet") != std::string::npos) GTEST_SKIP() << e.what();
-    throw;
-  }
-  const std::vector<Finding> findings = judge(*in);
+  const JudgeInput in = judgeInputFor(request, planSpecCase(c));
+  const std::vector<Finding> findings = judge(in);
   EXPECT_TRUE(findings.empty()) << c.id << ":\n" << findingsText(findings);
 }
 

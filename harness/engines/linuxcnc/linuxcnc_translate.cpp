@@ -203,6 +203,7 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
                          "shape and does not return to the start point");
   }
   const CycleSpec& cy = spec.cycles.front();
+  if (cy.patternRepeating()) return notApplicable("G73 is not translated: LinuxCNC's G73 is a drilling cycle");
   if (auto why = untranslatableAlarm(cy)) return notApplicable(*why);
   if (spec.motionAfterCycles) return notApplicable("motion after the cycle is not translated");
   if (spec.motionBeforeCycles) {
