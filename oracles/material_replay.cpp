@@ -1,6 +1,7 @@
 #include "oracles/material_replay.h"
 
 #include <algorithm>
+#include <array>
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/oracles.h"
@@ -21,6 +22,33 @@ Point awayFrom(const CycleSpec& c) {
   }
   const int d = c.depthDirection();
   return c.cutsAlongZ() ? Point{0, -static_cast<double>(d)} : Point{-static_cast<double>(d), 0};
+}
+
+// G73: the part stands behind its shape, on the side away from the start — not necessarily along
+// the relief (a Z-only relief on a turned diameter, G73.PASS.SHIFT). The region behind it is swept
+// along an axis over whose other axis the shape after block ns is a graph: the relief's larger
+// component's axis first, then the other; the sense is the relief's (else the allowance's, else
+// from the head's end towards A). A shape that is a graph over neither is swept along the relief.
+Point partSideOf(const CycleSpec& c) {
+  if (!c.patternRepeating() || c.shape.size() < 2) return awayFrom(c);
+  const std::vector<Segment> profile(c.shape.begin() + 1, c.shape.end());
+  const Point headEnd = c.shape.front().to;
+  const auto senseAlong = [&](bool alongX) {
+    const std::array<double, 3> candidates = alongX ? std::array{c.relief.x, c.allowance.x, c.start.x - headEnd.x}
+                                                    : std::array{c.relief.z, c.allowance.z, c.start.z - headEnd.z};
+    for (double v : candidates) {
+      if (std::abs(v) > kGeomEps) return v > 0 ? 1.0 : -1.0;
+    }
+    return 0.0;
+  };
+  const bool xFirst = std::abs(c.relief.x) >= std::abs(c.relief.z);
+  for (bool alongX : {xFirst, !xFirst}) {
+    const double sense = senseAlong(alongX);
+    if (sense == 0) continue;
+    const Point away = alongX ? Point{0, sense} : Point{sense, 0};
+    if (isGraphOverCutAxis(profile, DepthFrame(away))) return away;
+  }
+  return awayFrom(c);
 }
 
 BgRegion withoutSkins(const BgRegion& region, Point away, double width) {
@@ -126,10 +154,28 @@ std::vector<Segment> nearNetBlankProfile(const CycleSpec& c) {
   return blank;
 }
 
+// G73: the near-net blank (a casting or forging), everything behind the shape after block ns grown
+// by (Δk + Δw, Δi + Δu/2) — the first pass's path — over the shape's own span along the cut axis:
+// beyond B and C the program describes neither part nor blank (interpretation, G73.PASS.SHIFT).
+BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance) {
+  const std::vector<Segment> blank = nearNetBlankProfile(c);
+  if (blank.empty()) return {};
+  const DepthFrame frame(partSideOf(c));
+  double lo = INFINITY, hi = -INFINITY;
+  for (auto s = c.shape.begin() + 1; s != c.shape.end(); ++s) {
+    for (Point p : {s->from, s->to}) {
+      lo = std::min(lo, frame.cut(p));
+      hi = std::max(hi, frame.cut(p));
+    }
+  }
+  if (!(hi > lo)) return {};
+  const BgRegion span = regionFrom({frame.point(lo, 2 * reach), frame.point(hi, 2 * reach), frame.point(hi, -2 * reach),
+                                    frame.point(lo, -2 * reach)});
+  return checkedIntersection(span, partRegionOf(blank, frame.away(), reach, chordTolerance));
+}
+
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
-  // G73: the near-net blank (a casting or forging), everything behind the shape after block ns
-  // grown by (Δk + Δw, Δi + Δu/2) — the first pass's path.
-  if (c.patternRepeating()) return partRegionOf(nearNetBlankProfile(c), away, reach, chordTolerance);
+  if (c.patternRepeating()) return nearNetBlankOf(c, reach, chordTolerance);
   const DepthFrame frame(away);
   const double level = frame.depth(c.start);
   const std::vector<Segment> shape = stockBoundingShape(c, frame, level);
@@ -302,7 +348,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   r.target = in.program.hasFinishingCycle ? c->shape : c->roughProfile();
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
   const std::vector<Segment> profile(r.target.begin() + (c->typeII ? 0 : 1), r.target.end());
-  const DepthFrame frame(r.away);
+  const DepthFrame frame(partSideOf(*c));
   if (!profile.empty()) {
     const PartOutline part = partOutlineOf(profile, frame, r.reach, in.settings.chordTolerance);
     r.part = partRegionFrom(part, profile, frame, r.reach, in.settings.chordTolerance);

@@ -68,6 +68,10 @@ std::vector<Segment> nearNetBlankProfile(const CycleSpec& c);
 // Direction from the part towards the cycle's start side along its depth axis.
 Point awayFrom(const CycleSpec& c);
 
+// The side the part stands on, from its shape: for G71/G72 awayFrom's direction; for G73 an axis
+// over whose other axis the shape is a graph (partSideOf in material_replay.cpp says which).
+Point partSideOf(const CycleSpec& c);
+
 // The material still standing after move `k` (0-based; after the whole path for k ≥ the move
 // count), as outlines for a plot: the replay stopped there. Nothing when the program is not one the
 // geometric oracles judge.

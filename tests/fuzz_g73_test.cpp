@@ -116,6 +116,19 @@ TEST(FuzzG73Generator, CoversShapesDivisionsReliefsQuadrantsAndFaults) {
       }
     }
     if (down) ++seen["not monotone"];
+    // The relief and the allowance point away from the part on every segment (G73.PASS.SHIFT): a
+    // segment going down by u over a length a takes at most a·Δi/u along the cut axis, an arc going
+    // down none (its vertical tangent).
+    for (const FuzzSegment& s : c.segments) {
+      if (s.up >= 0) continue;
+      if (s.kind != FuzzSegment::Line) {
+        EXPECT_EQ(c.reliefCut, 0) << "an arc going down with Δk";
+        EXPECT_EQ(c.allowanceCut, 0) << "an arc going down with Δw";
+      } else {
+        EXPECT_LE(static_cast<long>(c.reliefCut) * -s.up, static_cast<long>(c.reliefDepth) * s.along);
+        EXPECT_LE(static_cast<long>(c.allowanceCut) * -s.up, static_cast<long>(c.allowanceDepth) * s.along);
+      }
+    }
     // C is the shape's highest point.
     int depth = 0, top = 0;
     for (const FuzzSegment& s : c.segments) top = std::max(top, depth += s.up);

@@ -214,6 +214,34 @@ TEST(G73Judging, G70sG00HeadAfterG73) {
 }
 
 // Each oracle declares whether it judges G73: all but pass-levels, retract and pocket-entry.
+// The part stands behind the shape on the side away from A, swept along an axis over whose other
+// axis the shape is a graph — not along a Z-only relief: a turned chamfer going down then a face
+// up, Δk = 0.01 only (B (0, 1.1), (−0.1, 1.0), C (−0.1, 1.6)); with d = 1 the one pass runs on the
+// shape (no allowance), so nothing gouges (before: the part swept along Z took the face's edge for
+// material, 0.09 mm).
+TEST(G73Judging, ThePartIsBehindTheShapeWhateverTheReliefsDirection) {
+  const std::string program =
+      "G00 X3.22 Z0.02;\nG73 U0 W0.01 R1;\nG73 P10 Q20 U0 W0 F0.2;\nN10 G01 X2.2 Z0;\nG01 X2 Z-0.1;\n"
+      "N20 G01 X3.2 Z-0.1;\nG70 P10 Q20;\n";
+  EXPECT_TRUE(judged(program, planned(program)).empty());
+}
+
+// The blank is known only over the shape's span: a face B (0, 1.0) → C (0, 1.5) with Δk 0.01, Δw
+// 0.01, Δu/2 0.01 leaves the blank's edge beyond C (x 1.5…1.51) where no pass reaches; the return
+// from C to A crosses it — not material the program describes (before: rapids-in-air, 0.003 mm).
+// And a chamfer from B (0, 1.0) with Δi 0.01, Δw 0.01 leaves blank ahead of B (z 0…0.01) that no
+// pass reaches (before: complete, 0.003 mm).
+TEST(G73Judging, TheBlankIsJudgedOverTheShapesSpanOnly) {
+  const std::string face =
+      "G00 X3.04 Z0.03;\nG73 U0 W0.01 R1;\nG73 P10 Q20 U0.02 W0.01 F0.2;\nN10 G01 X2 Z0;\nN20 G01 X3 Z0;\n"
+      "G70 P10 Q20;\n";
+  EXPECT_TRUE(judged(face, planned(face)).empty());
+  const std::string chamfer =
+      "G00 X2.24 Z0.37;\nG73 U0.01 W0 R1;\nG73 P10 Q20 U0 W0.01 F0.2;\nN10 G00 X2 Z0;\nN20 G01 X2.2 Z-0.1;\n"
+      "G70 P10 Q20;\n";
+  EXPECT_TRUE(judged(chamfer, planned(chamfer)).empty());
+}
+
 TEST(G73Judging, EachOracleDeclaresWhetherItJudgesG73) {
   for (const auto& oracle : allOracles()) {
     const bool skips = oracle->id() == "pass-levels" || oracle->id() == "retract" || oracle->id() == "pocket-entry";

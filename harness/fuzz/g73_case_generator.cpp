@@ -9,7 +9,9 @@
 // left); the number of divisions d (1 one time in five: G73.D1), the reliefs Δi and Δk (0 on their
 // boundary now and then), the allowances Δu/2 and Δw (0 now and then); the profiles fanuc-0i-f,
 // fanuc-0i-c and gsk; G70 after the cycle one time in three; and, one case in ten, one invalid
-// parameter with the alarm it raises (G73Fault: R0, R2.5, no Q, block ns in G02).
+// parameter with the alarm it raises (G73Fault: R0, R2.5, no Q, block ns in G02). The reliefs and
+// allowances point away from the part on every segment (shiftAwayFromThePart): the shift of a pass
+// otherwise cuts into the part, a programmer's collision on any controller.
 #include "harness/fuzz/case_generator.h"
 
 #include <algorithm>
@@ -72,6 +74,28 @@ void chooseG73(FuzzCase& c, const std::vector<int>& choice) {
   c.headMotion = c.reliefCut == 0 ? choice[3] % 2 : 1;
 }
 
+// The largest shift along the cut axis (towards A) that keeps a shape shifted by (it, `depthShift`)
+// out of the part: a programmer's relief and allowance point away from the part on every segment,
+// or each pass shifted by them cuts into it — on any controller (G73.PASS.SHIFT). A segment going
+// down by u over a length a allows a·depthShift/u; an arc going down reaches a vertical tangent and
+// allows none; segments going up or along the cut axis allow any.
+int largestCutShiftAwayFromThePart(const std::vector<FuzzSegment>& segments, int depthShift, int drawn) {
+  int largest = drawn;
+  for (const FuzzSegment& s : segments) {
+    if (s.up >= 0) continue;
+    if (s.kind != FuzzSegment::Line || s.along == 0) return 0;
+    largest = std::min(largest, s.along * depthShift / -s.up);
+  }
+  return largest;
+}
+
+// Relief and allowance away from the part (largestCutShiftAwayFromThePart): the cut-axis shares
+// are cut back to what the shape allows.
+void shiftAwayFromThePart(FuzzCase& c) {
+  c.reliefCut = largestCutShiftAwayFromThePart(c.segments, c.reliefDepth, c.reliefCut);
+  c.allowanceCut = largestCutShiftAwayFromThePart(c.segments, c.allowanceDepth, c.allowanceCut);
+}
+
 }  // namespace
 
 rc::Gen<FuzzCase> genG73Case() {
@@ -91,6 +115,7 @@ rc::Gen<FuzzCase> genG73Case() {
         c.startAlong = along;
         c.b = b;
         chooseG73(c, choice);
+        shiftAwayFromThePart(c);
         endAtTheTop(c);
         return c;
       },
