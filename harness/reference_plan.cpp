@@ -6,6 +6,7 @@
 
 #include "reference/gcode/parser.h"
 #include "reference/model/profile.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -43,7 +44,7 @@ std::shared_ptr<const Program> parsedOnce(const std::string& text, const std::st
 ReadRequest readRequest(const PlanRequest& request) {
   std::string profileName = request.profile;
   if (profileName.empty()) profileName = profileFromHeader(request.programText);
-  if (profileName.empty()) profileName = "fanuc-0i-f";
+  profileName = profileNameOrDefault(profileName);
   ReadRequest read;
   read.profile = findProfile(profileName);
   if (!read.profile) throw UnknownProfile(profileName);

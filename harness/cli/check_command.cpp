@@ -1,5 +1,4 @@
 // `cyclecert check` and `cyclecert engines`: the spec suite against one engine.
-#include <iomanip>
 #include <iostream>
 
 #include "harness/campaign.h"
@@ -88,7 +87,7 @@ static int commandCheck(const std::vector<std::string>& args) {
 static int commandEngines(const std::vector<std::string>& args) {
   const auto positional = parseOptions(args, {}, "engines");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
-  for (const auto& [name, description] : listEngines()) std::cout << std::left << std::setw(28) << name << description << "\n";
+  std::cout << enginesListing();
   return kExitOk;
 }
 

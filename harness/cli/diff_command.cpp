@@ -22,6 +22,7 @@
 #include "harness/toolpath_compare.h"
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
+#include "reference/profiles/default_profile.h"
 #include "reports/svg/toolpath_svg.h"
 
 namespace cyclecert::cli {
@@ -162,7 +163,7 @@ std::string caseIdFor(const std::string& path, const std::string& profile) {
 SpecCase caseForProgram(const std::string& path, const DiffArgs& a) {
   const std::string text = readFile(path);
   std::string profile = a.profile.empty() ? profileFromHeader(text) : a.profile;
-  if (profile.empty()) profile = "fanuc-0i-f";
+  profile = profileNameOrDefault(profile);
   json params = json::object();
   for (const auto& [name, value] : parsedParams(a.params)) setParam(params, name, value);
   json expect = {{"oracles", "pass"}};

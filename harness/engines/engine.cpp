@@ -1,5 +1,6 @@
 #include "harness/engines/engine.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -63,12 +64,25 @@ std::unique_ptr<Engine> makeEngine(const std::string& name, const EngineOptions&
 
 std::vector<std::pair<std::string, std::string>> listEngines() {
   std::vector<std::pair<std::string, std::string>> all = {
-      {"reference", "cyclecert's reference engine, in-process (FANUC 0i-F/0i-C, GSK: G70, G71, G72)"},
+      {"reference",
+       "cyclecert's reference engine, in-process: G70, G71, G72, G73 for FANUC 0i-F/0i-C (also the Series 10/11 block "
+       "and G code systems B/C) and GSK; the Huazhong one-block G71; the Haas one-block G71/G72 and G70"},
       {"linuxcnc", "LinuxCNC's rs274 interpreter (G71/G72 as LinuxCNC reads them; make fetches it from Debian)"},
       {"process:COMMAND", "any program speaking JSON lines on stdin/stdout (README: plugging in an engine)"},
   };
   for (const auto& [name, fault] : mutantFaults()) all.push_back({"mutant:" + name, "the reference with one fault: " + fault});
   return all;
+}
+
+std::string enginesListing() {
+  const auto engines = listEngines();
+  std::size_t longest = 0;
+  for (const auto& [name, description] : engines) longest = std::max(longest, name.size());
+  std::string text;
+  for (const auto& [name, description] : engines) {
+    text += name + std::string(longest + 2 - name.size(), ' ') + description + "\n";
+  }
+  return text;
 }
 
 std::vector<EngineResult> Engine::runBatch(const std::vector<SpecCase>& cases) {

@@ -49,4 +49,8 @@ std::unique_ptr<Engine> makeEngine(const std::string& name, const EngineOptions&
 // Every built-in engine name with its description (`cyclecert engines`).
 std::vector<std::pair<std::string, std::string>> listEngines();
 
+// That list as `cyclecert engines` prints it: one line per engine, its name in a column two spaces
+// wider than the longest name, then its description.
+std::string enginesListing();
+
 }  // namespace cyclecert

@@ -14,6 +14,7 @@
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 #include "reference/model/alarms.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -137,7 +138,7 @@ std::string compensationSidesSwapped(const std::string& text) {
 // The case's G code system (PROG.GSYS.*): G73 is the pattern repeating cycle in systems A and B,
 // G75 in system C (where G73 is G71's roughing).
 GCodeSystem gCodeSystemOf(const SpecCase& c) {
-  const Profile* profile = findProfile(c.profile.empty() ? "fanuc-0i-f" : c.profile);
+  const Profile* profile = findProfile(profileNameOrDefault(c.profile));
   if (!profile) return GCodeSystem::A;
   MachineParams params = profile->defaults;
   for (const auto& [name, value] : c.params) {

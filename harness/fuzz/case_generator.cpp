@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "harness/fuzz/named_choices.h"
 #include "oracles/metamorphic/g_code_writing.h"
 #include "reference/interpreter/g_codes.h"
 
@@ -153,27 +154,72 @@ std::vector<FuzzSegment> withCollinearRun(std::vector<FuzzSegment> segs, int at)
   return segs;
 }
 
+// The sixteen choices 0…9 a G71/G72 case draws first (field by field in the order drawn), by the
+// decision each makes.
+struct RoughingChoices {
+  int profile;          // the profile (profileChosen)
+  int cycle;            // G72 when odd, G71 when even (when the run asks for both)
+  int mirrorCut;        // the cut axis runs the other way when 1 (mod 4)
+  int mirrorDepth;      // the depth axis runs the other way when 1 (mod 4)
+  int typeII;           // type II when 1 (mod 3)
+  int headMotion;       // block ns in G02 (out of range) when 9, else G00 (even) or G01 (odd)
+  // One draw, two uses (named twice so that each use says what it picks, as it always did): the
+  // segment split into a collinear run and the segment that may turn back (both mod the count).
+  int collinearRunAt, turnBackAt;
+  int noDepthOfCut;     // Δd 0 (out of range) when 9
+  int turnBack;         // the segment at turnBackAt turns back along the cut axis when 9, the depth axis when 8
+  int noDepthAllowance;  // no Δu when < 2
+  int noCutAllowance;    // no Δw when < 3
+  int startLevel;        // A exactly on C's level plus Δu when 0, below C's level (out of range) when 9
+  // One draw, two uses: DTP = 1 when 2 (mod 7), RF1 = 1 when 1 (mod 5).
+  int dtp, rf1;
+  // One draw, two uses: R16 = 1 when odd, NSP = 1 when 1 (mod 3) (type II).
+  int r16, nsp;
+  int rf2;              // RF2 = 1 when 1 (mod 4) (type II)
+  int finish;           // a G70 follows when 0 (mod 3)
+};
+
+RoughingChoices roughingChoicesFrom(const std::vector<int>& drawn) {
+  const auto at = [&](std::size_t i) { return choiceAt(drawn, i); };
+  return {at(0), at(1), at(2),  at(3),  at(4),  at(5),  at(6),  at(6),  at(7),  at(8),
+          at(9), at(10), at(11), at(12), at(12), at(13), at(13), at(14), at(15)};
+}
+
+// The six choices 0…9 drawn after the rest (so that adding them left the other draws as they
+// were), by the decision each makes.
+struct LaterChoices {
+  int shapeFeed;     // an F in the shape when ≥ 7: 7, 8, 9 pick F0.1, F0.05, F0.3
+  int shapeFeedAt;   // on which block (mod the segments + 1; 0 block ns)
+  int compensation;  // tool-nose radius compensation when ≥ 7
+  int noseRadius;    // 0.2, 0.4, 0.8 (mod 3)
+  int unused;        // drawn, read by nothing (kept: the draws after it stay as they were)
+  int clearance;     // the pocket clearance 5134 (kClearances)
+};
+
+LaterChoices laterChoicesFrom(const std::vector<int>& drawn) {
+  const auto at = [&](std::size_t i) { return choiceAt(drawn, i); };
+  return {at(0), at(1), at(2), at(3), at(4), at(5)};
+}
+
 // What RapidCheck draws for one case; caseFrom() turns it into a case, step by step.
 struct Draws {
-  std::vector<int> choice;  // 16 choices 0…9: profile, cycle, quadrant, type, out-of-range draws, …
+  RoughingChoices choice;
   std::vector<FuzzSegment> segments;
   std::vector<int> downs;   // type II: which segments go down
   int depthOfCut, retract, allowanceDepth, allowanceCut, above, along, b;  // hundredths
-  // 6 more choices 0…9, drawn after the rest (so that adding them left the other draws as they
-  // were): an F in the shape and where, compensation, its nose radius and tip, 5134.
-  std::vector<int> later;
+  LaterChoices later;  // an F in the shape and where, compensation, its nose radius, 5134
   CycleFormat format = CycleFormat::FanucTwoBlocks;  // drawn last, and only when the run asks for several
   int onlyCycle = 0;  // 71 or 72 when the run asks for that one only (not drawn: chosen); 0 both
 };
 
-void chooseCycle(FuzzCase& c, const std::vector<int>& choice, int onlyCycle) {
-  c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
-  c.cycle = onlyCycle ? onlyCycle : choice[1] % 2 ? 72 : 71;
-  c.mirrorCut = choice[2] % 4 == 1;
-  c.mirrorDepth = choice[3] % 4 == 1;
-  c.typeII = choice[4] % 3 == 1;
-  c.headMotion = choice[5] == 9 ? 2 : choice[5] % 2;  // G02 (out of range: PS0065) one time in ten
-  c.finish = choice[15] % 3 == 0;
+void chooseCycle(FuzzCase& c, const RoughingChoices& choice, int onlyCycle) {
+  c.profile = profileChosen(choice.profile);
+  c.cycle = onlyCycle ? onlyCycle : choice.cycle % 2 ? 72 : 71;
+  c.mirrorCut = choice.mirrorCut % 4 == 1;
+  c.mirrorDepth = choice.mirrorDepth % 4 == 1;
+  c.typeII = choice.typeII % 3 == 1;
+  c.headMotion = choice.headMotion == 9 ? 2 : choice.headMotion % 2;  // G02 (out of range: PS0065) one time in ten
+  c.finish = choice.finish % 3 == 0;
 }
 
 // What the format can write: the Series 10/11 format and G code systems B/C are FANUC's (a GSK
@@ -215,7 +261,7 @@ void turnBack(FuzzCase& c, int choice, int at) {
 }
 
 void drawShape(FuzzCase& c, const Draws& d) {
-  c.segments = withCollinearRun(d.segments, d.choice[6]);
+  c.segments = withCollinearRun(d.segments, d.choice.collinearRunAt);
   if (c.segments.size() > 8) c.segments.resize(8);
   if (c.segments.empty()) c.segments.push_back({FuzzSegment::Line, 500, 300});
   // A shape with no length along the cut axis (steps only) has nothing to rough.
@@ -223,7 +269,7 @@ void drawShape(FuzzCase& c, const Draws& d) {
     c.segments.front().along = 100;
   }
   if (c.typeII) makePockets(c, d.downs);
-  turnBack(c, d.choice[8], d.choice[6]);
+  turnBack(c, d.choice.turnBack, d.choice.turnBackAt);
   // B is raised by the deepest dip, so that no pocket reaches below where B was drawn.
   int lowest = 0, x = 0;
   for (const FuzzSegment& s : c.segments) lowest = std::min(lowest, x += s.up);
@@ -231,13 +277,13 @@ void drawShape(FuzzCase& c, const Draws& d) {
 }
 
 void drawCycleParameters(FuzzCase& c, const Draws& d) {
-  c.depthOfCut = d.choice[7] == 9 ? 0 : d.depthOfCut;  // Δd 0: out of range (PS0062)
+  c.depthOfCut = d.choice.noDepthOfCut == 9 ? 0 : d.depthOfCut;  // Δd 0: out of range (PS0062)
   c.retract = d.retract;
   // Allowances: none (boundary) or with the quadrant (valid). G71.T2.DW0: with pockets the
   // allowance along the cut axis is 0, else the manual itself says the tool cuts into a side
   // wall — a gouge the rules predict is no finding against an engine.
-  c.allowanceDepth = d.choice[9] < 2 ? 0 : d.allowanceDepth;
-  c.allowanceCut = d.choice[10] < 3 || c.typeII ? 0 : d.allowanceCut;
+  c.allowanceDepth = d.choice.noDepthAllowance < 2 ? 0 : d.allowanceDepth;
+  c.allowanceCut = d.choice.noCutAllowance < 3 || c.typeII ? 0 : d.allowanceCut;
 }
 
 // A above C by more than the depth allowance (valid), exactly on it (boundary), or — with a depth
@@ -247,34 +293,34 @@ void drawCycleParameters(FuzzCase& c, const Draws& d) {
 void placeStart(FuzzCase& c, const Draws& d) {
   int highest = 0, x = 0;
   for (const FuzzSegment& s : c.segments) highest = std::max(highest, x += s.up);
-  const bool otherOutOfRange = d.choice[8] >= 8 || c.depthOfCut == 0 || c.headMotion == 2;
-  const bool belowC = d.choice[11] == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 && !otherOutOfRange;
-  c.startAbove = d.choice[11] == 0 ? c.allowanceDepth
-                 : belowC          ? -std::min(d.above / 4 + 1, highest - 10)
-                                   : c.allowanceDepth + d.above;
+  const bool otherOutOfRange = d.choice.turnBack >= 8 || c.depthOfCut == 0 || c.headMotion == 2;
+  const bool belowC = d.choice.startLevel == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 && !otherOutOfRange;
+  c.startAbove = d.choice.startLevel == 0 ? c.allowanceDepth
+                 : belowC                    ? -std::min(d.above / 4 + 1, highest - 10)
+                                             : c.allowanceDepth + d.above;
   c.startAlong = d.along;
 }
 
-void drawMachineParameters(FuzzCase& c, const std::vector<int>& choice) {
-  c.dtp = choice[12] % 7 == 2;
+void drawMachineParameters(FuzzCase& c, const RoughingChoices& choice) {
+  c.dtp = choice.dtp % 7 == 2;
   // RF1 skips the semi-finish, so a straight return (DTP = 1, GSK's only return) leaves from
   // beside the last pass: with Δw it runs back through the allowance, as documented — a hazard of
   // the documents, not a deviation, so that combination is not drawn.
   const bool straightReturn = c.dtp || c.profile == "gsk";
-  c.rf1 = choice[12] % 5 == 1 && !(straightReturn && c.allowanceCut > 0);
+  c.rf1 = choice.rf1 % 5 == 1 && !(straightReturn && c.allowanceCut > 0);
   // R16, NSP and RF2 are type II's parameters.
-  c.r16 = c.typeII && choice[13] % 2;
-  c.nsp = c.typeII && choice[13] % 3 == 1;
-  c.rf2 = c.typeII && choice[14] % 4 == 1;
+  c.r16 = c.typeII && choice.r16 % 2;
+  c.nsp = c.typeII && choice.nsp % 3 == 1;
+  c.rf2 = c.typeII && choice.rf2 % 4 == 1;
 }
 
 // An F word inside ns…nf three times in ten, on block ns or on one of the segments: roughing
 // ignores it (G71.FST, G72.FST), G70 runs at it from that block on (G70.EX).
-void drawShapeFeed(FuzzCase& c, const std::vector<int>& later) {
-  if (later[0] < 7) return;
+void drawShapeFeed(FuzzCase& c, const LaterChoices& later) {
+  if (later.shapeFeed < 7) return;
   static constexpr int kFeeds[] = {10, 5, 30};  // never the cycle's F0.2
-  c.shapeFeed = kFeeds[later[0] - 7];
-  c.shapeFeedAt = later[1] % static_cast<int>(c.segments.size() + 1);
+  c.shapeFeed = kFeeds[later.shapeFeed - 7];
+  c.shapeFeedAt = later.shapeFeedAt % static_cast<int>(c.segments.size() + 1);
 }
 
 // Tool-nose radius compensation (G71.TNRC.CANCEL, G71.CHECK) in three type I cases of ten: G41/G42
@@ -284,19 +330,19 @@ void drawShapeFeed(FuzzCase& c, const std::vector<int>& later) {
 // documents do not say which comes first. Not drawn (yet): type II (G71.TNRC.ZERO asks for pockets
 // to be programmed A→A' outside the work first, which the generator does not write) and tips that
 // do not point into the cut (oracles/README.md, known limitations).
-void drawCompensation(FuzzCase& c, const std::vector<int>& later) {
+void drawCompensation(FuzzCase& c, const LaterChoices& later) {
   const bool outOfRange = c.depthOfCut == 0 || c.headMotion == 2 || c.startAbove < 0 ||
                           std::any_of(c.segments.begin(), c.segments.end(), [&](const FuzzSegment& s) {
                             return s.along < 0 || (!c.typeII && s.up < 0);
                           });
-  if (later[2] < 7 || outOfRange || c.typeII) return;
+  if (later.compensation < 7 || outOfRange || c.typeII) return;
   // Not drawn (yet) for the Haas block: G41/G42 in block ns with G40 in block nf (HAAS.TNRC.SHAPE,
   // which fuzzProgram() writes) gives paths the oracles reject (material left at the end of the
   // shape, gouges where G40 is on an arc): the reference and the oracles must first agree on what
   // G40 in block nf does to G70's last move.
   if (c.format == CycleFormat::HaasOneBlock) return;
   static constexpr int kRadii[] = {20, 40, 80};
-  c.noseRadius = kRadii[later[3] % 3];
+  c.noseRadius = kRadii[later.noseRadius % 3];
   c.tip = tipIntoTheCut(c);
 }
 
@@ -307,9 +353,7 @@ void drawClearance(FuzzCase& c, int choice) {
   if (c.typeII) c.clearance = kClearances[choice];
 }
 
-FuzzCase caseFrom(Draws d) {
-  d.choice.resize(16, 0);
-  d.later.resize(6, 0);
+FuzzCase caseFrom(const Draws& d) {
   FuzzCase c;
   chooseCycle(c, d.choice, d.onlyCycle);
   fitToFormat(c, d.format);
@@ -319,25 +363,25 @@ FuzzCase caseFrom(Draws d) {
   drawMachineParameters(c, d.choice);
   drawShapeFeed(c, d.later);
   drawCompensation(c, d.later);
-  drawClearance(c, d.later[5]);
+  drawClearance(c, d.later.clearance);
   return c;
 }
 
-}  // namespace
+bool asks(const FuzzCycles& cycles, FuzzCycle c) { return std::find(cycles.begin(), cycles.end(), c) != cycles.end(); }
 
-namespace {
-
-// The G71/G72 cases, `onlyCycle` 71 or 72 when the run asks for one of them (0: both).
-rc::Gen<FuzzCase> genRoughingCase(const CycleFormats& formats, int onlyCycle) {
+// The G71/G72 cases: G71 or G72 drawn when the run asks for both, else the one it asks for.
+rc::Gen<FuzzCase> genRoughingCase(const CycleFormats& formats, const FuzzCycles& cycles) {
+  const bool g71 = asks(cycles, FuzzCycle::G71), g72 = asks(cycles, FuzzCycle::G72);
+  const int onlyCycle = g71 && g72 ? 0 : g71 ? 71 : 72;
   // One format: nothing drawn (the draws before it are RapidCheck's splits in order, unchanged).
   rc::Gen<CycleFormat> format = formats.size() == 1 ? rc::gen::just(formats.front()) : rc::gen::elementOf(formats);
   return rc::gen::apply(
       [onlyCycle](std::vector<int> choice, std::vector<FuzzSegment> segments, std::vector<int> downs, int dd, int e,
                   int du, int dw, int above, int along, int b, std::vector<int> later, CycleFormat format) {
-        return caseFrom({std::move(choice), std::move(segments), std::move(downs), dd, e, du, dw, above, along, b,
-                         std::move(later), format, onlyCycle});
+        return caseFrom({roughingChoicesFrom(choice), std::move(segments), std::move(downs), dd, e, du, dw, above,
+                         along, b, laterChoicesFrom(later), format, onlyCycle});
       },
-      rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),
+      rc::gen::container<std::vector<int>>(16, rc::gen::inRange(0, 10)),  // RoughingChoices
       // Segments: 8 at most are kept (drawShape), after one of the first 10 may be split in two.
       firstOf(10, genSegment()),
       firstOf(8, rc::gen::inRange(0, 99)),  // which segments go down: the first 8
@@ -348,23 +392,54 @@ rc::Gen<FuzzCase> genRoughingCase(const CycleFormats& formats, int onlyCycle) {
       rc::gen::inRange(1, 500),    // A above C
       rc::gen::inRange(0, 400),    // A's cut coordinate
       rc::gen::inRange(0, 3000),   // B's depth coordinate
-      rc::gen::container<std::vector<int>>(6, rc::gen::inRange(0, 10)),  // Draws::later
+      rc::gen::container<std::vector<int>>(6, rc::gen::inRange(0, 10)),  // LaterChoices
       std::move(format));
 }
 
-bool asks(const FuzzCycles& cycles, FuzzCycle c) { return std::find(cycles.begin(), cycles.end(), c) != cycles.end(); }
+// The G73 cases (g73_case_generator.cpp): the formats apply to G71/G72 only.
+rc::Gen<FuzzCase> genPatternRepeatingCase(const CycleFormats&, const FuzzCycles&) { return genG73Case(); }
+
+// Which generator draws each cycle family's cases: G71 and G72 share one (the cycle is one of its
+// choices), G73 has its own. A run that asks for families of more than one picks the generator
+// with RapidCheck's weightedOneOf, in this table's order, each weighted by how many of the asked
+// families it draws (so a seed keeps its case).
+struct FamilyGenerator {
+  std::vector<FuzzCycle> families;
+  rc::Gen<FuzzCase> (*generator)(const CycleFormats& formats, const FuzzCycles& cycles);
+};
+const std::vector<FamilyGenerator>& familyGenerators() {
+  static const std::vector<FamilyGenerator> generators = {
+      {{FuzzCycle::G71, FuzzCycle::G72}, genRoughingCase},
+      {{FuzzCycle::G73}, genPatternRepeatingCase},
+  };
+  return generators;
+}
+
+// RapidCheck's weightedOneOf (which takes an initializer list only) over a vector: the same draws.
+rc::Gen<FuzzCase> weightedOneOf(std::vector<std::pair<std::size_t, rc::Gen<FuzzCase>>> weighted) {
+  std::vector<std::size_t> weights;
+  std::vector<rc::Gen<FuzzCase>> generators;
+  for (auto& [weight, generator] : weighted) {
+    weights.push_back(weight);
+    generators.push_back(std::move(generator));
+  }
+  return rc::gen::join(rc::Gen<rc::Gen<FuzzCase>>(
+      rc::gen::detail::WeightedElementGen<rc::Gen<FuzzCase>>(std::move(weights), std::move(generators))));
+}
 
 }  // namespace
 
 rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats, const FuzzCycles& cycles) {
   if (formats.empty()) throw std::invalid_argument("genFuzzCase: no cycle format to draw from");
   if (cycles.empty()) throw std::invalid_argument("genFuzzCase: no cycle to draw from");
-  const bool g71 = asks(cycles, FuzzCycle::G71), g72 = asks(cycles, FuzzCycle::G72);
-  if (!asks(cycles, FuzzCycle::G73)) return genRoughingCase(formats, g71 && g72 ? 0 : g71 ? 71 : 72);
-  if (!g71 && !g72) return genG73Case();
-  const std::size_t roughing = static_cast<std::size_t>(g71) + static_cast<std::size_t>(g72);
-  return rc::gen::weightedOneOf<FuzzCase>(
-      {{roughing, genRoughingCase(formats, g71 && g72 ? 0 : g71 ? 71 : 72)}, {1, genG73Case()}});
+  std::vector<std::pair<std::size_t, rc::Gen<FuzzCase>>> weighted;
+  for (const FamilyGenerator& g : familyGenerators()) {
+    const auto asked = std::count_if(g.families.begin(), g.families.end(), [&](FuzzCycle f) { return asks(cycles, f); });
+    if (asked > 0) weighted.push_back({static_cast<std::size_t>(asked), g.generator(formats, cycles)});
+  }
+  // One generator: nothing drawn to choose it (a seed gives the cases it gave before G73 was drawn).
+  if (weighted.size() == 1) return weighted.front().second;
+  return weightedOneOf(std::move(weighted));
 }
 
 // Frame directions as the machine sees them: G71 keeps the axes (each may be mirrored), G72

@@ -44,6 +44,7 @@
 #include <rapidcheck.h>
 
 #include "harness/spec_case.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -99,7 +100,7 @@ struct FuzzSegment {
 
 struct FuzzCase {
   CycleFormat format = CycleFormat::FanucTwoBlocks;
-  std::string profile = "fanuc-0i-f";
+  std::string profile = std::string(kDefaultProfileName);
   int cycle = 71;             // 71, 72 or 73 (G73 is drawn in G71's frame: cut along Z, depth along X)
   bool mirrorCut = false;     // the cut axis runs the other way (towards +Z for G71)
   bool mirrorDepth = false;   // the depth axis runs the other way (inner work for G71)

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 
+#include "harness/fuzz/named_choices.h"
+
 namespace cyclecert {
 
 namespace {
@@ -55,23 +57,43 @@ void endAtTheTop(FuzzCase& c) {
   if (c.segments.empty() || depth < top) c.segments.push_back({FuzzSegment::Line, 0, top - depth + 50});
 }
 
-// Choices 0…9: profile, quadrant, head motion, the invalid parameter and which, G70, boundaries.
-void chooseG73(FuzzCase& c, const std::vector<int>& choice) {
-  c.profile = choice[0] < 6 ? "fanuc-0i-f" : choice[0] < 8 ? "fanuc-0i-c" : "gsk";
-  c.mirrorCut = choice[1] % 4 == 1;
-  c.mirrorDepth = choice[2] % 4 == 1;
+// The ten choices 0…9 a G73 case draws first (field by field in the order drawn), by the decision
+// each makes.
+struct G73Choices {
+  int profile;      // the profile (profileChosen)
+  int mirrorCut;    // the cut axis runs the other way when 1 (mod 4)
+  int mirrorDepth;  // the depth axis runs the other way when 1 (mod 4)
+  int headMotion;   // block ns in G00 (even) or G01 (odd), G00 only without Δk
+  int fault;        // one invalid parameter when 9 (one case in ten)
+  int whichFault;   // which one (mod 4: kFaults)
+  int finish;       // G70 after the cycle when 0 (mod 3)
+  int noRelief;     // no relief along the depth axis (Δi) when 0, along the cut axis (Δk) when 1
+  int noAllowance;  // no allowance (Δu, Δw) when 0
+  int oneDivision;  // d = 1 when < 2
+};
+
+G73Choices g73ChoicesFrom(const std::vector<int>& drawn) {
+  const auto at = [&](std::size_t i) { return choiceAt(drawn, i); };
+  return {at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), at(8), at(9)};
+}
+
+// The choices made: profile, quadrant, head motion, the invalid parameter and which, G70, boundaries.
+void chooseG73(FuzzCase& c, const G73Choices& choice) {
+  c.profile = profileChosen(choice.profile);
+  c.mirrorCut = choice.mirrorCut % 4 == 1;
+  c.mirrorDepth = choice.mirrorDepth % 4 == 1;
   static constexpr G73Fault kFaults[] = {G73Fault::NoDivisions, G73Fault::FractionalDivisions, G73Fault::MissingQ,
                                          G73Fault::ArcHead};
-  c.g73Fault = choice[4] == 9 ? kFaults[choice[5] % 4] : G73Fault::None;  // one case in ten
-  c.finish = choice[6] % 3 == 0;
-  if (choice[7] == 0) c.reliefDepth = 0;  // no relief along a axis: the passes differ along the other only
-  if (choice[7] == 1) c.reliefCut = 0;
-  if (choice[8] == 0) c.allowanceDepth = c.allowanceCut = 0;  // no allowance: the last pass on the shape
-  if (choice[9] < 2) c.divisions = 1;  // G73.D1: one pass, at the allowance
+  c.g73Fault = choice.fault == 9 ? kFaults[choice.whichFault % 4] : G73Fault::None;  // one case in ten
+  c.finish = choice.finish % 3 == 0;
+  if (choice.noRelief == 0) c.reliefDepth = 0;  // no relief along a axis: the passes differ along the other only
+  if (choice.noRelief == 1) c.reliefCut = 0;
+  if (choice.noAllowance == 0) c.allowanceDepth = c.allowanceCut = 0;  // no allowance: the last pass on the shape
+  if (choice.oneDivision < 2) c.divisions = 1;  // G73.D1: one pass, at the allowance
   // Block ns in G00 or G01 (G73.HEAD) — G00 only without Δk: with Δk each pass's B lies behind the
   // last pass's, and a G00 block ns would end in the material that pass left (where the shape near B
   // is flat or rises): the programmer's collision on any controller, so not drawn.
-  c.headMotion = c.reliefCut == 0 ? choice[3] % 2 : 1;
+  c.headMotion = c.reliefCut == 0 ? choice.headMotion % 2 : 1;
 }
 
 // The largest shift along the cut axis (towards A) that keeps a shape shifted by (it, `depthShift`)
@@ -100,7 +122,7 @@ void shiftAwayFromThePart(FuzzCase& c) {
 
 rc::Gen<FuzzCase> genG73Case() {
   return rc::gen::apply(
-      [](std::vector<int> choice, std::vector<FuzzSegment> segments, int di, int dk, int d, int du, int dw, int above,
+      [](const std::vector<int>& choice, std::vector<FuzzSegment> segments, int di, int dk, int d, int du, int dw, int above,
          int ahead, int along, int b) {
         FuzzCase c;
         c.cycle = 73;
@@ -114,14 +136,14 @@ rc::Gen<FuzzCase> genG73Case() {
         c.startAhead = ahead;
         c.startAlong = along;
         c.b = b;
-        chooseG73(c, choice);
+        chooseG73(c, g73ChoicesFrom(choice));
         shiftAwayFromThePart(c);
         endAtTheTop(c);
         return c;
       },
       // RapidCheck scales inRange by the case's size: the choices, the segments and d are drawn
       // over their whole range at every size (they shrink towards their first value all the same).
-      rc::gen::container<std::vector<int>>(10, wholeRange(0, 10)),
+      rc::gen::container<std::vector<int>>(10, wholeRange(0, 10)),  // G73Choices
       // Up to 8 segments (the container's length follows the size 8), each over its whole range.
       rc::gen::resize(8, rc::gen::container<std::vector<FuzzSegment>>(rc::gen::resize(100, genG73Segment()))),
       rc::gen::inRange(0, 800),   // Δi (radius)

@@ -10,6 +10,7 @@
 #include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
 #include "reference/model/profile.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -228,7 +229,7 @@ std::optional<LatheProgram> readLatheProgram(const Program& program, std::string
 }
 
 std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot) {
-  const GCodeSystem system = gCodeSystemOf(*findProfile("fanuc-0i-f"), machineParamsOf(params));
+  const GCodeSystem system = gCodeSystemOf(defaultProfile(), machineParamsOf(params));
   if (system != GCodeSystem::A) {
     whyNot = "the settings select " + gCodeSystemName(system) +
              " (3401#6 GSB / #7 GSC): the relations read G code system A programs (X/Z absolute, U/W "

@@ -1,4 +1,5 @@
 #include "reference/model/profile.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -68,6 +69,11 @@ Profile haas() {
 const std::vector<Profile>& allProfiles() {
   static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk(), hnc(), haas()};
   return profiles;
+}
+
+const Profile& defaultProfile() {
+  static const Profile& profile = *findProfile(kDefaultProfileName);
+  return profile;
 }
 
 const Profile* findProfile(std::string_view name) {

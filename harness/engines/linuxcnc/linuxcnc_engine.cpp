@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "harness/engines/subprocess.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -71,7 +72,7 @@ EngineResult interpret(const SpecCase& c, const LinuxCncProgram& p, const std::s
   CanonicalParse parse = parseCanonical(out);
   if (!parse.error.empty()) return EngineResult::failed("garbage output: " + parse.error);
   Toolpath& path = parse.path;
-  path.profile = c.profile.empty() ? "fanuc-0i-f" : c.profile;
+  path.profile = profileNameOrDefault(c.profile);
   path.plane = p.plane;
   if (exitCode != 0) {
     if (!parse.sawCycle) path.start = p.start;

@@ -24,6 +24,7 @@
 #include "reference/interpreter/g_codes.h"
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
+#include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
 
@@ -145,7 +146,7 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
     return t;
   };
   if (c.mdi) return notApplicable("MDI mode: the case is about FANUC's MDI rule (PS0067); LinuxCNC has no such mode rule");
-  const std::string profileName = c.profile.empty() ? "fanuc-0i-f" : c.profile;
+  const std::string profileName = profileNameOrDefault(c.profile);
   const Profile* profile = findProfile(profileName);
   if (!profile) return notApplicable("unknown profile '" + profileName + "'");
   if (auto why = huazhongFormat(*profile)) return notApplicable(*why);
