@@ -302,6 +302,18 @@ TEST(FuzzGenerator, OneBlockCasesAreWhatTheirFormatCanSay) {
   }
 }
 
+// Huazhong documents no height check (no PS0322): A below C's level would be no alarm but the
+// programmer's collision (the return to A runs through the part), so the hnc format never draws it
+// (before: fuzz --formats all --seed 9 found a no-gouge on the reference, seed 2153864201484202247).
+TEST(FuzzGenerator, HuazhongCasesStartAboveC) {
+  int belowC = 0;
+  for (const FuzzCase& c : sampleOf(4000, {CycleFormat::HuazhongOneBlock})) belowC += c.startAbove < 0;
+  EXPECT_EQ(belowC, 0);
+  int fanucBelowC = 0;  // the FANUC format keeps drawing it: PS0322 (G71.LIMIT.HEIGHT)
+  for (const FuzzCase& c : sampleOf(4000, {CycleFormat::FanucTwoBlocks})) fanucBelowC += c.startAbove < 0;
+  EXPECT_GT(fanucBelowC, 2);
+}
+
 // The reference plans every one-block case (or raises its alarm): none is refused as unsupported.
 TEST(FuzzGenerator, TheReferenceAnswersEveryOneBlockCase) {
   const auto reference = makeEngine("reference");

@@ -294,7 +294,11 @@ void placeStart(FuzzCase& c, const Draws& d) {
   int highest = 0, x = 0;
   for (const FuzzSegment& s : c.segments) highest = std::max(highest, x += s.up);
   const bool otherOutOfRange = d.choice.turnBack >= 8 || c.depthOfCut == 0 || c.headMotion == 2;
-  const bool belowC = d.choice.startLevel == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 && !otherOutOfRange;
+  // Huazhong documents no height check (HNC.G71.FMT's interpretation): a start below C there is no
+  // alarm but the programmer's collision — the return to A runs through the part — so not drawn.
+  const bool heightChecked = c.format != CycleFormat::HuazhongOneBlock;
+  const bool belowC = d.choice.startLevel == 9 && c.allowanceDepth > 0 && c.cycle == 71 && highest > 20 &&
+                      !otherOutOfRange && heightChecked;
   c.startAbove = d.choice.startLevel == 0 ? c.allowanceDepth
                  : belowC                    ? -std::min(d.above / 4 + 1, highest - 10)
                                              : c.allowanceDepth + d.above;
