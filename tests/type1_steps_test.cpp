@@ -120,7 +120,7 @@ TEST(Type1Steps, Step6InfeedsDdPlusEAndStopsBeforeBPrime) {
   EXPECT_NEAR(infeeds[0].to.x, 16.5, 1e-12);
   EXPECT_NEAR(infeeds[2].to.x, 12.5, 1e-12);
   EXPECT_TRUE(nearlyEqual(infeeds[3].to, {2.1, 10.5}, 1e-12));
-  EXPECT_EQ(infeeds[3].phase, "semi-finish");
+  EXPECT_EQ(infeeds[3].phase, MovePhase::SemiFinish);
 }
 
 TEST(Type1Steps, FirstInfeedReachingBPrimeGoesStraightToTheSemiFinish) {
@@ -149,7 +149,7 @@ TEST(Type1Steps, RF1SkipsTheSemiFinishAndTheInfeedToBPrime) {
   c.semiFinish = false;
   const auto moves = planType1(c);
   EXPECT_TRUE(withRule(moves, "G71.T1.STEP7").empty());
-  for (const Move& m : moves) EXPECT_NE(m.phase, "semi-finish");
+  for (const Move& m : moves) EXPECT_NE(m.phase, MovePhase::SemiFinish);
   EXPECT_TRUE(nearlyEqual(moves.back().to, c.start));
 }
 

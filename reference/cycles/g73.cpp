@@ -36,7 +36,7 @@ class G73Planner {
  private:
   Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
 
-  void emit(MoveKind kind, const Segment& along, std::string phase, int pass, std::vector<std::string> rules) {
+  void emit(MoveKind kind, const Segment& along, MovePhase phase, int pass, std::vector<std::string> rules) {
     if (distance(current(), along.to) <= kGeomEps) return;  // zero-length moves are never emitted
     Move m;
     m.kind = kind;
@@ -46,7 +46,7 @@ class G73Planner {
       m.center = along.center;
     }
     if (kind == MoveKind::Feed) m.feed = c_.feed;
-    m.phase = std::move(phase);
+    m.phase = phase;
     m.pass = pass;
     m.rules = std::move(rules);
     moves_.push_back(std::move(m));
@@ -62,27 +62,27 @@ class G73Planner {
   // the cycle's approach (as G71's A → A'); the later ones belong to their pass.
   void rapidToShiftedStart(int k, Point shift) {
     const bool first = k == 1;
-    emit(MoveKind::Rapid, lineTo(c_.start + shift), first ? "approach" : "pass", first ? 0 : k,
+    emit(MoveKind::Rapid, lineTo(c_.start + shift), first ? MovePhase::Approach : MovePhase::Pass, first ? 0 : k,
          {"G73.APPROACH", "G73.PASS.SHIFT"});
   }
 
   // G73.HEAD: the shifted block ns moves as programmed: rapid for G00, cutting feed for G01 (as G71's
   // infeed follows the head block's G00/G01, G71.HEAD.G0G1).
   void followShiftedHead(int k, Point shift) {
-    emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, lineTo(c_.headEnd + shift), "pass", k,
+    emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, lineTo(c_.headEnd + shift), MovePhase::Pass, k,
          {"G73.HEAD", "G71.HEAD.G0G1", "G73.PASS.SHIFT"});
   }
 
   // G73.PASS: the rest of the shape, shifted (arcs keep their radius, their centre moves with the
   // shape), in cutting feed F; the shape need not be monotone (G73.SHAPE).
   void followShiftedBody(int k, Point shift) {
-    for (const Segment& s : c_.body) emit(MoveKind::Feed, s.shifted(shift), "pass", k, {"G73.PASS", "G73.PASS.SHIFT"});
+    for (const Segment& s : c_.body) emit(MoveKind::Feed, s.shifted(shift), MovePhase::Pass, k, {"G73.PASS", "G73.PASS.SHIFT"});
   }
 
   // G73.RETURN: after each pass a rapid straight back to A; after the last, that is the cycle's return.
   void rapidBackToStart(int k) {
     const bool last = k == c_.divisions;
-    emit(MoveKind::Rapid, lineTo(c_.start), last ? "return" : "pass", last ? 0 : k, {"G73.RETURN"});
+    emit(MoveKind::Rapid, lineTo(c_.start), last ? MovePhase::Return : MovePhase::Pass, last ? 0 : k, {"G73.RETURN"});
   }
 
   const G73Cycle& c_;

@@ -54,13 +54,13 @@ class Type1Planner {
 
   Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
 
-  void emit(MoveKind kind, Point to, std::string phase, int pass, std::vector<std::string> rules) {
+  void emit(MoveKind kind, Point to, MovePhase phase, int pass, std::vector<std::string> rules) {
     if (distance(current(), to) <= kGeomEps) return;  // zero-length moves are never emitted
     Move m;
     m.kind = kind;
     m.to = to;
     if (kind == MoveKind::Feed) m.feed = c_.feed;
-    m.phase = std::move(phase);
+    m.phase = phase;
     m.pass = pass;
     m.rules = std::move(rules);
     moves_.push_back(std::move(m));
@@ -76,14 +76,14 @@ class Type1Planner {
   MoveKind infeedKind() const { return c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed; }
 
   // G72.STEP1 / G71.T1.STEP1: rapid from A to A' (shifted by the allowances).
-  void step1RapidToShiftedStart() { emit(MoveKind::Rapid, aPrime_, "approach", 0, {step(1), allowanceRule()}); }
+  void step1RapidToShiftedStart() { emit(MoveKind::Rapid, aPrime_, MovePhase::Approach, 0, {step(1), allowanceRule()}); }
 
   std::string allowanceRule() const { return c_.code == "G72" ? "G72.ALLOW" : "G71.ALLOW.UNITS"; }
   std::string infeedRule() const { return c_.code == "G72" ? "G72.STEP2" : "G71.HEAD.G0G1"; }
 
   // G72.STEP2: the first infeed of Δd from A', towards B'.
   void step2FirstInfeed(double level, int pass) {
-    emit(infeedKind(), {aPrime_.z, level}, "pass", pass, {step(2), infeedRule(), c_.code == "G72" ? "G72.DD" : "G71.DD.MODAL"});
+    emit(infeedKind(), {aPrime_.z, level}, MovePhase::Pass, pass, {step(2), infeedRule(), c_.code == "G72" ? "G72.DD" : "G71.DD.MODAL"});
   }
 
   // G72.STEP3: cut along the cut axis to the rough profile.
@@ -91,31 +91,31 @@ class Type1Planner {
     const double endZ = passEnd(level);
     // A pass whose end lies at or behind its start cuts nothing and is not emitted.
     if (cut_ * (endZ - aPrime_.z) <= kGeomEps) return;
-    emit(MoveKind::Feed, {endZ, level}, "pass", pass, {step(3), c_.code == "G72" ? "G72.STEP3" : "G71.OP"});
+    emit(MoveKind::Feed, {endZ, level}, MovePhase::Pass, pass, {step(3), c_.code == "G72" ? "G72.STEP3" : "G71.OP"});
   }
 
   // G72.STEP4 / G71.T1.RETRACT45: retract e on both axes at 45°, in cutting feed, opposite to the
   // cut and to the infeed.
   void step4Retract45(int pass) {
     const Point p = current();
-    emit(MoveKind::Feed, {p.z - cut_ * c_.retract, p.x - d_ * c_.retract}, "pass", pass,
+    emit(MoveKind::Feed, {p.z - cut_ * c_.retract, p.x - d_ * c_.retract}, MovePhase::Pass, pass,
          {step(4), c_.code == "G72" ? "G72.RETRACT" : "G71.T1.RETRACT45"});
   }
 
   // G72.STEP5: rapid back along the cut axis to A' (seed 001 says "Z of A'" for G72: a slip for X).
-  void step5RapidBackToAPrime(int pass) { emit(MoveKind::Rapid, {aPrime_.z, current().x}, "pass", pass, {step(5)}); }
+  void step5RapidBackToAPrime(int pass) { emit(MoveKind::Rapid, {aPrime_.z, current().x}, MovePhase::Pass, pass, {step(5)}); }
 
   // G72.STEP6: the next infeed, Δd + e from the retracted position.
-  void step6Infeed(double level, int pass) { emit(infeedKind(), {aPrime_.z, level}, "pass", pass, {step(6), infeedRule()}); }
+  void step6Infeed(double level, int pass) { emit(infeedKind(), {aPrime_.z, level}, MovePhase::Pass, pass, {step(6), infeedRule()}); }
 
   // G72.STEP6 (else branch): the infeed that would reach B' goes to B' instead.
-  void infeedToBPrime() { emit(infeedKind(), bPrime_, "semi-finish", 0, {step(6), infeedRule()}); }
+  void infeedToBPrime() { emit(infeedKind(), bPrime_, MovePhase::SemiFinish, 0, {step(6), infeedRule()}); }
 
   // G72.STEP7 / G71.T1.SEMIFIN: cutting feed along the rough profile from B' to C'.
   void step7SemiFinishAlongRoughProfile() {
     for (const Segment& s : roughBody_) {
       const std::size_t before = moves_.size();
-      emit(MoveKind::Feed, s.to, "semi-finish", 0, {step(7), "G71.T1.SEMIFIN"});
+      emit(MoveKind::Feed, s.to, MovePhase::SemiFinish, 0, {step(7), "G71.T1.SEMIFIN"});
       if (s.isArc() && moves_.size() > before) {
         moves_.back().shape = s.kind;
         moves_.back().center = s.center;
@@ -127,11 +127,11 @@ class Type1Planner {
   // axis first, then travels along the cut axis (interpretation: the figure is missing).
   void step8ReturnToStart() {
     if (c_.directReturn) {
-      emit(MoveKind::Rapid, c_.start, "return", 0, {step(8), "G71.DTP"});
+      emit(MoveKind::Rapid, c_.start, MovePhase::Return, 0, {step(8), "G71.DTP"});
       return;
     }
-    emit(MoveKind::Rapid, {current().z, c_.start.x}, "return", 0, {step(8)});
-    emit(MoveKind::Rapid, c_.start, "return", 0, {step(8)});
+    emit(MoveKind::Rapid, {current().z, c_.start.x}, MovePhase::Return, 0, {step(8)});
+    emit(MoveKind::Rapid, c_.start, MovePhase::Return, 0, {step(8)});
   }
 
   // For each rough-profile segment, the deepest the profile has *retreated* (smallest depth)

@@ -162,10 +162,10 @@ class Type2Planner {
              onHeadLine(nearWall[head].to)) {
         ++head;
       }
-      if (head > 0) emit(headMode(), nearWall[head - 1].to, "pass", {"G71.HEAD.G0G1"});
+      if (head > 0) emit(headMode(), nearWall[head - 1].to, MovePhase::Pass, {"G71.HEAD.G0G1"});
       followPath({nearWall.begin() + static_cast<long>(head), nearWall.end()}, {"G71.T2.FOLLOW"});
     }
-    emit(MoveKind::Feed, n.end.p, "pass", {cutRule(), "G71.T2.ORDER"});
+    emit(MoveKind::Feed, n.end.p, MovePhase::Pass, {cutRule(), "G71.T2.ORDER"});
     leave(n);
     previous_ = id;
   }
@@ -191,26 +191,26 @@ class Type2Planner {
     const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
     // Down block ns itself (the tool stands on the head line) it moves in block ns's mode.
     const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kEps;
-    emit(downTheHead ? headMode() : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass",
+    emit(downTheHead ? headMode() : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, MovePhase::Pass,
          {downTheHead ? "G71.HEAD.G0G1" : "G71.T2.POCKET.EXIT"});
-    if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, "pass", {"G71.NSP"});
-    emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
+    if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, MovePhase::Pass, {"G71.NSP"});
+    emit(MoveKind::Rapid, {q.z, current().x}, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
     if (infeedAlongHead) {
       // The type I infeed along a head block parallel to the depth axis (G72.STEP2).
-      emit(headMode(), cutStart, "pass", {"G72.STEP2", "G71.HEAD.G0G1"});
+      emit(headMode(), cutStart, MovePhase::Pass, {"G72.STEP2", "G71.HEAD.G0G1"});
       return;
     }
     if (headAlongDepth() && onHeadLine(q)) {
       // The entry point is on block ns (B, where the shape falls away from it): the way down to it
       // runs along block ns, in its mode (G71.HEAD.G0G1), as the type I infeeds do.
-      emit(headMode(), q, "pass", {"G71.HEAD.G0G1"});
+      emit(headMode(), q, MovePhase::Pass, {"G71.HEAD.G0G1"});
       return;
     }
     const double approach = commonDepth - c_.clearance;
     if (approach > depthOf(current()) + kEps) {
-      emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, "pass", {"G71.T2.POCKET.EXIT"});
+      emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
     }
-    emit(MoveKind::Feed, q, "pass", {"G71.T2.POCKET.EXIT"});
+    emit(MoveKind::Feed, q, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
   }
 
   // After the cut: 45° from a valley bottom, else up the far wall, then along x to e above the
@@ -221,14 +221,14 @@ class Type2Planner {
       // 45° by e, but never back past the bottom's near end (a V, or a bottom shorter than e,
       // would otherwise be left through its near wall).
       const double back = std::min(c_.retract, distance(n.start.p, n.end.p));
-      emit(MoveKind::Feed, {p.z - cut_ * back, p.x - d_ * c_.retract}, "pass", {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
+      emit(MoveKind::Feed, {p.z - cut_ * back, p.x - d_ * c_.retract}, MovePhase::Pass, {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
       return;
     }
     if (!n.openEnd) {
       const auto farWall = profile_.wallAfter(n.end, n.parentDepth, c_.followAlongCut);
       followPath(farWall, {"G71.T2.FOLLOW", "G71.CHAMFER"});
     }
-    emit(MoveKind::Feed, {current().z, profile_.xAtDepth(n.parentDepth - c_.retract)}, "pass", {"G71.T2.FOLLOW"});
+    emit(MoveKind::Feed, {current().z, profile_.xAtDepth(n.parentDepth - c_.retract)}, MovePhase::Pass, {"G71.T2.FOLLOW"});
   }
 
   // ---- return and semi-finish ------------------------------------------------------------------
@@ -241,26 +241,26 @@ class Type2Planner {
   }
 
   void returnToStart() {
-    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, "return", {"G71.T2.RETURN"});
-    emit(MoveKind::Rapid, {c_.start.z, current().x}, "return", {"G71.T2.RETURN"});
-    emit(MoveKind::Rapid, c_.start, "return", {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, MovePhase::Return, {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, {c_.start.z, current().x}, MovePhase::Return, {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, c_.start, MovePhase::Return, {"G71.T2.RETURN"});
   }
 
   // G71.NSP without pockets: from the last cut, above everything, to B' where the semi-finish starts.
   void travelToHeadEnd() {
     const Point bPrime = roughProfileOf(c_).front().to;
-    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, "return", {"G71.NSP"});
-    emit(MoveKind::Rapid, {bPrime.z, current().x}, "return", {"G71.NSP"});
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, MovePhase::Return, {"G71.NSP"});
+    emit(MoveKind::Rapid, {bPrime.z, current().x}, MovePhase::Return, {"G71.NSP"});
   }
 
   // G71.T2.RETURN: the semi-finish pass along the whole rough profile, A' first. With NSP and
   // pockets, the second pass over A–B is rapid (G71.NSP).
   void semiFinishPass(bool headRapid) {
-    emit(MoveKind::Rapid, aPrime_, "semi-finish", {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, aPrime_, MovePhase::SemiFinish, {"G71.T2.RETURN"});
     const std::vector<Segment> rough = roughProfileOf(c_);
     for (std::size_t i = 0; i < rough.size(); ++i) {
       const bool rapid = i == 0 && ((headAlongDepth() && c_.headIsRapid) || headRapid);
-      emitSegment(rough[i], rapid ? MoveKind::Rapid : MoveKind::Feed, "semi-finish", {"G71.T2.RETURN"});
+      emitSegment(rough[i], rapid ? MoveKind::Rapid : MoveKind::Feed, MovePhase::SemiFinish, {"G71.T2.RETURN"});
     }
   }
 
@@ -275,10 +275,10 @@ class Type2Planner {
   Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
 
   void followPath(const std::vector<Segment>& path, const std::vector<std::string>& rules) {
-    for (const Segment& s : path) emitSegment(s, MoveKind::Feed, "pass", rules);
+    for (const Segment& s : path) emitSegment(s, MoveKind::Feed, MovePhase::Pass, rules);
   }
 
-  void emitSegment(const Segment& s, MoveKind kind, const std::string& phase, const std::vector<std::string>& rules) {
+  void emitSegment(const Segment& s, MoveKind kind, MovePhase phase, const std::vector<std::string>& rules) {
     const std::size_t before = moves_.size();
     emit(kind, s.to, phase, rules);
     if (s.isArc() && moves_.size() > before) {
@@ -287,14 +287,14 @@ class Type2Planner {
     }
   }
 
-  void emit(MoveKind kind, Point to, const std::string& phase, std::vector<std::string> rules) {
+  void emit(MoveKind kind, Point to, MovePhase phase, std::vector<std::string> rules) {
     if (distance(current(), to) <= kEps) return;
     Move m;
     m.kind = kind;
     m.to = to;
     if (kind == MoveKind::Feed) m.feed = c_.feed;
     m.phase = phase;
-    m.pass = phase == "pass" ? pass_ : 0;
+    m.pass = phase == MovePhase::Pass ? pass_ : 0;
     m.rules = std::move(rules);
     moves_.push_back(std::move(m));
   }
