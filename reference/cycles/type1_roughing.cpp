@@ -7,8 +7,6 @@ namespace cyclecert {
 
 namespace {
 
-int signOf(double v) { return v > kGeomEps ? 1 : (v < -kGeomEps ? -1 : 0); }
-
 // The rough profile (A', B', C' and the shifted shape) and the pass geometry derived from it.
 class Type1Planner {
  public:

@@ -11,9 +11,6 @@ namespace cyclecert {
 
 namespace {
 
-constexpr double kEps = 1e-9;
-int signOf(double v) { return v > kEps ? 1 : (v < -kEps ? -1 : 0); }
-
 std::vector<Segment> roughProfileOf(const Type2Cycle& c) {
   std::vector<Segment> rough;
   for (const Segment& s : c.shape) rough.push_back(s.shifted(c.allowance));
@@ -70,7 +67,7 @@ class Type2Planner {
     nodes_[0].end = {profile_.pieces().size() - 1, profile_.pieces().back().to};
     std::vector<int> previousLevel = {0};
     const double deepest = profile_.deepest();
-    for (int k = 1; (k - 1) * c_.depthOfCut < deepest - kEps; ++k) {
+    for (int k = 1; (k - 1) * c_.depthOfCut < deepest - kGeomEps; ++k) {
       const double level = k * c_.depthOfCut;
       const double above = level - c_.depthOfCut;
       std::vector<int> thisLevel;
@@ -79,7 +76,7 @@ class Type2Planner {
                                     previousLevel));
       }
       for (const ValleyBottom& b : profile_.valleyBottoms()) {
-        if (b.depth > above + kEps && b.depth <= level + kEps) {
+        if (b.depth > above + kGeomEps && b.depth <= level + kGeomEps) {
           addNode({CutNode::Bottom, b.depth, above, b.start, b.end, false, k, -1, {}}, previousLevel);
         }
       }
@@ -92,7 +89,7 @@ class Type2Planner {
     for (int p : candidates) {
       const CutNode& parent = nodes_[p];
       if (parent.kind == CutNode::Root ||
-          (progress(parent.start) <= progress(node.start) + kEps && progress(node.end) <= progress(parent.end) + kEps)) {
+          (progress(parent.start) <= progress(node.start) + kGeomEps && progress(node.end) <= progress(parent.end) + kGeomEps)) {
         node.parent = p;
         break;
       }
@@ -111,7 +108,7 @@ class Type2Planner {
   std::vector<int> cutOrder() {
     for (CutNode& n : nodes_) {
       std::stable_sort(n.children.begin(), n.children.end(),
-                       [&](int a, int b) { return progress(nodes_[a].start) < progress(nodes_[b].start) - kEps; });
+                       [&](int a, int b) { return progress(nodes_[a].start) < progress(nodes_[b].start) - kGeomEps; });
     }
     std::vector<int> order;
     if (!c_.levelByLevel) {
@@ -121,7 +118,7 @@ class Type2Planner {
     for (std::size_t i = 1; i < nodes_.size(); ++i) order.push_back(static_cast<int>(i));
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
       if (nodes_[a].level != nodes_[b].level) return nodes_[a].level < nodes_[b].level;
-      return progress(nodes_[a].start) < progress(nodes_[b].start) - kEps;
+      return progress(nodes_[a].start) < progress(nodes_[b].start) - kGeomEps;
     });
     return order;
   }
@@ -190,7 +187,7 @@ class Type2Planner {
   void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart, std::optional<double> viaI) {
     const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
     // Down block ns itself (the tool stands on the head line) it moves in block ns's mode.
-    const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kEps;
+    const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kGeomEps;
     emit(downTheHead ? headMode() : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, MovePhase::Pass,
          {downTheHead ? "G71.HEAD.G0G1" : "G71.T2.POCKET.EXIT"});
     if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, MovePhase::Pass, {"G71.NSP"});
@@ -207,7 +204,7 @@ class Type2Planner {
       return;
     }
     const double approach = commonDepth - c_.clearance;
-    if (approach > depthOf(current()) + kEps) {
+    if (approach > depthOf(current()) + kGeomEps) {
       emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
     }
     emit(MoveKind::Feed, q, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
@@ -237,7 +234,7 @@ class Type2Planner {
   double returnDepth() const {
     const double startDepth = depthOf(c_.start);
     const double highest = profile_.shallowestAfterHead();
-    return highest <= startDepth + kEps ? highest - c_.depthOfCut : startDepth;
+    return highest <= startDepth + kGeomEps ? highest - c_.depthOfCut : startDepth;
   }
 
   void returnToStart() {
@@ -266,10 +263,10 @@ class Type2Planner {
 
   // ---- moves ------------------------------------------------------------------------------------
 
-  bool onHeadLine(Point p) const { return std::abs(p.z - aPrime_.z) <= kEps; }
+  bool onHeadLine(Point p) const { return std::abs(p.z - aPrime_.z) <= kGeomEps; }
   // G71.HEAD.G0G1: moves along block ns run in its mode — rapid after G00, cutting feed after G01.
   MoveKind headMode() const { return c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed; }
-  bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kEps; }
+  bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kGeomEps; }
   std::string cutRule() const { return c_.code == "G72" ? "G72.T2" : "G71.OP"; }
   double depthOf(Point p) const { return profile_.depth(p); }
   Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
@@ -288,7 +285,7 @@ class Type2Planner {
   }
 
   void emit(MoveKind kind, Point to, MovePhase phase, std::vector<std::string> rules) {
-    if (distance(current(), to) <= kEps) return;
+    if (distance(current(), to) <= kGeomEps) return;
     Move m;
     m.kind = kind;
     m.to = to;
