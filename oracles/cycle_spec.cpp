@@ -472,15 +472,6 @@ class SpecReader {
     out_.runAfterHuazhong.push_back(m);
   }
 
-  static std::string codeOf(CycleFamily f) {
-    switch (f) {
-      case CycleFamily::G71: return "G71";
-      case CycleFamily::G72: return "G72";
-      case CycleFamily::G73: return "G73";
-    }
-    return "G71";
-  }
-
   std::size_t readCycle(std::size_t index, CycleFamily family) {
     const Block& b = program_.blocks[index];
     const PlaneAxes axes = state_.axes();
@@ -491,7 +482,7 @@ class SpecReader {
     if (oneBlock && (b.has('P') || b.has('Q'))) huazhongAlarm = readHuazhongDepth(b);
     CycleSpec c;
     haasTypeII_ = false;
-    c.code = codeOf(family);
+    c.code = cycleCode(family);
     c.family = family;
     c.line = b.line;
     c.start = state_.planePoint();

@@ -14,6 +14,7 @@
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 #include "reference/model/alarms.h"
+#include "reference/model/cycle_family.h"
 
 namespace cyclecert {
 
@@ -201,7 +202,7 @@ SpecCase g73ReliefFlipped(SpecCase c) {
 // ns and shape) follows the finish shape itself instead of the shape shifted by (Δw, Δu/2).
 void g73LastPassOnTheShape(Toolpath& t) {
   for (const CycleRecord& cycle : t.cycles) {
-    if (cycle.code != "G73") continue;
+    if (cycleFamilyOfCode(cycle.code) != CycleFamily::G73) continue;
     const std::size_t begin = cycle.firstMove, end = std::min(t.moves.size(), cycle.firstMove + cycle.moveCount);
     int last = 0;
     for (std::size_t i = begin; i < end; ++i) {

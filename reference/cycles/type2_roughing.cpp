@@ -5,7 +5,9 @@
 #include <map>
 #include <optional>
 
+#include "reference/cycles/move_emitter.h"
 #include "reference/cycles/pocket_profile.h"
+#include "reference/cycles/roughing_rules.h"
 
 namespace cyclecert {
 
@@ -34,6 +36,8 @@ class Type2Planner {
  public:
   explicit Type2Planner(const Type2Cycle& c)
       : c_(c),
+        rules_(roughingRulesOf(c.family)),
+        moves_(c.start, c.feed),
         d_(c.depthDirection()),
         cut_(c.cutDirection()),
         aPrime_(c.start + c.allowance),
@@ -53,7 +57,7 @@ class Type2Planner {
       semiFinishPass(c_.noRepeatedPath && pockets);
       returnToStart();
     }
-    return std::move(moves_);
+    return moves_.take();
   }
 
  private:
@@ -162,7 +166,7 @@ class Type2Planner {
       if (head > 0) emit(headMode(), nearWall[head - 1].to, MovePhase::Pass, {"G71.HEAD.G0G1"});
       followPath({nearWall.begin() + static_cast<long>(head), nearWall.end()}, {"G71.T2.FOLLOW"});
     }
-    emit(MoveKind::Feed, n.end.p, MovePhase::Pass, {cutRule(), "G71.T2.ORDER"});
+    emit(MoveKind::Feed, n.end.p, MovePhase::Pass, {rules_.typeIICut, "G71.T2.ORDER"});
     leave(n);
     previous_ = id;
   }
@@ -267,41 +271,31 @@ class Type2Planner {
   // G71.HEAD.G0G1: moves along block ns run in its mode — rapid after G00, cutting feed after G01.
   MoveKind headMode() const { return c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed; }
   bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kGeomEps; }
-  std::string cutRule() const { return c_.code == "G72" ? "G72.T2" : "G71.OP"; }
   double depthOf(Point p) const { return profile_.depth(p); }
-  Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
+  Point current() const { return moves_.current(); }
 
   void followPath(const std::vector<Segment>& path, const std::vector<std::string>& rules) {
     for (const Segment& s : path) emitSegment(s, MoveKind::Feed, MovePhase::Pass, rules);
   }
 
+  // Moves of a cut carry its number (the cut tree's order); the others none.
+  int passOf(MovePhase phase) const { return phase == MovePhase::Pass ? pass_ : 0; }
+
   void emitSegment(const Segment& s, MoveKind kind, MovePhase phase, const std::vector<std::string>& rules) {
-    const std::size_t before = moves_.size();
-    emit(kind, s.to, phase, rules);
-    if (s.isArc() && moves_.size() > before) {
-      moves_.back().shape = s.kind;
-      moves_.back().center = s.center;
-    }
+    moves_.emitAlong(kind, s, phase, passOf(phase), rules);
   }
 
   void emit(MoveKind kind, Point to, MovePhase phase, std::vector<std::string> rules) {
-    if (distance(current(), to) <= kGeomEps) return;
-    Move m;
-    m.kind = kind;
-    m.to = to;
-    if (kind == MoveKind::Feed) m.feed = c_.feed;
-    m.phase = phase;
-    m.pass = phase == MovePhase::Pass ? pass_ : 0;
-    m.rules = std::move(rules);
-    moves_.push_back(std::move(m));
+    moves_.emit(kind, to, phase, passOf(phase), std::move(rules));
   }
 
   const Type2Cycle& c_;
+  const RoughingRules& rules_;
+  MoveEmitter moves_;
   int d_, cut_;
   Point aPrime_;
   PocketProfile profile_;
   std::vector<CutNode> nodes_;
-  std::vector<Move> moves_;
   std::map<int, double> pointI_;  // parent node → cut coordinate of its first pocket's entry (G71.NSP)
   int previous_ = 0;  // the root before the first cut
   int pass_ = 0;
