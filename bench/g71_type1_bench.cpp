@@ -50,7 +50,7 @@ void BM_Type1StepsOnly(benchmark::State& state) {
   const int segments = static_cast<int>(state.range(0));
   const int passes = static_cast<int>(state.range(1));
   Type1Cycle c;
-  c.code = "G71";
+  c.family = CycleFamily::G71;
   c.start = {2, passes + 1.0};
   c.headEnd = {2, 0};
   const double rise = static_cast<double>(passes) / segments;

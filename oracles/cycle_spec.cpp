@@ -19,9 +19,6 @@ namespace cyclecert {
 
 namespace {
 
-constexpr double kEps = 1e-9;
-int signOf(double v) { return v > kEps ? 1 : (v < -kEps ? -1 : 0); }
-
 Point toFrame(const CycleSpec& c, Point p) { return c.cutsAlongZ() ? p : transposed(p); }
 
 // Applies the modal G codes of a block that change how later words are read, with the runner's
@@ -72,7 +69,7 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
   if (!head.hasG(0) && !head.hasG(10)) return forbidden("PS0065", head.line, "block ns has no G00/G01");
   const Point a = toFrame(c, c.start);
   const Point b = toFrame(c, c.shape.front().to);
-  if (!headHasDepthWord || std::abs(b.x - a.x) <= kEps) {
+  if (!headHasDepthWord || std::abs(b.x - a.x) <= kGeomEps) {
     return forbidden("PS0325", head.line, "block ns does not move the depth axis");
   }
   const int d = signOf(b.x - a.x);
@@ -90,10 +87,10 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
     std::vector<Point> points = apexesAlong(s);
     points.push_back(s.to);
     for (Point q : points) {
-      if (cut * q.z < furthest - cutTol - kEps) return forbidden(cutCode, s.sourceLine, "the shape turns back along the cut axis");
+      if (cut * q.z < furthest - cutTol - kGeomEps) return forbidden(cutCode, s.sourceLine, "the shape turns back along the cut axis");
       furthest = std::max(furthest, cut * q.z);
       if (!c.typeII) {
-        if (-d * q.x < highest - depthTol - kEps) return forbidden(depthCode, s.sourceLine, "the shape goes deeper again");
+        if (-d * q.x < highest - depthTol - kGeomEps) return forbidden(depthCode, s.sourceLine, "the shape goes deeper again");
         highest = std::max(highest, -d * q.x);
       }
     }
@@ -102,7 +99,7 @@ std::optional<Alarm> checkShape(const CycleSpec& c, const Block& head, bool head
   if (limitHeight && c.cutsAlongZ() && c.allowance.x != 0) {
     for (const Segment& s : c.shape) {
       const Extent e = extent(s);
-      const bool above = c.allowance.x > 0 ? e.xMax > c.start.x + kEps : e.xMin < c.start.x - kEps;
+      const bool above = c.allowance.x > 0 ? e.xMax > c.start.x + kGeomEps : e.xMin < c.start.x - kGeomEps;
       if (above) return forbidden("PS0322", s.sourceLine == 0 ? head.line : s.sourceLine, "the shape passes the start point's height");
     }
   }
@@ -196,7 +193,7 @@ class SpecReader {
     ProgramMove m;
     m.line = b.line;
     m.end = state_.planePoint();
-    if (distance(m.end, before) <= kEps) return std::nullopt;
+    if (distance(m.end, before) <= kGeomEps) return std::nullopt;
     m.rapid = state_.motion == 0;
     m.arc = state_.motion == 2 || state_.motion == 3;
     m.feed = state_.feed;
@@ -475,15 +472,6 @@ class SpecReader {
     out_.runAfterHuazhong.push_back(m);
   }
 
-  static std::string codeOf(CycleFamily f) {
-    switch (f) {
-      case CycleFamily::G71: return "G71";
-      case CycleFamily::G72: return "G72";
-      case CycleFamily::G73: return "G73";
-    }
-    return "G71";
-  }
-
   std::size_t readCycle(std::size_t index, CycleFamily family) {
     const Block& b = program_.blocks[index];
     const PlaneAxes axes = state_.axes();
@@ -494,7 +482,7 @@ class SpecReader {
     if (oneBlock && (b.has('P') || b.has('Q'))) huazhongAlarm = readHuazhongDepth(b);
     CycleSpec c;
     haasTypeII_ = false;
-    c.code = codeOf(family);
+    c.code = cycleCode(family);
     c.family = family;
     c.line = b.line;
     c.start = state_.planePoint();

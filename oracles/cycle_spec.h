@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/model/cycle_family.h"
 #include "reference/model/geometry.h"
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
@@ -14,11 +15,6 @@
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
-
-// The roughing cycle's family: how its passes are laid out and which rules they follow. G71 and G72
-// rough axis-parallel layers Δd apart (along z and x); G73 follows the whole finish shape d times,
-// shifted by shares of the relief (Δi, Δk) (G73.PASS.SHIFT).
-enum class CycleFamily { G71, G72, G73 };
 
 struct CycleSpec {
   std::string code;              // "G71", "G72" or "G73", for messages (the family decides)

@@ -56,7 +56,7 @@ TEST(G73PassShift, OneDivisionIsOnePassAtTheAllowance) {
   const std::vector<Move> moves = planG73Passes(c);
   ASSERT_EQ(moves.size(), 5u);  // approach, head, two body segments, return
   EXPECT_TRUE(nearlyEqual(moves[0].to, {2.1, 30.2}));
-  EXPECT_EQ(moves.back().phase, "return");
+  EXPECT_EQ(moves.back().phase, MovePhase::Return);
 }
 
 // G73.APPROACH, G73.HEAD, G73.PASS, G73.RETURN: per pass a rapid from A to the shifted start, the
@@ -66,7 +66,7 @@ TEST(G73Passes, EachPassIsApproachHeadBodyAndRapidBackToA) {
   ASSERT_EQ(moves.size(), 10u);
   // Pass 1, shift (1.1, 3.2).
   EXPECT_EQ(moves[0].kind, MoveKind::Rapid);
-  EXPECT_EQ(moves[0].phase, "approach");
+  EXPECT_EQ(moves[0].phase, MovePhase::Approach);
   EXPECT_TRUE(nearlyEqual(moves[0].to, {3.1, 33.2}));
   EXPECT_EQ(moves[1].kind, MoveKind::Feed);
   EXPECT_TRUE(nearlyEqual(moves[1].to, {1.1, 18.2}));
@@ -74,13 +74,13 @@ TEST(G73Passes, EachPassIsApproachHeadBodyAndRapidBackToA) {
   EXPECT_TRUE(nearlyEqual(moves[3].to, {-28.9, 23.2}));
   EXPECT_EQ(moves[4].kind, MoveKind::Rapid);
   EXPECT_TRUE(nearlyEqual(moves[4].to, {2, 30}));
-  EXPECT_EQ(moves[4].phase, "pass");
+  EXPECT_EQ(moves[4].phase, MovePhase::Pass);
   // Pass 2, shift (0.1, 0.2): starts with a rapid of pass 2, ends with the cycle's return.
-  EXPECT_EQ(moves[5].phase, "pass");
+  EXPECT_EQ(moves[5].phase, MovePhase::Pass);
   EXPECT_EQ(moves[5].pass, 2);
   EXPECT_TRUE(nearlyEqual(moves[5].to, {2.1, 30.2}));
   EXPECT_TRUE(nearlyEqual(moves[8].to, {-29.9, 20.2}));
-  EXPECT_EQ(moves[9].phase, "return");
+  EXPECT_EQ(moves[9].phase, MovePhase::Return);
   EXPECT_TRUE(nearlyEqual(moves[9].to, {2, 30}));
   for (const Move& m : moves) {
     if (m.kind == MoveKind::Feed) {

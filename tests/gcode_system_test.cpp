@@ -252,7 +252,7 @@ TEST(GCodeSystemShape, G91InsideNsNfPlansTheSamePathAsSystemAsUW) {
     EXPECT_EQ(a.path.moves[k].kind, b.path.moves[k].kind) << k;
   }
   bool finishReachesC = false;
-  for (const Move& m : b.path.moves) finishReachesC = finishReachesC || (m.phase == "finish" && nearlyEqual(m.to, {-20, 20}));
+  for (const Move& m : b.path.moves) finishReachesC = finishReachesC || (m.phase == MovePhase::Finish && nearlyEqual(m.to, {-20, 20}));
   EXPECT_TRUE(finishReachesC);
 }
 

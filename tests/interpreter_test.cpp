@@ -39,7 +39,7 @@ TEST(Interpreter, PathStartsAtTheCycleStartAndReturnsThere) {
 TEST(Interpreter, BlocksAfterTheCycleResumeAfterNfAndBecomeMoves) {
   const Toolpath t = plan(std::string(kShaft) + "G00 X100 Z50;\nM30;\nG00 X200;\n");
   ASSERT_FALSE(t.alarm);
-  EXPECT_EQ(t.moves.back().phase, "program");
+  EXPECT_EQ(t.moves.back().phase, MovePhase::Program);
   EXPECT_TRUE(nearlyEqual(t.moves.back().to, {50, 50}));  // M30 ends the program
 }
 

@@ -244,6 +244,10 @@ TEST_F(JudgeCli, BadToolpathsExitWith2NamingTheFieldAndTheMove) {
       // string, but is number").
       {"shape-number", [](json& j) { j["moves"][2]["shape"] = 3; }, {"/moves/2/shape", "\"line\"", "found 3"}},
       {"phase-number", [](json& j) { j["moves"][2]["phase"] = 7; }, {"/moves/2/phase", "a string", "found 7"}},
+      // A phase spelled otherwise than the toolpath JSON's six is refused, naming the six.
+      {"phase-unknown",
+       [](json& j) { j["moves"][2]["phase"] = "rough"; },
+       {"/moves/2/phase", "\"approach\"", "\"semi-finish\"", "\"program\"", "found \"rough\""}},
       {"pass-string", [](json& j) { j["moves"][2]["pass"] = "two"; }, {"/moves/2/pass", "an integer"}},
       {"alarm-message-number",
        [](json& j) { j["alarm"] = {{"code", "PS0064"}, {"message", 5}}; },

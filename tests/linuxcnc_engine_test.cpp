@@ -330,8 +330,8 @@ TEST_F(LinuxCnc, ParsesCanonicalMovesArcsAndMarkers) {
   EXPECT_EQ(m[3].feed, 0.2);
   EXPECT_EQ(m[4].shape, SegmentKind::ArcCW);
   EXPECT_EQ(*m[4].center, (Point{-20, 5}));
-  EXPECT_EQ(m[4].phase, "");
-  EXPECT_EQ(m[5].phase, "return");
+  EXPECT_EQ(m[4].phase, MovePhase::None);
+  EXPECT_EQ(m[5].phase, MovePhase::Return);
   EXPECT_EQ(m[5].kind, MoveKind::Rapid);
   EXPECT_EQ(m[5].to, (Point{-20, 18}));
 }
@@ -373,7 +373,7 @@ TEST_F(LinuxCnc, PlansASimpleG71FromTheStartPointBackToIt) {
   EXPECT_EQ(p.moves.front().kind, MoveKind::Rapid);
   EXPECT_EQ(p.moves.front().to, (Point{2.1, 18.2})) << "A → A' first";
   EXPECT_EQ(p.moves.back().to, (Point{2, 18})) << "ends at A (the appended return)";
-  EXPECT_EQ(p.moves.back().phase, "return");
+  EXPECT_EQ(p.moves.back().phase, MovePhase::Return);
   bool reachedC = false;
   for (const Move& m : p.moves) {
     if (m.kind == MoveKind::Feed) {

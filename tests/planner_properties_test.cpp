@@ -198,9 +198,9 @@ RC_GTEST_PROP(PlannerProperties, TypeIPassesAreBoundedAndEndOnTheRoughContour, (
   for (const Move& m : t.moves) {
     const Point to = toFrame(m.to, c, zOffset);
     if (m.kind == MoveKind::Feed) RC_ASSERT(std::abs(*m.feed - 0.2) < 1e-12);
-    const bool cut = m.phase == "pass" && m.kind == MoveKind::Feed && std::abs(to.x - at.x) < 1e-9 && to.z < at.z - 1e-9;
+    const bool cut = m.phase == MovePhase::Pass && m.kind == MoveKind::Feed && std::abs(to.x - at.x) < 1e-9 && to.z < at.z - 1e-9;
     // An infeed to a new pass level (at A'.z): at most Δd deeper than the level before it.
-    if (m.phase == "pass" && std::abs(to.z - aPrime.z) < 1e-9 && to.x < lastLevel - 1e-9) {
+    if (m.phase == MovePhase::Pass && std::abs(to.z - aPrime.z) < 1e-9 && to.x < lastLevel - 1e-9) {
       RC_ASSERT(lastLevel - to.x <= dd + 1e-9);
       lastLevel = to.x;
     }
@@ -212,14 +212,14 @@ RC_GTEST_PROP(PlannerProperties, TypeIPassesAreBoundedAndEndOnTheRoughContour, (
         RC_ASSERT(onContour(to, body));
       }
     }
-    if (m.phase == "semi-finish" && m.kind == MoveKind::Feed) RC_ASSERT(onContour(to, body));
+    if (m.phase == MovePhase::SemiFinish && m.kind == MoveKind::Feed) RC_ASSERT(onContour(to, body));
     at = to;
   }
   // The material left between the deepest pass and B' is at most Δd.
   RC_ASSERT(lastLevel - bPrime.x <= dd + 1e-9);
   // Path ends at the start point.
   RC_ASSERT(nearlyEqual(t.from(t.moves.size()), t.start, 1e-9));
-  RC_ASSERT(std::none_of(t.moves.begin(), t.moves.end(), [&](const Move& m) { return m.phase == "semi-finish"; }) == c.rf1);
+  RC_ASSERT(std::none_of(t.moves.begin(), t.moves.end(), [&](const Move& m) { return m.phase == MovePhase::SemiFinish; }) == c.rf1);
 }
 
 // The least radius of the rough profile at z (its lower envelope), or nothing outside its span.
@@ -267,7 +267,7 @@ RC_GTEST_PROP(PlannerProperties, TypeIIStaysOutOfThePartReachesEveryValleyBottom
   const double top = rough.front().from.x;
   const auto reached = [&](Point b) {
     for (std::size_t i = 0; i < t.moves.size(); ++i) {
-      if (t.moves[i].phase != "pass") continue;
+      if (t.moves[i].phase != MovePhase::Pass) continue;
       Segment seg = t.segment(i);
       if (seg.isArc()) {
         if (distance(toFrame(seg.to, c, zOffset), b) < 1e-6) return true;

@@ -27,7 +27,7 @@ TEST(ProgramPosition, WorkCoordinateSystemAndMotionInOneBlockMove) {
 TEST(ProgramPosition, WorkCoordinateSystemMotionAfterTheCycleIsAMove) {
   const Toolpath t = plan("G00 X40 Z2;\n" + std::string(kCycle) + "G55 G00 X100. Z50.;\nM30;\n");
   ASSERT_FALSE(t.alarm);
-  EXPECT_EQ(t.moves.back().phase, "program");
+  EXPECT_EQ(t.moves.back().phase, MovePhase::Program);
   EXPECT_TRUE(nearlyEqual(t.moves.back().to, {50, 50}));
 }
 
@@ -51,7 +51,7 @@ TEST(ProgramPosition, TheApproachBeforeTheFirstCycleIsDrawn) {
   ASSERT_FALSE(t.alarm) << t.alarm->code << " " << t.alarm->message;
   EXPECT_TRUE(nearlyEqual(t.start, {100, 50}));
   ASSERT_FALSE(t.moves.empty());
-  EXPECT_EQ(t.moves.front().phase, "program");
+  EXPECT_EQ(t.moves.front().phase, MovePhase::Program);
   EXPECT_TRUE(nearlyEqual(t.moves.front().to, {2, 20}));
   ASSERT_EQ(t.cycles.size(), 1u);
   EXPECT_EQ(t.cycles.front().firstMove, 1u);

@@ -97,12 +97,12 @@ Segment arc(SegmentKind kind, Point from, Point to, Point centre) {
   return Segment{kind, from, to, centre, 0};
 }
 
-Move rapid(Point to) { return Move{MoveKind::Rapid, SegmentKind::Line, to, {}, {}, "approach", 0, {}}; }
-Move feed(Point to, const std::string& phase = "semi-finish", int pass = 0) {
+Move rapid(Point to) { return Move{MoveKind::Rapid, SegmentKind::Line, to, {}, {}, MovePhase::Approach, 0, {}}; }
+Move feed(Point to, MovePhase phase = MovePhase::SemiFinish, int pass = 0) {
   return Move{MoveKind::Feed, SegmentKind::Line, to, {}, 0.2, phase, pass, {}};
 }
 Move arcMove(SegmentKind kind, Point to, Point centre) {
-  return Move{MoveKind::Feed, kind, to, centre, 0.2, "semi-finish", 0, {}};
+  return Move{MoveKind::Feed, kind, to, centre, 0.2, MovePhase::SemiFinish, 0, {}};
 }
 
 // A small G71 type I example (Δd = 5, e = 0.5, Δu/2 = 0.25, Δw = 0.5, DTP = 0): A = (5, 30),
@@ -117,11 +117,11 @@ PlotInput example() {
   in.path.start = {5, 30};
   in.path.cycles.push_back(CycleRecord{"G71", 10, {5, 30}, 0, 0, {}, {}, false});
   in.path.moves = {rapid({5.5, 30.25}),          rapid({5.5, 25.25}),
-                   feed({-37, 25.25}, "pass", 1),  feed({-36.5, 25.75}, "pass", 1),
+                   feed({-37, 25.25}, MovePhase::Pass, 1),  feed({-36.5, 25.75}, MovePhase::Pass, 1),
                    rapid({5.5, 25.75}),          rapid({5.5, 20.25}),
-                   feed({-30.75, 20.25}, "pass", 2), feed({-30.25, 20.75}, "pass", 2),
+                   feed({-30.75, 20.25}, MovePhase::Pass, 2), feed({-30.25, 20.75}, MovePhase::Pass, 2),
                    rapid({5.5, 20.75}),          rapid({5.5, 15.25}),
-                   feed({-24.5, 15.25}, "pass", 3), feed({-24, 15.75}, "pass", 3),
+                   feed({-24.5, 15.25}, MovePhase::Pass, 3), feed({-24, 15.75}, MovePhase::Pass, 3),
                    rapid({5.5, 15.75}),          rapid({5.5, 10.25}),
                    feed({-19.5, 10.25}),
                    arcMove(SegmentKind::ArcCW, {-24.5, 15.25}, {-19.5, 15.25}),
@@ -319,7 +319,7 @@ TEST(Svg, DegenerateInputStillParses) {
   point.path.start = p;
   Move noCentre = arcMove(SegmentKind::ArcCW, p, p);
   noCentre.center.reset();
-  point.path.moves = {rapid(p), feed(p, "pass", 1), arcMove(SegmentKind::ArcCCW, p, p), noCentre};
+  point.path.moves = {rapid(p), feed(p, MovePhase::Pass, 1), arcMove(SegmentKind::ArcCCW, p, p), noCentre};
   const std::string b = renderToolpathSvg(point);
   const ptree doc = parseSvg(b);
   EXPECT_EQ(groupChildren(doc, "toolpath", "path").size(), 4u);
@@ -333,7 +333,7 @@ TEST(Svg, NeverWritesNanOrInf) {
   PlotInput in = example();
   in.path.moves.push_back(rapid({nan, inf}));
   in.path.moves.push_back(arcMove(SegmentKind::ArcCW, {1, 2}, {nan, 0}));
-  in.path.moves.push_back(feed({-inf, 5}, "pass", 3));
+  in.path.moves.push_back(feed({-inf, 5}, MovePhase::Pass, 3));
   in.finish.segments.push_back(line({-40, 27}, {nan, nan}));
   in.path.cycles.push_back(CycleRecord{"G71", 20, {inf, 0}, 0, 0, {}, {}, false});
   const std::string svg = renderToolpathSvg(in);

@@ -15,7 +15,7 @@ Segment line(Point a, Point b) { return {SegmentKind::Line, a, b, {}, 0}; }
 // Allowance (0.1, 0.5): A' (2.1, 20.5), B' (2.1, 10.5), rough taper (-7.9, 15.5) → C' (-19.9, 15.5).
 Type1Cycle shaft() {
   Type1Cycle c;
-  c.code = "G71";
+  c.family = CycleFamily::G71;
   c.start = {2, 20};
   c.headEnd = {2, 10};
   c.body = {line({2, 10}, {-8, 15}), line({-8, 15}, {-20, 15})};
@@ -86,7 +86,7 @@ TEST(Type1Steps, Step4DirectionFollowsTheQuadrant) {
   // Inner bore towards +z: A (-2, 5), B (-2, 15) (infeed +x), shape rising... retreat is −x,
   // cut +z. Retract must be −e in z and −e in x.
   Type1Cycle c;
-  c.code = "G71";
+  c.family = CycleFamily::G71;
   c.start = {-2, 5};
   c.headEnd = {-2, 15};
   c.body = {line({-2, 15}, {20, 8})};
@@ -120,7 +120,7 @@ TEST(Type1Steps, Step6InfeedsDdPlusEAndStopsBeforeBPrime) {
   EXPECT_NEAR(infeeds[0].to.x, 16.5, 1e-12);
   EXPECT_NEAR(infeeds[2].to.x, 12.5, 1e-12);
   EXPECT_TRUE(nearlyEqual(infeeds[3].to, {2.1, 10.5}, 1e-12));
-  EXPECT_EQ(infeeds[3].phase, "semi-finish");
+  EXPECT_EQ(infeeds[3].phase, MovePhase::SemiFinish);
 }
 
 TEST(Type1Steps, FirstInfeedReachingBPrimeGoesStraightToTheSemiFinish) {
@@ -149,7 +149,7 @@ TEST(Type1Steps, RF1SkipsTheSemiFinishAndTheInfeedToBPrime) {
   c.semiFinish = false;
   const auto moves = planType1(c);
   EXPECT_TRUE(withRule(moves, "G71.T1.STEP7").empty());
-  for (const Move& m : moves) EXPECT_NE(m.phase, "semi-finish");
+  for (const Move& m : moves) EXPECT_NE(m.phase, MovePhase::SemiFinish);
   EXPECT_TRUE(nearlyEqual(moves.back().to, c.start));
 }
 
@@ -169,7 +169,7 @@ TEST(Type1Steps, Step8ReturnsConventionallyOrDirectly) {
 
 TEST(Type1Steps, G72CitesItsOwnSteps) {
   Type1Cycle c = shaft();
-  c.code = "G72";
+  c.family = CycleFamily::G72;
   const auto moves = planType1(c);
   EXPECT_EQ(moves[0].rules.front(), "G72.STEP1");
   EXPECT_FALSE(withRule(moves, "G72.STEP8").empty());

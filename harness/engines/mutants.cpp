@@ -14,6 +14,7 @@
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 #include "reference/model/alarms.h"
+#include "reference/model/cycle_family.h"
 #include "reference/profiles/default_profile.h"
 
 namespace cyclecert {
@@ -28,7 +29,7 @@ bool isG72(const Move& m) {
 int lastPass(const Toolpath& t) {
   int last = 0;
   for (const Move& m : t.moves) {
-    if (m.phase == "pass") last = std::max(last, m.pass);
+    if (m.phase == MovePhase::Pass) last = std::max(last, m.pass);
   }
   return last;
 }
@@ -59,7 +60,7 @@ void lastPassDeeper(Toolpath& t) {  // the last pass 0.3 mm too deep
   const int last = lastPass(t);
   if (last == 0) return;
   for (Move& m : t.moves) {
-    if (m.phase != "pass" || m.pass != last) continue;
+    if (m.phase != MovePhase::Pass || m.pass != last) continue;
     if (isG72(m)) m.to.z -= 0.3;  // deeper for the usual facing towards −z
     else m.to.x -= 0.3;           // deeper for outer turning
   }
@@ -67,7 +68,7 @@ void lastPassDeeper(Toolpath& t) {  // the last pass 0.3 mm too deep
 
 void feedsAsRapids(Toolpath& t) {  // the cuts along the cut axis made at rapid traverse
   for (Move& m : t.moves) {
-    if (m.phase == "pass" && (cites(m, "G72.STEP3") || cites(m, "G71.OP"))) {
+    if (m.phase == MovePhase::Pass && (cites(m, "G72.STEP3") || cites(m, "G71.OP"))) {
       m.kind = MoveKind::Rapid;
       m.feed.reset();
     }
@@ -82,7 +83,7 @@ void arcsReversed(Toolpath& t) {
 }
 
 void noFinalReturn(Toolpath& t) {
-  while (!t.moves.empty() && t.moves.back().phase == "return") t.moves.pop_back();
+  while (!t.moves.empty() && t.moves.back().phase == MovePhase::Return) t.moves.pop_back();
 }
 
 // Type II: the approach into a pocket made at rapid all the way to the entry point, without the
@@ -202,17 +203,17 @@ SpecCase g73ReliefFlipped(SpecCase c) {
 // ns and shape) follows the finish shape itself instead of the shape shifted by (Δw, Δu/2).
 void g73LastPassOnTheShape(Toolpath& t) {
   for (const CycleRecord& cycle : t.cycles) {
-    if (cycle.code != "G73") continue;
+    if (cycleFamilyOfCode(cycle.code) != CycleFamily::G73) continue;
     const std::size_t begin = cycle.firstMove, end = std::min(t.moves.size(), cycle.firstMove + cycle.moveCount);
     int last = 0;
     for (std::size_t i = begin; i < end; ++i) {
-      if (t.moves[i].phase == "pass") last = std::max(last, t.moves[i].pass);
+      if (t.moves[i].phase == MovePhase::Pass) last = std::max(last, t.moves[i].pass);
     }
     std::size_t first = begin;
-    while (first < end && !(t.moves[first].phase == "pass" && t.moves[first].pass == last)) ++first;
+    while (first < end && !(t.moves[first].phase == MovePhase::Pass && t.moves[first].pass == last)) ++first;
     if (first == end) continue;  // no pass (nothing to cut)
     if (first > begin && cites(t.moves[first - 1], "G73.APPROACH") && !cites(t.moves[first], "G73.APPROACH")) --first;
-    for (std::size_t i = first; i < end && t.moves[i].phase != "return" && !cites(t.moves[i], "G73.RETURN"); ++i) {
+    for (std::size_t i = first; i < end && t.moves[i].phase != MovePhase::Return && !cites(t.moves[i], "G73.RETURN"); ++i) {
       t.moves[i].to = t.moves[i].to - cycle.allowance;
       if (t.moves[i].center) *t.moves[i].center = *t.moves[i].center - cycle.allowance;
     }
@@ -236,7 +237,7 @@ EngineResult roughedAtShapeFeed(const SpecCase& c) {
   const std::optional<double> feed = shapeProgramFeed(c.program);
   return planned(c, [&](Toolpath& t) {
     for (Move& m : t.moves) {
-      if (feed && m.kind == MoveKind::Feed && (m.phase == "pass" || m.phase == "semi-finish")) m.feed = *feed;
+      if (feed && m.kind == MoveKind::Feed && (m.phase == MovePhase::Pass || m.phase == MovePhase::SemiFinish)) m.feed = *feed;
     }
   });
 }
@@ -252,7 +253,7 @@ const std::vector<Fault>& faults() {
          return planned(c);
        }},
       {"semifinish-skipped", "skips the semi-finish pass",
-       [](SpecCase c) { return planned(c, [](Toolpath& t) { eraseIf(t, [](const Move& m) { return m.phase == "semi-finish"; }); }); }},
+       [](SpecCase c) { return planned(c, [](Toolpath& t) { eraseIf(t, [](const Move& m) { return m.phase == MovePhase::SemiFinish; }); }); }},
       {"rapid-for-feed", "makes the roughing cuts at rapid traverse", [](SpecCase c) { return planned(c, feedsAsRapids); }},
       {"pocket-order", "roughs pockets in the other controller's order (0i-F ⇄ 0i-C)",
        [](SpecCase c) {
@@ -263,7 +264,7 @@ const std::vector<Fault>& faults() {
        [](SpecCase c) {
          return planned(c, [](Toolpath& t) {
            const int last = lastPass(t);
-           eraseIf(t, [&](const Move& m) { return m.phase == "pass" && m.pass == last && last > 0; });
+           eraseIf(t, [&](const Move& m) { return m.phase == MovePhase::Pass && m.pass == last && last > 0; });
          });
        }},
       {"arc-direction", "cuts every arc the other way round (G02 ⇄ G03)", [](SpecCase c) { return planned(c, arcsReversed); }},

@@ -24,7 +24,7 @@ std::string describe(const Move& m) {
   s << kindName(m.kind) << " " << shapeName(m.shape) << " to " << describe(m.to);
   if (m.center) s << " centre " << describe(*m.center);
   if (m.feed) s << " F" << *m.feed;
-  if (!m.phase.empty()) s << " [" << m.phase << (m.pass ? " " + std::to_string(m.pass) : "") << "]";
+  if (m.phase != MovePhase::None) s << " [" << phaseName(m.phase) << (m.pass ? " " + std::to_string(m.pass) : "") << "]";
   return s.str();
 }
 

@@ -81,7 +81,7 @@ Move finishMove(const Segment& seg, MoveKind kind, double feed) {
   m.to = seg.to;
   if (seg.isArc()) m.center = seg.center;
   if (kind == MoveKind::Feed) m.feed = feed;
-  m.phase = "finish";
+  m.phase = MovePhase::Finish;
   m.rules = {"G70.EX"};
   return m;
 }
@@ -153,7 +153,7 @@ CycleOutcome planG70(const CycleCall& call) {
   // Back to the start point by rapid; compensation is cancelled on the way (G71.TNRC.CANCEL).
   Move back;
   back.to = start;
-  back.phase = "return";
+  back.phase = MovePhase::Return;
   back.rules = {"G70.EX"};
   if (out.moves.empty() || distance(out.moves.back().to, start) > kGeomEps) out.moves.push_back(back);
   out.resumeAt = call.blockIndex + 1;

@@ -19,7 +19,7 @@ RoughingFormat g71Format(const CycleCall& call) { return {"G71", call.modal.axes
 
 RoughingFrame g71Frame(const CycleCall& call) {
   const PlaneAxes axes = call.modal.axes();
-  return {"G71", false, {alarm::kNotMonotonicFirst, call.params.get("5145"), std::string(1, axes.first)},
+  return {CycleFamily::G71, false, {alarm::kNotMonotonicFirst, call.params.get("5145"), std::string(1, axes.first)},
           {alarm::kNotMonotonicSecond, call.params.get("5146"), std::string(1, axes.second)}};
 }
 

@@ -19,7 +19,7 @@ RoughingFormat g72Format(const CycleCall& call) { return {"G72", call.modal.axes
 // In the frame, the cut axis is the plane's 2nd axis (PS0329, 5146) and the depth axis its 1st.
 RoughingFrame g72Frame(const CycleCall& call) {
   const PlaneAxes axes = call.modal.axes();
-  return {"G72", true, {alarm::kNotMonotonicSecond, call.params.get("5146"), std::string(1, axes.second)},
+  return {CycleFamily::G72, true, {alarm::kNotMonotonicSecond, call.params.get("5146"), std::string(1, axes.second)},
           {alarm::kNotMonotonicFirst, call.params.get("5145"), std::string(1, axes.first)}};
 }
 

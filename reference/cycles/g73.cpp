@@ -8,6 +8,7 @@
 #include <string>
 
 #include "reference/cycles/cycles.h"
+#include "reference/cycles/move_emitter.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/cycles/series10_format.h"
 #include "reference/gcode/address_ranges.h"
@@ -20,7 +21,7 @@ namespace {
 // The passes, one after the other, from A and back to A.
 class G73Planner {
  public:
-  explicit G73Planner(const G73Cycle& c) : c_(c) {}
+  explicit G73Planner(const G73Cycle& c) : c_(c), moves_(c.start, c.feed) {}
 
   std::vector<Move> plan() {
     for (int k = 1; k <= c_.divisions; ++k) {
@@ -30,63 +31,41 @@ class G73Planner {
       followShiftedBody(k, shift);
       rapidBackToStart(k);
     }
-    return std::move(moves_);
+    return moves_.take();
   }
 
  private:
-  Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
-
-  void emit(MoveKind kind, const Segment& along, std::string phase, int pass, std::vector<std::string> rules) {
-    if (distance(current(), along.to) <= kGeomEps) return;  // zero-length moves are never emitted
-    Move m;
-    m.kind = kind;
-    m.to = along.to;
-    if (along.isArc()) {
-      m.shape = along.kind;
-      m.center = along.center;
-    }
-    if (kind == MoveKind::Feed) m.feed = c_.feed;
-    m.phase = std::move(phase);
-    m.pass = pass;
-    m.rules = std::move(rules);
-    moves_.push_back(std::move(m));
-  }
-
-  static Segment lineTo(Point to) {
-    Segment s;
-    s.to = to;
-    return s;
-  }
-
   // G73.APPROACH: each pass starts with a rapid from A to A shifted for the pass. The first one is
   // the cycle's approach (as G71's A → A'); the later ones belong to their pass.
   void rapidToShiftedStart(int k, Point shift) {
     const bool first = k == 1;
-    emit(MoveKind::Rapid, lineTo(c_.start + shift), first ? "approach" : "pass", first ? 0 : k,
-         {"G73.APPROACH", "G73.PASS.SHIFT"});
+    moves_.emit(MoveKind::Rapid, c_.start + shift, first ? MovePhase::Approach : MovePhase::Pass, first ? 0 : k,
+                {"G73.APPROACH", "G73.PASS.SHIFT"});
   }
 
   // G73.HEAD: the shifted block ns moves as programmed: rapid for G00, cutting feed for G01 (as G71's
   // infeed follows the head block's G00/G01, G71.HEAD.G0G1).
   void followShiftedHead(int k, Point shift) {
-    emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, lineTo(c_.headEnd + shift), "pass", k,
-         {"G73.HEAD", "G71.HEAD.G0G1", "G73.PASS.SHIFT"});
+    moves_.emit(c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed, c_.headEnd + shift, MovePhase::Pass, k,
+                {"G73.HEAD", "G71.HEAD.G0G1", "G73.PASS.SHIFT"});
   }
 
   // G73.PASS: the rest of the shape, shifted (arcs keep their radius, their centre moves with the
   // shape), in cutting feed F; the shape need not be monotone (G73.SHAPE).
   void followShiftedBody(int k, Point shift) {
-    for (const Segment& s : c_.body) emit(MoveKind::Feed, s.shifted(shift), "pass", k, {"G73.PASS", "G73.PASS.SHIFT"});
+    for (const Segment& s : c_.body) {
+      moves_.emitAlong(MoveKind::Feed, s.shifted(shift), MovePhase::Pass, k, {"G73.PASS", "G73.PASS.SHIFT"});
+    }
   }
 
   // G73.RETURN: after each pass a rapid straight back to A; after the last, that is the cycle's return.
   void rapidBackToStart(int k) {
     const bool last = k == c_.divisions;
-    emit(MoveKind::Rapid, lineTo(c_.start), last ? "return" : "pass", last ? 0 : k, {"G73.RETURN"});
+    moves_.emit(MoveKind::Rapid, c_.start, last ? MovePhase::Return : MovePhase::Pass, last ? 0 : k, {"G73.RETURN"});
   }
 
   const G73Cycle& c_;
-  std::vector<Move> moves_;
+  MoveEmitter moves_;
 };
 
 // G73.FMT: the reliefs are given with the plane's incremental addresses, Δi with the 2nd axis's (U

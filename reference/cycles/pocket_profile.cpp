@@ -6,7 +6,6 @@
 namespace cyclecert {
 
 namespace {
-constexpr double kEps = 1e-9;
 
 // Splits an arc at its apexes so that every piece is monotonic on both axes.
 void appendMonotonicPieces(const Segment& s, std::vector<Segment>& out) {
@@ -37,14 +36,14 @@ PocketProfile::PocketProfile(const std::vector<Segment>& segments, std::size_t h
                              int depthSign, int cutSign)
     : origin_(origin), d_(depthSign), c_(cutSign) {
   for (std::size_t i = 0; i < segments.size(); ++i) {
-    if (segments[i].length() <= kEps) continue;
+    if (segments[i].length() <= kGeomEps) continue;
     appendMonotonicPieces(segments[i], pieces_);
     if (i + 1 == headCount) headPieces_ = pieces_.size();
   }
   findValleyBottoms();
 }
 
-bool PocketProfile::isAlongCut(std::size_t i) const { return std::abs(pieces_[i].to.x - pieces_[i].from.x) <= kEps; }
+bool PocketProfile::isAlongCut(std::size_t i) const { return std::abs(pieces_[i].to.x - pieces_[i].from.x) <= kGeomEps; }
 
 double PocketProfile::deepest() const {
   double best = 0;
@@ -62,8 +61,8 @@ bool PocketProfile::hasPocketWall() const {
   bool cameBack = false;
   for (std::size_t i = headPieces_; i < pieces_.size(); ++i) {
     const double change = depth(pieces_[i].to) - depth(pieces_[i].from);
-    if (change < -kEps) cameBack = true;
-    if (change > kEps && cameBack) return true;
+    if (change < -kGeomEps) cameBack = true;
+    if (change > kGeomEps && cameBack) return true;
   }
   return false;
 }
@@ -79,8 +78,8 @@ std::vector<ProfileInterval> PocketProfile::intervalsAt(double level) const {
   std::optional<ProfilePos> openedAt;
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
     const Segment& s = pieces_[i];
-    const bool fromDeeper = depth(s.from) > level + kEps;
-    const bool toDeeper = depth(s.to) > level + kEps;
+    const bool fromDeeper = depth(s.from) > level + kGeomEps;
+    const bool toDeeper = depth(s.to) > level + kGeomEps;
     if (!fromDeeper && toDeeper) openedAt = ProfilePos{i, crossing(i, level).value_or(s.from)};
     if (fromDeeper && !toDeeper && openedAt) {
       out.push_back({*openedAt, {i, crossing(i, level).value_or(s.to)}, false});
@@ -98,14 +97,14 @@ void PocketProfile::findValleyBottoms() {
       // Consecutive blocks along the cut axis at one depth are one valley bottom, however the
       // program splits it (the metamorphic split-segment relation found the difference).
       const std::size_t first = i;
-      while (i + 1 < pieces_.size() && isAlongCut(i + 1) && std::abs(depth(pieces_[i + 1].from) - depth(pieces_[first].from)) <= kEps) ++i;
+      while (i + 1 < pieces_.size() && isAlongCut(i + 1) && std::abs(depth(pieces_[i + 1].from) - depth(pieces_[first].from)) <= kGeomEps) ++i;
       bottoms_.push_back({{first, pieces_[first].from}, {i, pieces_[i].to}, depth(pieces_[first].from)});
       continue;
     }
     // A vertex where the profile stops going deeper and comes back (a V, or an arc's apex).
     if (i + 1 >= pieces_.size() || isAlongCut(i + 1)) continue;
-    const bool goesDeeper = depth(pieces_[i].to) > depth(pieces_[i].from) + kEps;
-    const bool comesBack = depth(pieces_[i + 1].to) < depth(pieces_[i + 1].from) - kEps;
+    const bool goesDeeper = depth(pieces_[i].to) > depth(pieces_[i].from) + kGeomEps;
+    const bool comesBack = depth(pieces_[i + 1].to) < depth(pieces_[i + 1].from) - kGeomEps;
     if (goesDeeper && comesBack) bottoms_.push_back({{i, pieces_[i].to}, {i + 1, pieces_[i].to}, depth(pieces_[i].to)});
   }
 }
@@ -116,15 +115,15 @@ std::vector<Segment> PocketProfile::wallAbove(const ProfilePos& from, double lev
   for (std::size_t i = from.piece + 1; i-- > 0;) {
     const Segment& s = pieces_[i];
     // Walking back along piece i from `at` towards s.from, the profile rises (or the walk stops).
-    if (depth(s.from) < level - kEps) {
+    if (depth(s.from) < level - kGeomEps) {
       const Point top = crossing(i, level).value_or(s.from);
-      if (distance(top, at) > kEps) path.push_back(partOf(s, top, at));
+      if (distance(top, at) > kGeomEps) path.push_back(partOf(s, top, at));
       break;
     }
-    if (distance(s.from, at) > kEps) path.push_back(partOf(s, s.from, at));
+    if (distance(s.from, at) > kGeomEps) path.push_back(partOf(s, s.from, at));
     at = s.from;
     // Stop at the top of the wall: going further back, the profile would not rise any more.
-    if (i == 0 || depth(pieces_[i - 1].from) >= depth(pieces_[i - 1].to) - kEps) break;
+    if (i == 0 || depth(pieces_[i - 1].from) >= depth(pieces_[i - 1].to) - kGeomEps) break;
   }
   std::reverse(path.begin(), path.end());
   return path;
@@ -135,11 +134,11 @@ std::vector<Segment> PocketProfile::wallAfter(const ProfilePos& from, double lev
   Point at = from.p;
   for (std::size_t i = from.piece; i < pieces_.size(); ++i) {
     const Segment& s = pieces_[i];
-    if (distance(at, s.to) <= kEps) continue;  // the crossing is this piece's end
-    const bool rises = depth(s.to) < depth(s.from) - kEps;
+    if (distance(at, s.to) <= kGeomEps) continue;  // the crossing is this piece's end
+    const bool rises = depth(s.to) < depth(s.from) - kGeomEps;
     if (isAlongCut(i) && !followAlongCut) break;  // G71.CHAMFER: retract instead (R16 = 0)
     if (!rises && !isAlongCut(i)) break;          // a peak: the profile goes deeper again
-    if (depth(s.to) < level - kEps) {
+    if (depth(s.to) < level - kGeomEps) {
       path.push_back(partOf(s, at, crossing(i, level).value_or(s.to)));
       break;
     }

@@ -3,6 +3,7 @@
 #include "reference/gcode/address_ranges.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
+#include "reference/cycles/roughing_rules.h"
 #include "reference/cycles/series10_format.h"
 #include "reference/cycles/type2_roughing.h"
 
@@ -146,20 +147,21 @@ CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const Sec
 
 CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
                        const RoughingFrame& frame) {
+  const std::string code(cycleCode(frame.family));
   Type1Cycle cycle;
-  cycle.code = frame.code;
+  cycle.family = frame.family;
   cycle.start = toFrame(shape.start, frame);
   cycle.headEnd = toFrame(shape.headEnd, frame);
   cycle.body = toFrame(shape.body, frame);
   cycle.allowance = toFrame(sb.leftByRoughing(), frame);
   cycle.headIsRapid = shape.headIsRapid;
   cycle.feed = sb.feed;
-  cycle.depthOfCut = depthOfCut(call, frame.code);
+  cycle.depthOfCut = depthOfCut(call, code);
   cycle.retract = call.params.get("5133");
   cycle.semiFinish = !call.params.bit("RF1");
   cycle.directReturn = call.params.bit("DTP");
   // Type I: four moves a pass (infeed, cut, retract, back).
-  checkPlanSize(call, frame.code, std::abs(cycle.headEnd.x - cycle.start.x), cycle.depthOfCut, 4);
+  checkPlanSize(call, code, std::abs(cycle.headEnd.x - cycle.start.x), cycle.depthOfCut, 4);
   // G71.T1.MONO, G71.CHECK: checked on the finish shape before any move.
   checkType1Monotonic(cycle, frame.cutAxis, frame.depthAxis);
   return outcome(call, shape, sb, movesInPlane(planType1(cycle), frame));
@@ -167,14 +169,15 @@ CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const S
 
 CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
                         const RoughingFrame& frame) {
+  const std::string code(cycleCode(frame.family));
   Type2Cycle cycle;
-  cycle.code = frame.code;
+  cycle.family = frame.family;
   cycle.start = toFrame(shape.start, frame);
   cycle.shape = toFrame(shape.finishShape(), frame);
   cycle.allowance = toFrame(sb.leftByRoughing(), frame);
   cycle.headIsRapid = shape.headIsRapid;
   cycle.feed = sb.feed;
-  cycle.depthOfCut = depthOfCut(call, frame.code);
+  cycle.depthOfCut = depthOfCut(call, code);
   cycle.retract = call.params.get("5133");
   cycle.clearance = call.params.get("5134");
   cycle.semiFinish = !call.params.bit("RF2");
@@ -182,14 +185,14 @@ CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const 
   cycle.noRepeatedPath = call.params.bit("NSP");
   cycle.levelByLevel = call.profile.pocketsLevelByLevel;
   // Type II: a cut at a level may follow every segment of the shape, plus its travel and leave.
-  checkPlanSize(call, frame.code, deepestBelowStart(cycle.shape, cycle.start, cycle.depthDirection()),
+  checkPlanSize(call, code, deepestBelowStart(cycle.shape, cycle.start, cycle.depthDirection()),
                 cycle.depthOfCut, static_cast<double>(cycle.shape.size()) + 8);
   // G71.T2.MONO: only the cut axis must be monotonic.
   checkMonotonicAlongCut(cycle.shape, cycle.cutDirection(), frame.cutAxis);
   CycleOutcome out = outcome(call, shape, sb, movesInPlane(planType2(cycle), frame));
   // G71.T2.DW0 / G72.T2: an allowance along the cut axis with pockets may cut into a side wall.
   if (std::abs(cycle.allowance.z) > kGeomEps && type2HasPocketWall(cycle)) {
-    const std::string rule = frame.code == "G72" ? "G72.T2" : "G71.T2.DW0";
+    const std::string& rule = roughingRulesOf(frame.family).sideWall;
     out.warnings.push_back({call.block().line, rule + ": type II with pockets and a finishing allowance along the "
                                                    "cut axis: the tool may cut into a side wall (normally the allowance is 0)"});
   }

@@ -8,6 +8,7 @@
 #include "reference/cycles/shape_program.h"
 #include "reference/cycles/type1_roughing.h"
 #include "reference/model/alarms.h"
+#include "reference/model/cycle_family.h"
 
 namespace cyclecert {
 
@@ -44,7 +45,7 @@ SecondBlock readSecondBlock(const CycleCall& call, const RoughingFormat& format)
 // How a cycle sits in the plane: G71 cuts along the plane's 1st axis; G72 along its 2nd, so it plans
 // with the axes exchanged. The monotonic checks name the plane's axes (PS0064 1st, PS0329 2nd).
 struct RoughingFrame {
-  std::string code;       // "G71", "G72"
+  CycleFamily family;     // G71, G72: the rule IDs the moves cite (roughing_rules.h)
   bool transposed;        // G72
   AxisCheck cutAxis;      // monotonic check along the cut axis
   AxisCheck depthAxis;    // type I: the shape must retreat along the depth axis

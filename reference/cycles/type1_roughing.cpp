@@ -3,17 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/cycles/move_emitter.h"
+#include "reference/cycles/roughing_rules.h"
+
 namespace cyclecert {
 
 namespace {
-
-int signOf(double v) { return v > kGeomEps ? 1 : (v < -kGeomEps ? -1 : 0); }
 
 // The rough profile (A', B', C' and the shifted shape) and the pass geometry derived from it.
 class Type1Planner {
  public:
   explicit Type1Planner(const Type1Cycle& c)
       : c_(c),
+        rules_(roughingRulesOf(c.family)),
+        moves_(c.start, c.feed),
         aPrime_(c.start + c.allowance),
         bPrime_(c.headEnd + c.allowance),
         d_(c.depthDirection()),
@@ -44,27 +47,13 @@ class Type1Planner {
       step7SemiFinishAlongRoughProfile();
     }
     step8ReturnToStart();
-    return std::move(moves_);
+    return moves_.take();
   }
 
  private:
-  std::string step(int k) const {
-    return c_.code == "G72" ? "G72.STEP" + std::to_string(k) : "G71.T1.STEP" + std::to_string(k);
-  }
+  const std::string& step(int k) const { return rules_.step[static_cast<std::size_t>(k)]; }
 
-  Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
-
-  void emit(MoveKind kind, Point to, std::string phase, int pass, std::vector<std::string> rules) {
-    if (distance(current(), to) <= kGeomEps) return;  // zero-length moves are never emitted
-    Move m;
-    m.kind = kind;
-    m.to = to;
-    if (kind == MoveKind::Feed) m.feed = c_.feed;
-    m.phase = std::move(phase);
-    m.pass = pass;
-    m.rules = std::move(rules);
-    moves_.push_back(std::move(m));
-  }
+  Point current() const { return moves_.current(); }
 
   // How deep a level lies below A' along the depth direction.
   double depthOf(double x) const { return d_ * (x - aPrime_.x); }
@@ -76,14 +65,11 @@ class Type1Planner {
   MoveKind infeedKind() const { return c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed; }
 
   // G72.STEP1 / G71.T1.STEP1: rapid from A to A' (shifted by the allowances).
-  void step1RapidToShiftedStart() { emit(MoveKind::Rapid, aPrime_, "approach", 0, {step(1), allowanceRule()}); }
-
-  std::string allowanceRule() const { return c_.code == "G72" ? "G72.ALLOW" : "G71.ALLOW.UNITS"; }
-  std::string infeedRule() const { return c_.code == "G72" ? "G72.STEP2" : "G71.HEAD.G0G1"; }
+  void step1RapidToShiftedStart() { moves_.emit(MoveKind::Rapid, aPrime_, MovePhase::Approach, 0, {step(1), rules_.allowance}); }
 
   // G72.STEP2: the first infeed of Δd from A', towards B'.
   void step2FirstInfeed(double level, int pass) {
-    emit(infeedKind(), {aPrime_.z, level}, "pass", pass, {step(2), infeedRule(), c_.code == "G72" ? "G72.DD" : "G71.DD.MODAL"});
+    moves_.emit(infeedKind(), {aPrime_.z, level}, MovePhase::Pass, pass, {step(2), rules_.infeed, rules_.depthOfCut});
   }
 
   // G72.STEP3: cut along the cut axis to the rough profile.
@@ -91,47 +77,40 @@ class Type1Planner {
     const double endZ = passEnd(level);
     // A pass whose end lies at or behind its start cuts nothing and is not emitted.
     if (cut_ * (endZ - aPrime_.z) <= kGeomEps) return;
-    emit(MoveKind::Feed, {endZ, level}, "pass", pass, {step(3), c_.code == "G72" ? "G72.STEP3" : "G71.OP"});
+    moves_.emit(MoveKind::Feed, {endZ, level}, MovePhase::Pass, pass, {step(3), rules_.cut});
   }
 
   // G72.STEP4 / G71.T1.RETRACT45: retract e on both axes at 45°, in cutting feed, opposite to the
   // cut and to the infeed.
   void step4Retract45(int pass) {
     const Point p = current();
-    emit(MoveKind::Feed, {p.z - cut_ * c_.retract, p.x - d_ * c_.retract}, "pass", pass,
-         {step(4), c_.code == "G72" ? "G72.RETRACT" : "G71.T1.RETRACT45"});
+    moves_.emit(MoveKind::Feed, {p.z - cut_ * c_.retract, p.x - d_ * c_.retract}, MovePhase::Pass, pass,
+                {step(4), rules_.retract});
   }
 
   // G72.STEP5: rapid back along the cut axis to A' (seed 001 says "Z of A'" for G72: a slip for X).
-  void step5RapidBackToAPrime(int pass) { emit(MoveKind::Rapid, {aPrime_.z, current().x}, "pass", pass, {step(5)}); }
+  void step5RapidBackToAPrime(int pass) { moves_.emit(MoveKind::Rapid, {aPrime_.z, current().x}, MovePhase::Pass, pass, {step(5)}); }
 
   // G72.STEP6: the next infeed, Δd + e from the retracted position.
-  void step6Infeed(double level, int pass) { emit(infeedKind(), {aPrime_.z, level}, "pass", pass, {step(6), infeedRule()}); }
+  void step6Infeed(double level, int pass) { moves_.emit(infeedKind(), {aPrime_.z, level}, MovePhase::Pass, pass, {step(6), rules_.infeed}); }
 
   // G72.STEP6 (else branch): the infeed that would reach B' goes to B' instead.
-  void infeedToBPrime() { emit(infeedKind(), bPrime_, "semi-finish", 0, {step(6), infeedRule()}); }
+  void infeedToBPrime() { moves_.emit(infeedKind(), bPrime_, MovePhase::SemiFinish, 0, {step(6), rules_.infeed}); }
 
   // G72.STEP7 / G71.T1.SEMIFIN: cutting feed along the rough profile from B' to C'.
   void step7SemiFinishAlongRoughProfile() {
-    for (const Segment& s : roughBody_) {
-      const std::size_t before = moves_.size();
-      emit(MoveKind::Feed, s.to, "semi-finish", 0, {step(7), "G71.T1.SEMIFIN"});
-      if (s.isArc() && moves_.size() > before) {
-        moves_.back().shape = s.kind;
-        moves_.back().center = s.center;
-      }
-    }
+    for (const Segment& s : roughBody_) moves_.emitAlong(MoveKind::Feed, s, MovePhase::SemiFinish, 0, {step(7), "G71.T1.SEMIFIN"});
   }
 
   // G72.STEP8 / G71.DTP: back to A. DTP=1 goes straight; DTP=0 leaves the part along the depth
   // axis first, then travels along the cut axis (interpretation: the figure is missing).
   void step8ReturnToStart() {
     if (c_.directReturn) {
-      emit(MoveKind::Rapid, c_.start, "return", 0, {step(8), "G71.DTP"});
+      moves_.emit(MoveKind::Rapid, c_.start, MovePhase::Return, 0, {step(8), "G71.DTP"});
       return;
     }
-    emit(MoveKind::Rapid, {current().z, c_.start.x}, "return", 0, {step(8)});
-    emit(MoveKind::Rapid, c_.start, "return", 0, {step(8)});
+    moves_.emit(MoveKind::Rapid, {current().z, c_.start.x}, MovePhase::Return, 0, {step(8)});
+    moves_.emit(MoveKind::Rapid, c_.start, MovePhase::Return, 0, {step(8)});
   }
 
   // For each rough-profile segment, the deepest the profile has *retreated* (smallest depth)
@@ -162,11 +141,12 @@ class Type1Planner {
   }
 
   const Type1Cycle& c_;
+  const RoughingRules& rules_;
+  MoveEmitter moves_;
   Point aPrime_, bPrime_;
   int d_, cut_;
   std::vector<Segment> roughBody_;
   std::vector<double> reachUpTo_;
-  std::vector<Move> moves_;
 };
 
 }  // namespace

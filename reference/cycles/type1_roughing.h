@@ -5,12 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "reference/model/cycle_family.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
 
 struct Type1Cycle {
-  std::string code;             // "G71" or "G72": chooses the rule IDs the moves cite
+  CycleFamily family = CycleFamily::G71;  // G71 or G72: chooses the rule IDs the moves cite
   Point start;                  // A: cycle start = start of block ns
   Point headEnd;                // B: end of block ns
   std::vector<Segment> body;    // B → C: the finish shape after block ns

@@ -5,14 +5,13 @@
 #include <map>
 #include <optional>
 
+#include "reference/cycles/move_emitter.h"
 #include "reference/cycles/pocket_profile.h"
+#include "reference/cycles/roughing_rules.h"
 
 namespace cyclecert {
 
 namespace {
-
-constexpr double kEps = 1e-9;
-int signOf(double v) { return v > kEps ? 1 : (v < -kEps ? -1 : 0); }
 
 std::vector<Segment> roughProfileOf(const Type2Cycle& c) {
   std::vector<Segment> rough;
@@ -37,6 +36,8 @@ class Type2Planner {
  public:
   explicit Type2Planner(const Type2Cycle& c)
       : c_(c),
+        rules_(roughingRulesOf(c.family)),
+        moves_(c.start, c.feed),
         d_(c.depthDirection()),
         cut_(c.cutDirection()),
         aPrime_(c.start + c.allowance),
@@ -56,7 +57,7 @@ class Type2Planner {
       semiFinishPass(c_.noRepeatedPath && pockets);
       returnToStart();
     }
-    return std::move(moves_);
+    return moves_.take();
   }
 
  private:
@@ -70,7 +71,7 @@ class Type2Planner {
     nodes_[0].end = {profile_.pieces().size() - 1, profile_.pieces().back().to};
     std::vector<int> previousLevel = {0};
     const double deepest = profile_.deepest();
-    for (int k = 1; (k - 1) * c_.depthOfCut < deepest - kEps; ++k) {
+    for (int k = 1; (k - 1) * c_.depthOfCut < deepest - kGeomEps; ++k) {
       const double level = k * c_.depthOfCut;
       const double above = level - c_.depthOfCut;
       std::vector<int> thisLevel;
@@ -79,7 +80,7 @@ class Type2Planner {
                                     previousLevel));
       }
       for (const ValleyBottom& b : profile_.valleyBottoms()) {
-        if (b.depth > above + kEps && b.depth <= level + kEps) {
+        if (b.depth > above + kGeomEps && b.depth <= level + kGeomEps) {
           addNode({CutNode::Bottom, b.depth, above, b.start, b.end, false, k, -1, {}}, previousLevel);
         }
       }
@@ -92,7 +93,7 @@ class Type2Planner {
     for (int p : candidates) {
       const CutNode& parent = nodes_[p];
       if (parent.kind == CutNode::Root ||
-          (progress(parent.start) <= progress(node.start) + kEps && progress(node.end) <= progress(parent.end) + kEps)) {
+          (progress(parent.start) <= progress(node.start) + kGeomEps && progress(node.end) <= progress(parent.end) + kGeomEps)) {
         node.parent = p;
         break;
       }
@@ -111,7 +112,7 @@ class Type2Planner {
   std::vector<int> cutOrder() {
     for (CutNode& n : nodes_) {
       std::stable_sort(n.children.begin(), n.children.end(),
-                       [&](int a, int b) { return progress(nodes_[a].start) < progress(nodes_[b].start) - kEps; });
+                       [&](int a, int b) { return progress(nodes_[a].start) < progress(nodes_[b].start) - kGeomEps; });
     }
     std::vector<int> order;
     if (!c_.levelByLevel) {
@@ -121,7 +122,7 @@ class Type2Planner {
     for (std::size_t i = 1; i < nodes_.size(); ++i) order.push_back(static_cast<int>(i));
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
       if (nodes_[a].level != nodes_[b].level) return nodes_[a].level < nodes_[b].level;
-      return progress(nodes_[a].start) < progress(nodes_[b].start) - kEps;
+      return progress(nodes_[a].start) < progress(nodes_[b].start) - kGeomEps;
     });
     return order;
   }
@@ -162,10 +163,10 @@ class Type2Planner {
              onHeadLine(nearWall[head].to)) {
         ++head;
       }
-      if (head > 0) emit(headMode(), nearWall[head - 1].to, "pass", {"G71.HEAD.G0G1"});
+      if (head > 0) emit(headMode(), nearWall[head - 1].to, MovePhase::Pass, {"G71.HEAD.G0G1"});
       followPath({nearWall.begin() + static_cast<long>(head), nearWall.end()}, {"G71.T2.FOLLOW"});
     }
-    emit(MoveKind::Feed, n.end.p, "pass", {cutRule(), "G71.T2.ORDER"});
+    emit(MoveKind::Feed, n.end.p, MovePhase::Pass, {rules_.typeIICut, "G71.T2.ORDER"});
     leave(n);
     previous_ = id;
   }
@@ -190,27 +191,27 @@ class Type2Planner {
   void travelTo(Point q, double commonDepth, bool infeedAlongHead, Point cutStart, std::optional<double> viaI) {
     const double travel = std::min(depthOf(current()), commonDepth - c_.retract);
     // Down block ns itself (the tool stands on the head line) it moves in block ns's mode.
-    const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kEps;
-    emit(downTheHead ? headMode() : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, "pass",
+    const bool downTheHead = headAlongDepth() && onHeadLine(current()) && travel > depthOf(current()) + kGeomEps;
+    emit(downTheHead ? headMode() : MoveKind::Rapid, {current().z, profile_.xAtDepth(travel)}, MovePhase::Pass,
          {downTheHead ? "G71.HEAD.G0G1" : "G71.T2.POCKET.EXIT"});
-    if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, "pass", {"G71.NSP"});
-    emit(MoveKind::Rapid, {q.z, current().x}, "pass", {"G71.T2.POCKET.EXIT"});
+    if (viaI) emit(MoveKind::Rapid, {*viaI, current().x}, MovePhase::Pass, {"G71.NSP"});
+    emit(MoveKind::Rapid, {q.z, current().x}, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
     if (infeedAlongHead) {
       // The type I infeed along a head block parallel to the depth axis (G72.STEP2).
-      emit(headMode(), cutStart, "pass", {"G72.STEP2", "G71.HEAD.G0G1"});
+      emit(headMode(), cutStart, MovePhase::Pass, {"G72.STEP2", "G71.HEAD.G0G1"});
       return;
     }
     if (headAlongDepth() && onHeadLine(q)) {
       // The entry point is on block ns (B, where the shape falls away from it): the way down to it
       // runs along block ns, in its mode (G71.HEAD.G0G1), as the type I infeeds do.
-      emit(headMode(), q, "pass", {"G71.HEAD.G0G1"});
+      emit(headMode(), q, MovePhase::Pass, {"G71.HEAD.G0G1"});
       return;
     }
     const double approach = commonDepth - c_.clearance;
-    if (approach > depthOf(current()) + kEps) {
-      emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, "pass", {"G71.T2.POCKET.EXIT"});
+    if (approach > depthOf(current()) + kGeomEps) {
+      emit(MoveKind::Rapid, {q.z, profile_.xAtDepth(approach)}, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
     }
-    emit(MoveKind::Feed, q, "pass", {"G71.T2.POCKET.EXIT"});
+    emit(MoveKind::Feed, q, MovePhase::Pass, {"G71.T2.POCKET.EXIT"});
   }
 
   // After the cut: 45° from a valley bottom, else up the far wall, then along x to e above the
@@ -221,14 +222,14 @@ class Type2Planner {
       // 45° by e, but never back past the bottom's near end (a V, or a bottom shorter than e,
       // would otherwise be left through its near wall).
       const double back = std::min(c_.retract, distance(n.start.p, n.end.p));
-      emit(MoveKind::Feed, {p.z - cut_ * back, p.x - d_ * c_.retract}, "pass", {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
+      emit(MoveKind::Feed, {p.z - cut_ * back, p.x - d_ * c_.retract}, MovePhase::Pass, {"G71.T2.FOLLOW", "G71.T2.VALLEY"});
       return;
     }
     if (!n.openEnd) {
       const auto farWall = profile_.wallAfter(n.end, n.parentDepth, c_.followAlongCut);
       followPath(farWall, {"G71.T2.FOLLOW", "G71.CHAMFER"});
     }
-    emit(MoveKind::Feed, {current().z, profile_.xAtDepth(n.parentDepth - c_.retract)}, "pass", {"G71.T2.FOLLOW"});
+    emit(MoveKind::Feed, {current().z, profile_.xAtDepth(n.parentDepth - c_.retract)}, MovePhase::Pass, {"G71.T2.FOLLOW"});
   }
 
   // ---- return and semi-finish ------------------------------------------------------------------
@@ -237,74 +238,64 @@ class Type2Planner {
   double returnDepth() const {
     const double startDepth = depthOf(c_.start);
     const double highest = profile_.shallowestAfterHead();
-    return highest <= startDepth + kEps ? highest - c_.depthOfCut : startDepth;
+    return highest <= startDepth + kGeomEps ? highest - c_.depthOfCut : startDepth;
   }
 
   void returnToStart() {
-    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, "return", {"G71.T2.RETURN"});
-    emit(MoveKind::Rapid, {c_.start.z, current().x}, "return", {"G71.T2.RETURN"});
-    emit(MoveKind::Rapid, c_.start, "return", {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, MovePhase::Return, {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, {c_.start.z, current().x}, MovePhase::Return, {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, c_.start, MovePhase::Return, {"G71.T2.RETURN"});
   }
 
   // G71.NSP without pockets: from the last cut, above everything, to B' where the semi-finish starts.
   void travelToHeadEnd() {
     const Point bPrime = roughProfileOf(c_).front().to;
-    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, "return", {"G71.NSP"});
-    emit(MoveKind::Rapid, {bPrime.z, current().x}, "return", {"G71.NSP"});
+    emit(MoveKind::Rapid, {current().z, profile_.xAtDepth(returnDepth())}, MovePhase::Return, {"G71.NSP"});
+    emit(MoveKind::Rapid, {bPrime.z, current().x}, MovePhase::Return, {"G71.NSP"});
   }
 
   // G71.T2.RETURN: the semi-finish pass along the whole rough profile, A' first. With NSP and
   // pockets, the second pass over A–B is rapid (G71.NSP).
   void semiFinishPass(bool headRapid) {
-    emit(MoveKind::Rapid, aPrime_, "semi-finish", {"G71.T2.RETURN"});
+    emit(MoveKind::Rapid, aPrime_, MovePhase::SemiFinish, {"G71.T2.RETURN"});
     const std::vector<Segment> rough = roughProfileOf(c_);
     for (std::size_t i = 0; i < rough.size(); ++i) {
       const bool rapid = i == 0 && ((headAlongDepth() && c_.headIsRapid) || headRapid);
-      emitSegment(rough[i], rapid ? MoveKind::Rapid : MoveKind::Feed, "semi-finish", {"G71.T2.RETURN"});
+      emitSegment(rough[i], rapid ? MoveKind::Rapid : MoveKind::Feed, MovePhase::SemiFinish, {"G71.T2.RETURN"});
     }
   }
 
   // ---- moves ------------------------------------------------------------------------------------
 
-  bool onHeadLine(Point p) const { return std::abs(p.z - aPrime_.z) <= kEps; }
+  bool onHeadLine(Point p) const { return std::abs(p.z - aPrime_.z) <= kGeomEps; }
   // G71.HEAD.G0G1: moves along block ns run in its mode — rapid after G00, cutting feed after G01.
   MoveKind headMode() const { return c_.headIsRapid ? MoveKind::Rapid : MoveKind::Feed; }
-  bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kEps; }
-  std::string cutRule() const { return c_.code == "G72" ? "G72.T2" : "G71.OP"; }
+  bool headAlongDepth() const { return std::abs(c_.shape.front().to.z - c_.shape.front().from.z) <= kGeomEps; }
   double depthOf(Point p) const { return profile_.depth(p); }
-  Point current() const { return moves_.empty() ? c_.start : moves_.back().to; }
+  Point current() const { return moves_.current(); }
 
   void followPath(const std::vector<Segment>& path, const std::vector<std::string>& rules) {
-    for (const Segment& s : path) emitSegment(s, MoveKind::Feed, "pass", rules);
+    for (const Segment& s : path) emitSegment(s, MoveKind::Feed, MovePhase::Pass, rules);
   }
 
-  void emitSegment(const Segment& s, MoveKind kind, const std::string& phase, const std::vector<std::string>& rules) {
-    const std::size_t before = moves_.size();
-    emit(kind, s.to, phase, rules);
-    if (s.isArc() && moves_.size() > before) {
-      moves_.back().shape = s.kind;
-      moves_.back().center = s.center;
-    }
+  // Moves of a cut carry its number (the cut tree's order); the others none.
+  int passOf(MovePhase phase) const { return phase == MovePhase::Pass ? pass_ : 0; }
+
+  void emitSegment(const Segment& s, MoveKind kind, MovePhase phase, const std::vector<std::string>& rules) {
+    moves_.emitAlong(kind, s, phase, passOf(phase), rules);
   }
 
-  void emit(MoveKind kind, Point to, const std::string& phase, std::vector<std::string> rules) {
-    if (distance(current(), to) <= kEps) return;
-    Move m;
-    m.kind = kind;
-    m.to = to;
-    if (kind == MoveKind::Feed) m.feed = c_.feed;
-    m.phase = phase;
-    m.pass = phase == "pass" ? pass_ : 0;
-    m.rules = std::move(rules);
-    moves_.push_back(std::move(m));
+  void emit(MoveKind kind, Point to, MovePhase phase, std::vector<std::string> rules) {
+    moves_.emit(kind, to, phase, passOf(phase), std::move(rules));
   }
 
   const Type2Cycle& c_;
+  const RoughingRules& rules_;
+  MoveEmitter moves_;
   int d_, cut_;
   Point aPrime_;
   PocketProfile profile_;
   std::vector<CutNode> nodes_;
-  std::vector<Move> moves_;
   std::map<int, double> pointI_;  // parent node → cut coordinate of its first pocket's entry (G71.NSP)
   int previous_ = 0;  // the root before the first cut
   int pass_ = 0;

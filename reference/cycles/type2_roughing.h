@@ -4,12 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "reference/model/cycle_family.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
 
 struct Type2Cycle {
-  std::string code;            // "G71" or "G72": chooses the rule IDs the moves cite
+  CycleFamily family = CycleFamily::G71;  // G71 or G72: chooses the rule IDs the moves cite
   Point start;                 // A
   std::vector<Segment> shape;  // the finish shape A → B → … → C, head block first
   Point allowance;             // the rough profile is the shape shifted by it

@@ -307,7 +307,7 @@ class ProgramRunner {
         m.to = seg->to;
         if (seg->isArc()) m.center = seg->center;
         if (m.kind == MoveKind::Feed) m.feed = state_.feed;
-        m.phase = "program";
+        m.phase = MovePhase::Program;
         path_.moves.push_back(std::move(m));
       }
     }

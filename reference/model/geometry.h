@@ -11,6 +11,9 @@ namespace cyclecert {
 
 inline constexpr double kGeomEps = 1e-9;  // lengths below this are zero (mm)
 
+// The sign of a length or a difference of coordinates: +1, −1, or 0 within kGeomEps of zero.
+inline int signOf(double v) { return v > kGeomEps ? 1 : (v < -kGeomEps ? -1 : 0); }
+
 struct Point {
   double z = 0;
   double x = 0;

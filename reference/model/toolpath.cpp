@@ -1,6 +1,45 @@
 #include "reference/model/toolpath.h"
 
+#include <array>
+#include <utility>
+
 namespace cyclecert {
+
+namespace {
+
+constexpr std::array<std::pair<MovePhase, std::string_view>, 6> kPhaseNames{{
+    {MovePhase::Approach, "approach"},
+    {MovePhase::Pass, "pass"},
+    {MovePhase::SemiFinish, "semi-finish"},
+    {MovePhase::Finish, "finish"},
+    {MovePhase::Return, "return"},
+    {MovePhase::Program, "program"},
+}};
+
+}  // namespace
+
+std::string_view phaseName(MovePhase p) {
+  for (const auto& [phase, name] : kPhaseNames) {
+    if (phase == p) return name;
+  }
+  return "";
+}
+
+std::optional<MovePhase> phaseNamed(std::string_view name) {
+  for (const auto& [phase, spelling] : kPhaseNames) {
+    if (spelling == name) return phase;
+  }
+  return std::nullopt;
+}
+
+std::string phaseNamesText() {
+  std::string text;
+  for (std::size_t i = 0; i < kPhaseNames.size(); ++i) {
+    if (i > 0) text += i + 1 == kPhaseNames.size() ? " or " : ", ";
+    text += "\"" + std::string(kPhaseNames[i].second) + "\"";
+  }
+  return text;
+}
 
 Segment Toolpath::segment(std::size_t i) const {
   const Move& m = moves[i];

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reference/model/geometry.h"
@@ -12,14 +13,33 @@ namespace cyclecert {
 
 enum class MoveKind { Rapid, Feed };
 
+// Which part of the program a move belongs to (the reference labels every move; other engines need
+// not). JSON spells them as below (README "Toolpath JSON"); None is a move without a phase (no
+// "phase" in JSON).
+enum class MovePhase {
+  None,
+  Approach,    // "approach": from the cycle start A to the shifted start A'
+  Pass,        // "pass": a roughing pass (Move::pass numbers it)
+  SemiFinish,  // "semi-finish": along the rough profile after the passes
+  Finish,      // "finish": G70's finishing pass
+  Return,      // "return": back to the cycle start
+  Program,     // "program": a block outside the cycles (positioning between them…)
+};
+
+// The JSON spelling of a phase ("" for None), and its reading: nullopt for any other text.
+std::string_view phaseName(MovePhase p);
+std::optional<MovePhase> phaseNamed(std::string_view name);
+// Every spelling phaseNamed reads, for messages: "\"approach\", \"pass\", … or \"program\"".
+std::string phaseNamesText();
+
 struct Move {
   MoveKind kind = MoveKind::Rapid;
   SegmentKind shape = SegmentKind::Line;
   Point to;
   std::optional<Point> center;  // arcs only
   std::optional<double> feed;   // feeds only (mm/min or mm/rev as programmed)
-  std::string phase;            // approach | pass | semi-finish | return (reference only)
-  int pass = 0;                 // pass number for phase "pass" (1-based), else 0
+  MovePhase phase = MovePhase::None;
+  int pass = 0;                 // pass number for MovePhase::Pass (1-based), else 0
   std::vector<std::string> rules;
   bool singleBlockStop = false;  // in single-block mode the machine stops after this move (G72.SINGLE)
   bool stopGiven = false;        // read from JSON that states "stop" (an expectation compares it then)

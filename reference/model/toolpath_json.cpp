@@ -112,7 +112,7 @@ json toJson(const Move& m) {
   json j{{"kind", kindName(m.kind)}, {"shape", shapeName(m.shape)}, {"to", toJson(m.to)}};
   if (m.center) j["center"] = toJson(*m.center);
   if (m.feed) j["feed"] = *m.feed;
-  if (!m.phase.empty()) j["phase"] = m.phase;
+  if (m.phase != MovePhase::None) j["phase"] = phaseName(m.phase);
   if (m.pass > 0) j["pass"] = m.pass;
   if (!m.rules.empty()) j["rules"] = m.rules;
   if (m.singleBlockStop) j["stop"] = true;
@@ -188,6 +188,20 @@ std::optional<int> optionalInteger(const json& j, const char* key, const std::st
   }
   return v.get<int>();
 }
+
+// "phase": one of the spellings of MovePhase; absent (or null) for a move without a phase. Any other
+// value is an error that lists the spellings accepted.
+MovePhase phaseFromJson(const json& j, const std::string& where) {
+  const auto field = j.find("phase");
+  if (field == j.end() || field->is_null()) return MovePhase::None;
+  const std::string* text = field->get_ptr<const std::string*>();
+  const std::optional<MovePhase> phase = text ? phaseNamed(*text) : std::nullopt;
+  if (phase) return *phase;
+  const std::string accepted = "one of " + phaseNamesText() + " (or no \"phase\")";
+  if (!text) fail(where + "/phase", accepted + " (a string), found " + field->dump().substr(0, 80));
+  fail(where + "/phase", accepted + ", found \"" + text->substr(0, 80) + "\"");
+}
+
 }  // namespace
 
 Point pointFromJson(const json& j, const std::string& where) {
@@ -218,7 +232,7 @@ Move moveFromJson(const json& j, const std::string& where) {
     m.center = pointFromJson(j["center"], where + "/center");
   }
   if (j.contains("feed")) m.feed = finiteNumber(j["feed"], where + "/feed");
-  m.phase = optionalString(j, "phase", where, "a phase name such as \"rough\"").value_or("");
+  m.phase = phaseFromJson(j, where);
   m.pass = optionalInteger(j, "pass", where, "a pass number ≥ 0").value_or(0);
   if (j.contains("stop")) {
     if (!j["stop"].is_boolean()) fail(where + "/stop", "true or false");

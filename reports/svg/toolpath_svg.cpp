@@ -416,7 +416,7 @@ std::string passLabels(const View& v, const Toolpath& path) {
   std::set<int> labelled;
   for (std::size_t i = 0; i < path.moves.size(); ++i) {
     const Move& m = path.moves[i];
-    if (m.kind != MoveKind::Feed || m.phase != "pass" || !labelled.insert(m.pass).second) continue;
+    if (m.kind != MoveKind::Feed || m.phase != MovePhase::Pass || !labelled.insert(m.pass).second) continue;
     out += passLabel(v, path.from(i), m.to, m.pass);
   }
   return out + "</g>\n";

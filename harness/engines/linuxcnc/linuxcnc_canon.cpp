@@ -163,7 +163,7 @@ CanonicalParse parseCanonical(const std::string& text) {
     if (m.to == at) continue;
     at = m.to;
     if (!inCycle) continue;  // positioning before the cycle
-    if (inReturn) m.phase = "return";
+    if (inReturn) m.phase = MovePhase::Return;
     r.path.moves.push_back(std::move(m));
   }
   return r;

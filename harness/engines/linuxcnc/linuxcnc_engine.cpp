@@ -89,7 +89,7 @@ EngineResult interpret(const SpecCase& c, const LinuxCncProgram& p, const std::s
   CycleRecord cycle = p.cycle;
   cycle.firstMove = 0;
   cycle.moveCount = static_cast<std::size_t>(
-      std::count_if(path.moves.begin(), path.moves.end(), [](const Move& m) { return m.phase != "return"; }));
+      std::count_if(path.moves.begin(), path.moves.end(), [](const Move& m) { return m.phase != MovePhase::Return; }));
   path.cycles.push_back(std::move(cycle));
   return EngineResult::planned(std::move(path));
 }

@@ -214,7 +214,7 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
   const std::vector<Segment> rough = cy.roughProfile();
   const Point a = cy.start;
   const Point a1 = a + cy.allowance;  // A'
-  const bool g71 = cy.code == "G71";
+  const bool g71 = cy.family == CycleFamily::G71;
   const std::string sub = "o" + std::to_string(subNumber);
 
   Writer w;

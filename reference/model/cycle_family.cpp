@@ -1,0 +1,29 @@
+#include "reference/model/cycle_family.h"
+
+#include <array>
+
+namespace cyclecert {
+
+namespace {
+
+constexpr std::array kFamilies{CycleFamily::G71, CycleFamily::G72, CycleFamily::G73};
+
+}  // namespace
+
+std::string_view cycleCode(CycleFamily family) {
+  switch (family) {
+    case CycleFamily::G71: return "G71";
+    case CycleFamily::G72: return "G72";
+    case CycleFamily::G73: return "G73";
+  }
+  return "G71";
+}
+
+std::optional<CycleFamily> cycleFamilyOfCode(std::string_view code) {
+  for (CycleFamily f : kFamilies) {
+    if (cycleCode(f) == code) return f;
+  }
+  return std::nullopt;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,18 @@
+#pragma once
+// The roughing cycle families, one type for the reference planners and the oracles: how a cycle's
+// passes are laid out and which rules they follow. G71 and G72 rough axis-parallel layers Δd apart
+// (cutting along z and along x); G73 follows the whole finish shape d times, shifted by shares of
+// the relief (Δi, Δk) (G73.PASS.SHIFT). G70 finishes along the shape once: it is no roughing family.
+#include <optional>
+#include <string_view>
+
+namespace cyclecert {
+
+enum class CycleFamily { G71, G72, G73 };
+
+// The family's G code as programs, messages and the toolpath JSON's "cycles" spell it: "G71"….
+std::string_view cycleCode(CycleFamily family);
+// The family a code names, nullopt for any other code ("G70", "G74"…).
+std::optional<CycleFamily> cycleFamilyOfCode(std::string_view code);
+
+}  // namespace cyclecert
