@@ -72,8 +72,13 @@ bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c
   // 1e-7 of the material's size (region.h), 1e-5 mm on a 100 mm part; a tenth of the oracles'
   // tolerance is 3e-4 mm.
   constexpr double kMargin = 0.1;
-  return standsThickerThan(model.topWithoutSkinsWithin(c0, c1, skin), profile, model.away(), kMeasuringChord,
-                           limit - kMargin * skin);
+  const auto thicker = [&](double width) {
+    return standsThickerThan(model.topWithoutSkinsWithin(c0, c1, width), profile, model.away(), kMeasuringChord,
+                             limit - kMargin * skin);
+  };
+  // The top with its skins stands above the top without them: where it stays below the limit (a
+  // sloping stock's top), the copies are not needed.
+  return thicker(0) && thicker(skin);
 }
 
 namespace {

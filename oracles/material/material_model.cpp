@@ -417,14 +417,16 @@ std::vector<CutEnvelope::Piece> MaterialModel::topWithoutSkinsWithin(double c0, 
   // The lowest of the top and its copies moved by ± skin (where a copy does not reach, the others
   // bound alone: looser, still above every point of the material without skins).
   CutEnvelope solid;
-  std::vector<CutEnvelope::Piece> moved;
-  for (double by : {0.0, -skin, skin}) {
-    moved.clear();
-    for (const CutEnvelope::Piece& p : top.pieces()) moved.push_back({p.c0 + by, p.d0, p.c1 + by, p.d1});
-    solid.lower(moved);
+  if (skin > 0) {
+    std::vector<CutEnvelope::Piece> moved;
+    for (double by : {0.0, -skin, skin}) {
+      moved.clear();
+      for (const CutEnvelope::Piece& p : top.pieces()) moved.push_back({p.c0 + by, p.d0, p.c1 + by, p.d1});
+      solid.lower(moved);
+    }
   }
   std::vector<CutEnvelope::Piece> within;
-  solid.walk(
+  (skin > 0 ? solid : top).walk(
       c0, c1,
       [&](const CutEnvelope::Piece& p) {
         if (p.c1 > p.c0) within.push_back(p);
