@@ -65,8 +65,8 @@ BgRegion withoutSkins(const BgRegion& region, Point away, double width);
 // over the cut coordinates [c0, c1] may stand thicker than `limit` above `profile` (a graph over
 // the cut axis), measured as thickestAbove does with kMeasuringChord: false when the model's top
 // without skins (MaterialModel::topWithoutSkinsWithin) stays below the limit by a margin far above
-// the booleans' rounding — then neither the material nor the material without skins measures
-// thicker, and the oracles spare making them. No Boost.
+// the booleans' rounding — then the material without skins measures no thicker, and the oracles,
+// which report only what that measure confirms, spare making the material. No Boost.
 bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c1, const std::vector<Segment>& profile,
                                  double skin, double limit);
 
