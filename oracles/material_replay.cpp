@@ -73,8 +73,8 @@ bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c
   // tolerance is 3e-4 mm.
   constexpr double kMargin = 0.1;
   const auto thicker = [&](double width) {
-    return standsThickerThan(model.topWithoutSkinsWithin(c0, c1, width), profile, model.away(), kMeasuringChord,
-                             limit - kMargin * skin);
+    const auto top = model.topWithoutSkinsWithin(c0, c1, width);
+    return !top || standsThickerThan(*top, profile, model.away(), kMeasuringChord, limit - kMargin * skin);
   };
   // The top with its skins stands above the top without them: where it stays below the limit (a
   // sloping stock's top), the copies are not needed.

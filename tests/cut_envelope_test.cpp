@@ -147,18 +147,18 @@ TEST(CutEnvelope, TheTopWithoutSkinsFollowsTheStocksOwnTop) {
   ASSERT_EQ(flat.size(), 1u);
   EXPECT_NEAR(flat[0].d0, 23, 1e-9);
   EXPECT_NEAR(flat[0].d1, 23, 1e-9);
-  const auto sloping = model.topWithoutSkinsWithin(-30, -10, 0);
+  const auto sloping = *model.topWithoutSkinsWithin(-30, -10, 0);
   ASSERT_EQ(sloping.size(), 1u);
   EXPECT_NEAR(sloping[0].c0, -30, 1e-9);
   EXPECT_NEAR(sloping[0].d0, 21, 1e-9);
   EXPECT_NEAR(sloping[0].c1, -10, 1e-9);
   EXPECT_NEAR(sloping[0].d1, 23, 1e-9);
-  const auto solid = model.topWithoutSkinsWithin(-30, -10, 1);
+  const auto solid = *model.topWithoutSkinsWithin(-30, -10, 1);
   ASSERT_EQ(solid.size(), 1u);
   EXPECT_NEAR(solid[0].d0, 20.9, 1e-9);
   EXPECT_NEAR(solid[0].d1, 22.9, 1e-9);
   // Beyond the stock's end nothing stands: the top stops at z 0.
-  const auto end = model.topWithoutSkinsWithin(-5, 5, 0);
+  const auto end = *model.topWithoutSkinsWithin(-5, 5, 0);
   ASSERT_FALSE(end.empty());
   EXPECT_NEAR(end.back().c1, 0, 1e-9);
 }
@@ -174,12 +174,12 @@ TEST(CutEnvelope, TheTopWithoutSkinsTakesTheLowestWithinTheSkinOfAFeed) {
     }
     return -INFINITY;
   };
-  const auto top = model.topWithoutSkinsWithin(-35, -5, 0);
+  const auto top = *model.topWithoutSkinsWithin(-35, -5, 0);
   EXPECT_NEAR(depthAt(top, -30), 21, 1e-9);
   EXPECT_NEAR(depthAt(top, -25.5), 21.45, 1e-9);
   EXPECT_NEAR(depthAt(top, -20), 21, 1e-9);
   EXPECT_NEAR(depthAt(top, -10), 23, 1e-9);
-  const auto solid = model.topWithoutSkinsWithin(-35, -5, 1);
+  const auto solid = *model.topWithoutSkinsWithin(-35, -5, 1);
   EXPECT_NEAR(depthAt(solid, -30), 20.9, 1e-9);   // the stock 1 mm to the left
   EXPECT_NEAR(depthAt(solid, -25.5), 21, 1e-9);   // the feed, 0.5 mm to the right
   EXPECT_NEAR(depthAt(solid, -14.5), 21, 1e-9);   // the feed, 0.5 mm to the left
@@ -206,7 +206,7 @@ RC_GTEST_PROP(CutEnvelope, TheTopWithoutSkinsBoundsTheMaterialWithoutSkins, ()) 
   const BgRegion band = regionFrom({{c0, -100}, {c0, 100}, {c1, 100}, {c1, -100}});
   const BgRegion left = checkedIntersection(without(model.remaining(), partRegionOf(profile, kOuter, 100, 0.001)), band);
   const auto region = thickestAbove(withoutSkins(left, kOuter, skin), profile, kOuter, 1e-6);
-  const auto top = thickestBeneath(model.topWithoutSkinsWithin(c0, c1, skin), profile, kOuter, 1e-6);
+  const auto top = thickestBeneath(*model.topWithoutSkinsWithin(c0, c1, skin), profile, kOuter, 1e-6);
   if (!region) return;
   RC_ASSERT(top.has_value());
   RC_ASSERT(region->thickness <= top->thickness + 1e-4);

@@ -386,7 +386,7 @@ std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) c
   return top;
 }
 
-CutEnvelope MaterialModel::pointwiseTopWithin(double c0, double c1) const {
+std::optional<CutEnvelope> MaterialModel::pointwiseTopWithin(double c0, double c1) const {
   // The stock's top: its reversed envelope's pieces turned back into this frame, left to right.
   std::vector<CutEnvelope::Piece> stock;
   stockTop_.walk(
@@ -398,22 +398,30 @@ CutEnvelope MaterialModel::pointwiseTopWithin(double c0, double c1) const {
   std::reverse(stock.begin(), stock.end());
   // The feeds' envelope over the stock only: beyond it there is no material to bound.
   std::vector<CutEnvelope::Piece> feeds;
+  bool disjoint = true;
   for (const CutEnvelope::Piece& s : stock) {
     cut_.walk(
         s.c0, s.c1,
         [&](const CutEnvelope::Piece& p) {
-          if (p.c1 > p.c0) feeds.push_back(p);
+          if (!(p.c1 > p.c0)) return;
+          if (!feeds.empty() && p.c0 < feeds.back().c1 - kTidyDistance) disjoint = false;
+          feeds.push_back(p);
         },
         [](double, double) {});
   }
+  // Pieces of the envelope that overlap (a feed lowered as a graph that was none) bound nothing.
+  if (!disjoint) return std::nullopt;
   CutEnvelope top;
   top.lower(stock);
   top.lower(feeds);
   return top;
 }
 
-std::vector<CutEnvelope::Piece> MaterialModel::topWithoutSkinsWithin(double c0, double c1, double skin) const {
-  const CutEnvelope top = pointwiseTopWithin(c0 - skin, c1 + skin);
+std::optional<std::vector<CutEnvelope::Piece>> MaterialModel::topWithoutSkinsWithin(double c0, double c1,
+                                                                                    double skin) const {
+  const std::optional<CutEnvelope> found = pointwiseTopWithin(c0 - skin, c1 + skin);
+  if (!found) return std::nullopt;
+  const CutEnvelope& top = *found;
   // The lowest of the top and its copies moved by ± skin (where a copy does not reach, the others
   // bound alone: looser, still above every point of the material without skins).
   CutEnvelope solid;

@@ -79,8 +79,9 @@ class MaterialModel {
   // as topWithin takes). A point of the material without such skins — withoutSkins in
   // material_replay.h: what is left where the material and its copies moved by ± skin along the
   // cut axis meet — stands at or below it (up to the booleans' rounding). Nothing where no stock
-  // stands. No Boost.
-  std::vector<CutEnvelope::Piece> topWithoutSkinsWithin(double c0, double c1, double skin) const;
+  // stands; nothing at all where the envelope's pieces overlap there (a feed split into pieces
+  // that are no graph over the cut axis): no bound. No Boost.
+  std::optional<std::vector<CutEnvelope::Piece>> topWithoutSkinsWithin(double c0, double c1, double skin) const;
 
   // The material a feed along `move` would remove now (remaining ∩ shadow), without removing it.
   BgRegion removedBy(const Segment& move) const;
@@ -102,7 +103,8 @@ class MaterialModel {
   std::optional<double> stockDeepestWithin(double c0, double c1) const;
   // The material's top at each cut coordinate over [c0, c1]: the stock's top, lowered to the
   // envelope where feeds have been; nothing where no stock stands.
-  CutEnvelope pointwiseTopWithin(double c0, double c1) const;
+  // Nothing where the envelope's pieces overlap.
+  std::optional<CutEnvelope> pointwiseTopWithin(double c0, double c1) const;
 
   BgRegion stock_;
   CrossingRegion stockForCrossing_;
