@@ -51,12 +51,15 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
 // ± the tolerance along the cut axis, as the region's measure leaves out skins narrower than that
 // (withoutSkins): the chords of a pass along an arc stray that far sideways, which next to a steep
 // tangent reads as thickness along the depth axis. So the top decides a pass, and the region left
-// confirms a finding.
+// confirms a finding. Where that top stands thicker (a stock whose top slopes, G73's near-net blank
+// in the relief's frame), the top without skins decides (mayStandThickerWithoutSkins): the judgement
+// below measures the material left without them before it reports.
 bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance) {
   if (!isGraphOverCutAxis(r.target, DepthFrame(r.away))) return true;
   const auto span = targetSpan(r, tolerance);
   if (!span) return false;
-  return standsThickerThan(r.model->topWithin(span->first, span->second), r.target, r.away, tolerance / 2, allowed);
+  return standsThickerThan(r.model->topWithin(span->first, span->second), r.target, r.away, tolerance / 2, allowed) &&
+         mayStandThickerWithoutSkins(*r.model, span->first, span->second, r.target, tolerance, allowed);
 }
 
 // no-gouge: no move enters the finish shape grown by the allowances by more than the tolerance.

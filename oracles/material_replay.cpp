@@ -66,6 +66,21 @@ BgRegion withoutSkins(const BgRegion& region, Point away, double width) {
   return twice;
 }
 
+bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c1, const std::vector<Segment>& profile,
+                                 double skin, double limit) {
+  // Of the tolerance (`skin`): how far below the limit the top must stay. The booleans round to
+  // 1e-7 of the material's size (region.h), 1e-5 mm on a 100 mm part; a tenth of the oracles'
+  // tolerance is 3e-4 mm.
+  constexpr double kMargin = 0.1;
+  const auto thicker = [&](double width) {
+    const auto top = model.topWithoutSkinsWithin(c0, c1, width);
+    return !top || standsThickerThan(*top, profile, model.away(), kMeasuringChord, limit - kMargin * skin);
+  };
+  // The top with its skins stands above the top without them: where it stays below the limit (a
+  // sloping stock's top), the copies are not needed.
+  return thicker(0) && thicker(skin);
+}
+
 namespace {
 
 // The part's outline: the (non-empty) profile flattened, then down to a bottom line `reach` beyond
@@ -295,10 +310,13 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   // standsThickerThan) and spares making the material left.
   const DepthFrame frame(away);
   if (isGraphOverCutAxis({move}, frame)) {
-    const double a = frame.cut(move.from), b = frame.cut(move.to);
-    if (!standsThickerThan(model.topWithin(std::min(a, b), std::max(a, b)), {move}, away, kMeasuringChord, allowed)) {
-      return std::nullopt;
-    }
+    const double a = std::min(frame.cut(move.from), frame.cut(move.to));
+    const double b = std::max(frame.cut(move.from), frame.cut(move.to));
+    if (!standsThickerThan(model.topWithin(a, b), {move}, away, kMeasuringChord, allowed)) return std::nullopt;
+    // A layer that stands thicker only as a skin is no finding either (below): where the stock's
+    // top slopes (G73's near-net blank, in the relief's frame) or the chords of the pass before
+    // stray along the depth axis next to a tangent parallel to it, the top without skins decides.
+    if (!mayStandThickerWithoutSkins(model, a, b, {move}, tolerance, allowed)) return std::nullopt;
   }
   const BgRegion layer = touching(model.remaining(), move, tolerance);
   if (layer.empty()) return std::nullopt;

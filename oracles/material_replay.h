@@ -61,6 +61,15 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
 // cut axis disappear, layers that are thin along the depth axis but wide stay.
 BgRegion withoutSkins(const BgRegion& region, Point away, double width);
 
+// Whether the material (without skins narrower than 2·`skin` along the cut axis: withoutSkins)
+// over the cut coordinates [c0, c1] may stand thicker than `limit` above `profile` (a graph over
+// the cut axis), measured as thickestAbove does with kMeasuringChord: false when the model's top
+// without skins (MaterialModel::topWithoutSkinsWithin) stays below the limit by a margin far above
+// the booleans' rounding — then the material without skins measures no thicker, and the oracles,
+// which report only what that measure confirms, spare making the material. No Boost.
+bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c1, const std::vector<Segment>& profile,
+                                 double skin, double limit);
+
 // G73's near-net blank's profile: the shape after block ns grown by the relief and the allowance
 // (the first pass's path, G73.PASS.SHIFT); the blank is everything behind it (impliedStockOf).
 std::vector<Segment> nearNetBlankProfile(const CycleSpec& c);

@@ -135,6 +135,85 @@ TEST(CutEnvelope, TheModelsTopIsTheEnvelopeCappedByTheStock) {
   expectPiece(top[5], -10, 20, 0, 20);
 }
 
+// A stock whose top slopes: x 20 at z −40 rising to x 24 at z 0 (1 in 10), down to the axis.
+BgRegion slopedStock() { return polygonStock({{-40, 0}, {-40, 20}, {0, 24}, {0, 0}}); }
+
+TEST(CutEnvelope, TheTopWithoutSkinsFollowsTheStocksOwnTop) {
+  // No feed yet: topWithin takes the stock's highest point over the range (x 23 at z −10), the top
+  // without skins the sloping top itself — and, without skins 1 mm wide, the lowest of it within
+  // ± 1 mm: 0.1 lower.
+  MaterialModel model(slopedStock(), kOuter, 100, 0.001);
+  const auto flat = model.topWithin(-30, -10);
+  ASSERT_EQ(flat.size(), 1u);
+  EXPECT_NEAR(flat[0].d0, 23, 1e-9);
+  EXPECT_NEAR(flat[0].d1, 23, 1e-9);
+  const auto sloping = *model.topWithoutSkinsWithin(-30, -10, 0);
+  ASSERT_EQ(sloping.size(), 1u);
+  EXPECT_NEAR(sloping[0].c0, -30, 1e-9);
+  EXPECT_NEAR(sloping[0].d0, 21, 1e-9);
+  EXPECT_NEAR(sloping[0].c1, -10, 1e-9);
+  EXPECT_NEAR(sloping[0].d1, 23, 1e-9);
+  const auto solid = *model.topWithoutSkinsWithin(-30, -10, 1);
+  ASSERT_EQ(solid.size(), 1u);
+  EXPECT_NEAR(solid[0].d0, 20.9, 1e-9);
+  EXPECT_NEAR(solid[0].d1, 22.9, 1e-9);
+  // Beyond the stock's end nothing stands: the top stops at z 0.
+  const auto end = *model.topWithoutSkinsWithin(-5, 5, 0);
+  ASSERT_FALSE(end.empty());
+  EXPECT_NEAR(end.back().c1, 0, 1e-9);
+}
+
+TEST(CutEnvelope, TheTopWithoutSkinsTakesTheLowestWithinTheSkinOfAFeed) {
+  // A feed at x 21 over z [−25, −15] under the sloping top: the top is the feed there, the stock
+  // beside it; without skins 1 mm wide the feed's depth reaches 1 mm further each way.
+  MaterialModel model(slopedStock(), kOuter, 100, 0.001);
+  model.apply(line({-15, 21}, {-25, 21}), MoveKind::Feed);
+  const auto depthAt = [](const std::vector<CutEnvelope::Piece>& top, double c) -> double {
+    for (const CutEnvelope::Piece& p : top) {
+      if (c >= p.c0 && c <= p.c1) return p.depthAt(c);
+    }
+    return -INFINITY;
+  };
+  const auto top = *model.topWithoutSkinsWithin(-35, -5, 0);
+  EXPECT_NEAR(depthAt(top, -30), 21, 1e-9);
+  EXPECT_NEAR(depthAt(top, -25.5), 21.45, 1e-9);
+  EXPECT_NEAR(depthAt(top, -20), 21, 1e-9);
+  EXPECT_NEAR(depthAt(top, -10), 23, 1e-9);
+  const auto solid = *model.topWithoutSkinsWithin(-35, -5, 1);
+  EXPECT_NEAR(depthAt(solid, -30), 20.9, 1e-9);   // the stock 1 mm to the left
+  EXPECT_NEAR(depthAt(solid, -25.5), 21, 1e-9);   // the feed, 0.5 mm to the right
+  EXPECT_NEAR(depthAt(solid, -14.5), 21, 1e-9);   // the feed, 0.5 mm to the left
+  EXPECT_NEAR(depthAt(solid, -13.5), 22.55, 1e-9);  // the stock 1 mm to the left
+}
+
+// The top without skins bounds the material left without skins (withoutSkins, Boost) above a
+// profile that is a graph over the cut axis, on random feeds over a stock whose top slopes: the
+// material measures no thicker than the top but for the booleans' noise (µm), so that
+// mayStandThickerWithoutSkins (which spares the oracles that measure) never hides a layer.
+RC_GTEST_PROP(CutEnvelope, TheTopWithoutSkinsBoundsTheMaterialWithoutSkins, ()) {
+  const std::vector<Segment> profile = {line({0, 12}, {-10, 12}), line({-10, 12}, {-10, 14}),
+                                        {SegmentKind::ArcCW, {-10, 14}, {-20, 14}, {-15, 14}, 0},
+                                        line({-20, 14}, {-40, 16})};
+  MaterialModel model(slopedStock(), kOuter, 100, 0.001);
+  const int feeds = *rc::gen::inRange(0, 8);
+  for (int i = 0; i < feeds; ++i) {
+    const Point a{-*rc::gen::inRange(0, 400) / 10.0, *rc::gen::inRange(90, 250) / 10.0};
+    const Point b{-*rc::gen::inRange(0, 400) / 10.0, *rc::gen::inRange(90, 250) / 10.0};
+    model.apply(line(a, b), MoveKind::Feed);
+  }
+  const double skin = *rc::gen::inRange(1, 30) / 10.0;
+  const double c0 = -*rc::gen::inRange(200, 400) / 10.0, c1 = -*rc::gen::inRange(0, 200) / 10.0;
+  const BgRegion band = regionFrom({{c0, -100}, {c0, 100}, {c1, 100}, {c1, -100}});
+  const BgRegion left = checkedIntersection(without(model.remaining(), partRegionOf(profile, kOuter, 100, 0.001)), band);
+  const auto region = thickestAbove(withoutSkins(left, kOuter, skin), profile, kOuter, 1e-6);
+  const auto top = thickestBeneath(*model.topWithoutSkinsWithin(c0, c1, skin), profile, kOuter, 1e-6);
+  if (!region) return;
+  RC_ASSERT(top.has_value());
+  RC_ASSERT(region->thickness <= top->thickness + 1e-4);
+  // And the question the oracles ask: not thicker than a limit the top stays below.
+  RC_ASSERT(mayStandThickerWithoutSkins(model, c0, c1, profile, skin, region->thickness));
+}
+
 // The material the model leaves equals stock ∖ ∪ shadows (Boost), for random line feeds over a bar.
 RC_GTEST_PROP(CutEnvelope, TheMaterialIsTheStockMinusEveryShadow, ()) {
   const BgRegion stock = barStock(40, 50, 0);

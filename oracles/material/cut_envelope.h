@@ -24,6 +24,8 @@ class CutEnvelope {
   // walked in either direction; chords no longer than kTidyDistance along the cut axis (moves
   // along the depth axis) remove nothing. True when the envelope came lower somewhere.
   bool lower(const std::vector<Point>& path, const DepthFrame& frame);
+  // The same for pieces already in frame coordinates, sorted and disjoint (not empty).
+  bool lower(const std::vector<Piece>& pieces) { return !pieces.empty() && lowerTo(pieces); }
 
   bool empty() const { return pieces_.empty(); }
   const std::vector<Piece>& pieces() const { return pieces_; }  // sorted, disjoint

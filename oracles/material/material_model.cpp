@@ -386,6 +386,63 @@ std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) c
   return top;
 }
 
+std::optional<CutEnvelope> MaterialModel::pointwiseTopWithin(double c0, double c1) const {
+  // The stock's top: its reversed envelope's pieces turned back into this frame, left to right.
+  std::vector<CutEnvelope::Piece> stock;
+  stockTop_.walk(
+      -c1, -c0,
+      [&](const CutEnvelope::Piece& p) {
+        if (p.c1 > p.c0) stock.push_back({-p.c1, -p.d1, -p.c0, -p.d0});
+      },
+      [](double, double) {});
+  std::reverse(stock.begin(), stock.end());
+  // The feeds' envelope over the stock only: beyond it there is no material to bound.
+  std::vector<CutEnvelope::Piece> feeds;
+  bool disjoint = true;
+  for (const CutEnvelope::Piece& s : stock) {
+    cut_.walk(
+        s.c0, s.c1,
+        [&](const CutEnvelope::Piece& p) {
+          if (!(p.c1 > p.c0)) return;
+          if (!feeds.empty() && p.c0 < feeds.back().c1 - kTidyDistance) disjoint = false;
+          feeds.push_back(p);
+        },
+        [](double, double) {});
+  }
+  // Pieces of the envelope that overlap (a feed lowered as a graph that was none) bound nothing.
+  if (!disjoint) return std::nullopt;
+  CutEnvelope top;
+  top.lower(stock);
+  top.lower(feeds);
+  return top;
+}
+
+std::optional<std::vector<CutEnvelope::Piece>> MaterialModel::topWithoutSkinsWithin(double c0, double c1,
+                                                                                    double skin) const {
+  const std::optional<CutEnvelope> found = pointwiseTopWithin(c0 - skin, c1 + skin);
+  if (!found) return std::nullopt;
+  const CutEnvelope& top = *found;
+  // The lowest of the top and its copies moved by ± skin (where a copy does not reach, the others
+  // bound alone: looser, still above every point of the material without skins).
+  CutEnvelope solid;
+  if (skin > 0) {
+    std::vector<CutEnvelope::Piece> moved;
+    for (double by : {0.0, -skin, skin}) {
+      moved.clear();
+      for (const CutEnvelope::Piece& p : top.pieces()) moved.push_back({p.c0 + by, p.d0, p.c1 + by, p.d1});
+      solid.lower(moved);
+    }
+  }
+  std::vector<CutEnvelope::Piece> within;
+  (skin > 0 ? solid : top).walk(
+      c0, c1,
+      [&](const CutEnvelope::Piece& p) {
+        if (p.c1 > p.c0) within.push_back(p);
+      },
+      [](double, double) {});
+  return within;
+}
+
 BgRegion MaterialModel::removedBy(const Segment& move) const {
   const BgRegion& material = remaining();
   if (material.empty()) return {};

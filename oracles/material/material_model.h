@@ -73,6 +73,16 @@ class MaterialModel {
   // cycle implies). No Boost.
   std::vector<CutEnvelope::Piece> topWithin(double c0, double c1) const;
 
+  // A tighter top over [c0, c1] that leaves out skins narrower than 2·`skin` along the cut axis:
+  // at each cut coordinate c the lowest of the material's top at c and at c ± skin, the top being
+  // the lower of the envelope and the stock's own top there (not its highest point over a piece,
+  // as topWithin takes). A point of the material without such skins — withoutSkins in
+  // material_replay.h: what is left where the material and its copies moved by ± skin along the
+  // cut axis meet — stands at or below it (up to the booleans' rounding). Nothing where no stock
+  // stands; nothing at all where the envelope's pieces overlap there (a feed split into pieces
+  // that are no graph over the cut axis): no bound. No Boost.
+  std::optional<std::vector<CutEnvelope::Piece>> topWithoutSkinsWithin(double c0, double c1, double skin) const;
+
   // The material a feed along `move` would remove now (remaining ∩ shadow), without removing it.
   BgRegion removedBy(const Segment& move) const;
 
@@ -91,6 +101,10 @@ class MaterialModel {
   // The deepest the stock comes over the cut coordinates [c0, c1]; nothing when it has no point
   // there. Where the range has some width, a wall standing at one of its ends does not count.
   std::optional<double> stockDeepestWithin(double c0, double c1) const;
+  // The material's top at each cut coordinate over [c0, c1]: the stock's top, lowered to the
+  // envelope where feeds have been; nothing where no stock stands.
+  // Nothing where the envelope's pieces overlap.
+  std::optional<CutEnvelope> pointwiseTopWithin(double c0, double c1) const;
 
   BgRegion stock_;
   CrossingRegion stockForCrossing_;
