@@ -137,7 +137,7 @@ TEST(SiemensContour, ChamfersAndRoundingsAreInsertedBetweenTwoLines) {
   expectSegment(chr.segments[1], SegmentKind::Line, {-8, 0}, {-10, 2}, 2);
   expectSegment(chr.segments[2], SegmentKind::Line, {-10, 2}, {-10, 10}, 3);
   // CHF=2√2: the chamfer's own length; a 90° turn gives legs 2√2 / (2 cos 45°) = 2.
-  const SiemensContour chf = contourOf("G1X0Z0\nZ-10CHF=2.8284271247461903\nX10\nM17\n", false);
+  const SiemensContour chf = contourOf("G1X0Z0\nZ-10CHF=2.82842712474619\nX10\nM17\n", false);
   ASSERT_EQ(chf.segments.size(), 3u);
   expectSegment(chf.segments[1], SegmentKind::Line, {-8, 0}, {-10, 2}, 2);
   // RND=2: tangent 2·tan 45° = 2 from the corner; the turn is to the right (clockwise) and the

@@ -46,7 +46,7 @@ TEST(SiemensParser, WordsWithoutSpacesAreSplitAtEachAddress) {
   EXPECT_EQ(b.words[1].address, "X");
   EXPECT_DOUBLE_EQ(b.words[1].value, 20.8);
   EXPECT_EQ(b.words[2].text, "Z-25.8");
-  EXPECT_EQ(b.words[2].column, 9);
+  EXPECT_EQ(b.words[2].column, 8);
   EXPECT_DOUBLE_EQ(b.words[3].value, -15);
   EXPECT_EQ(b.words[4].address, "I");
 }

@@ -58,7 +58,8 @@ SiemensContour readSiemensContour(const std::string& name, const SiemensBlocks& 
     if (hasSiemensAxisWord(b) && modal.motion == 0) {
       throw ParseError({blocks.file, b.line, 1}, "G1, G2 or G3 for an element of the contour " + name + " (G0 is in force)", b.text);
     }
-    if (const auto seg = siemensMotionSegment(b, *position, modal, blocks.file)) {
+    const auto seg = hasSiemensAxisWord(b) ? siemensMotionSegment(b, *position, modal, blocks.file) : std::nullopt;
+    if (seg) {
       contour.segments.push_back(*seg);
       cornerAfter.push_back(corner);
       position = seg->to;

@@ -49,6 +49,16 @@ Lcyc95Parameters lcyc95ParametersFrom(const RParameters& r, int line, MachiningT
   return p;
 }
 
+const CycleArgument& cycle95ContourArgument(const CycleCallText& call, const std::string& file) {
+  const CycleArgument* npp = call.arguments.empty() ? nullptr : &call.arguments.front();
+  if (!npp || !npp->text || npp->text->empty()) {
+    const int column = npp ? npp->column : call.column;
+    throw ParseError({file, call.line, column}, "the contour subprogram's name in double quotes as NPP (CYCLE95(\"L18\", …))",
+                     npp && npp->number ? "a number" : "nothing");
+  }
+  return *npp;
+}
+
 Cycle95Parameters cycle95ParametersFrom(const CycleCallText& call, const std::string& file, MachiningTypeLookup typeOf) {
   if (call.arguments.size() > kCycle95Count) {
     const CycleArgument& extra = call.arguments[kCycle95Count];
@@ -63,13 +73,7 @@ Cycle95Parameters cycle95ParametersFrom(const CycleCallText& call, const std::st
     return *a.number;
   };
   Cycle95Parameters p;
-  const CycleArgument* npp = call.arguments.empty() ? nullptr : &call.arguments.front();
-  if (!npp || !npp->text || npp->text->empty()) {
-    const int column = npp ? npp->column : call.column;
-    throw ParseError({file, call.line, column}, "the contour subprogram's name in double quotes as NPP (CYCLE95(\"L18\", …))",
-                     npp && npp->number ? "a number" : "nothing");
-  }
-  p.contourName = *npp->text;
+  p.contourName = *cycle95ContourArgument(call, file).text;
   p.infeed = number(1);
   p.allowanceZ = number(2);
   p.allowanceX = number(3);

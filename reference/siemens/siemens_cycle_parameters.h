@@ -29,6 +29,10 @@ void requireMachiningTypeNumber(double value, const std::string& what, int line)
 // gives nothing for a valid number, throws NotSupported "LCYC95 is not planned yet".
 Lcyc95Parameters lcyc95ParametersFrom(const RParameters& r, int line, MachiningTypeLookup typeOf = machiningTypeOf);
 
+// NPP, CYCLE95's first argument: the contour subprogram's name. Throws ParseError when it is not
+// a non-empty string.
+const CycleArgument& cycle95ContourArgument(const CycleCallText& call, const std::string& file);
+
 // CYCLE95's values from its arguments (NPP, MID, FALZ, FALX, FAL, FF1, FF2, FF3, VARI, DT, DAM,
 // _VRT). Throws ParseError at an argument of the wrong kind (a number for NPP, a string for the
 // others), for more than 12, or for an empty NPP.

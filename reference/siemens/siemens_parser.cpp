@@ -71,6 +71,12 @@ std::string describe(const SiemensToken& t) {
   }
 }
 
+// A line without words (blank, or a comment only) is no block.
+bool holdsNothing(const SiemensBlock& b) {
+  return b.words.empty() && b.rAssignments.empty() && b.strings.empty() && b.keywords.empty() && !b.cycle &&
+         !b.subprogramCall && !b.sequence;
+}
+
 // Reads the tokens of one line into a block.
 class BlockParser {
  public:
@@ -85,11 +91,6 @@ class BlockParser {
                                                                              : lexer_.line().size();
     block_.text = std::string(trimmed(lexer_.line().substr(0, commentAt)));
     return std::move(block_);
-  }
-
-  bool empty() const {
-    return block_.words.empty() && block_.rAssignments.empty() && block_.strings.empty() && block_.keywords.empty() &&
-           !block_.cycle && !block_.subprogramCall && !block_.sequence;
   }
 
  private:
@@ -244,9 +245,8 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
       endLine = 0;
       continue;
     }
-    BlockParser parser(line.text, file, line.number);
-    SiemensBlock block = parser.parse();
-    if (parser.empty()) continue;
+    SiemensBlock block = BlockParser(line.text, file, line.number).parse();
+    if (holdsNothing(block)) continue;
     if (endLine) {
       throw ParseError({file, line.number, 1},
                        std::string("nothing after the end at line ") + std::to_string(endLine) +

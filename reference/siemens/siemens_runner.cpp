@@ -162,14 +162,16 @@ class SiemensRunner {
     }
     requireKnownPosition(b, call.name + " starts from it");
     if (!started_) startPathOnceThePositionIsKnown();
+    // The contour is read before the parameters are checked: a program is read whole even while a
+    // planner answers NotSupported.
     if (lcyc) {
       const SiemensContour contour = contourForLcyc95(call);
       const Lcyc95Parameters p = lcyc95ParametersFrom(r_, b.line, planners_.typeOf);
       appendCycle(b, call, contour, planners_.lcyc95(callAt(b, contour), p));
     } else {
-      const CycleArgument& npp = call.arguments.front();
+      const CycleArgument& npp = cycle95ContourArgument(call, input_.file);
+      const SiemensContour contour = contourNamed(*npp.text, npp.line, npp.column);
       const Cycle95Parameters p = cycle95ParametersFrom(call, input_.file, planners_.typeOf);
-      const SiemensContour contour = contourNamed(p.contourName, npp.line, npp.column);
       appendCycle(b, call, contour, planners_.cycle95(callAt(b, contour), p));
     }
   }
