@@ -5,6 +5,7 @@
 
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
+#include "reference/siemens/siemens_number_text.h"
 
 namespace cyclecert {
 
@@ -13,13 +14,6 @@ namespace {
 // The end point's distance from the centre may differ from the start's by this much (mm), as the
 // FANUC reader allows (reference/interpreter/block_motion.cpp).
 constexpr double kArcRadiusTolerance = 0.01;
-
-std::string mm(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
 
 }  // namespace
 
@@ -67,7 +61,7 @@ std::optional<Segment> siemensMotionSegment(const SiemensBlock& b, Point from, c
     const auto center = arcCenterFromRadius(seg.from, seg.to, cr->value, seg.kind);
     if (!center) {
       throw CycleAlarm(kSiemensCircleEndPointAlarm, b.line,
-                       cr->text + " is shorter than half the chord (" + mm(distance(seg.from, seg.to) / 2) +
+                       cr->text + " is shorter than half the chord (" + siemensNumberText(distance(seg.from, seg.to) / 2) +
                            " mm), or the end point equals the start");
     }
     seg.center = *center;
@@ -81,7 +75,7 @@ std::optional<Segment> siemensMotionSegment(const SiemensBlock& b, Point from, c
   const double r1 = distance(seg.to, seg.center);
   if (std::abs(r0 - r1) > kArcRadiusTolerance || r0 <= kGeomEps) {
     throw CycleAlarm(kSiemensCircleEndPointAlarm, b.line,
-                     "the end point is not on the circle (radius " + mm(r0) + " mm at the start, " + mm(r1) +
+                     "the end point is not on the circle (radius " + siemensNumberText(r0) + " mm at the start, " + siemensNumberText(r1) +
                          " mm at the end)");
   }
   return seg;
