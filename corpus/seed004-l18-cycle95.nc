@@ -1,11 +1,11 @@
-(source: shared/seeds/004_e17a91cae76bcf9f.txt)
-(section: 三.SINUMERIK 802D - B. 加工程序, CYCLE95 main program and contour L18)
-(profile: sinumerik-802d)
-(rules: SEED004.EX.L18, SEED004.THREAD)
-(layout: the main program comes first; the contour subprogram follows the line)
-( '[subprogram: L18]' written in parentheses, which replaces the seed's heading 'L18.spf')
-(chamfers are 45 x 1.5)
-(transcription: none needed; CYCLE95/CYCLE97 argument lists kept as written, comma and space)
+; (source: shared/seeds/004_e17a91cae76bcf9f.txt)
+; (section: 三.SINUMERIK 802D - B. 加工程序, CYCLE95 main program and contour L18)
+; (profile: sinumerik-802d)
+; (rules: SEED004.EX.L18, SEED004.THREAD)
+; (layout: SINUMERIK comments start with ';'; the main program comes first, then after its M02 the)
+; ( contour subprogram as the seed prints it: a line L18.spf of its own, then its blocks; 'L18.spf' kept)
+; (chamfers are 45 x 1.5)
+; (transcription: none needed; CYCLE95/CYCLE97 argument lists kept as written, comma and space)
 T1D1
 M03S800
 G0X0Z2
@@ -26,7 +26,7 @@ Z100
 T3D0
 M05
 M02
-(subprogram: L18)
+L18.spf
 G1X0Z0F0.2
 G03X20Z-10CR=10
 G1Z-16

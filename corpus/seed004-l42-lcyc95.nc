@@ -1,12 +1,12 @@
-(source: shared/seeds/004_e17a91cae76bcf9f.txt)
-(section: 二.SINUMERIK 802S/c - B. 程序, LCYC95 main program and contour L42)
-(profile: sinumerik-802s)
-(rules: SEED004.EX.L42, SEED004.THREAD)
-(layout: the main program comes first; the contour subprogram follows the line)
-( '[subprogram: L42]' written in parentheses, which replaces the seed's heading 'L42. spf')
-(chamfers are 45 x 1.5)
-(transcription: the seed writes decimals with a space after the point - 'X20. 8Z-25. 8',)
-( 'X31. 6Z-39. 5', 'Z-46. 5', 'Z-58. 5', 'Z-66. 5' - joined here: X20.8 Z-25.8 etc.)
+; (source: shared/seeds/004_e17a91cae76bcf9f.txt)
+; (section: 二.SINUMERIK 802S/c - B. 程序, LCYC95 main program and contour L42)
+; (profile: sinumerik-802s)
+; (rules: SEED004.EX.L42, SEED004.THREAD)
+; (layout: SINUMERIK comments start with ';'; the main program comes first, then after its M02 the)
+; ( contour subprogram as the seed prints it: a line L42.spf of its own, then its blocks; 'L42. spf' [OCR space] written 'L42.spf')
+; (chamfers are 45 x 1.5)
+; (transcription: the seed writes decimals with a space after the point - 'X20. 8Z-25. 8',)
+; ( 'X31. 6Z-39. 5', 'Z-46. 5', 'Z-58. 5', 'Z-66. 5' - joined here: X20.8 Z-25.8 etc.)
 T1D1
 M03S800
 G0X50Z2
@@ -30,7 +30,7 @@ Z100
 T3D0
 M05
 M02
-(subprogram: L42)
+L42.spf
 G1X0Z0
 G3X20.8Z-25.8K-15I0
 G2X31.6Z-39.5CR=8

@@ -10,6 +10,7 @@
 #include "reference/gcode/parser.h"
 #include "reference/model/profile.h"
 #include "reference/model/toolpath.h"
+#include "reference/siemens/siemens_subprograms.h"
 #include "reports/svg/toolpath_svg.h"
 
 namespace cyclecert {
@@ -20,6 +21,10 @@ struct PlanRequest {
   std::string profile;   // empty: from a "(profile: NAME)" header comment, else fanuc-0i-f
   std::vector<std::pair<std::string, double>> params;  // by number or mnemonic, applied in order
   RunOptions options;    // MDI mode, tool offset
+  // SINUMERIK profiles (SIEMENS.SUB): contour subprograms given with the program (a spec case's
+  // "subprograms"), and the directory searched for NAME.spf / NAME.SPF (empty: none).
+  std::vector<GivenSubprogram> subprograms = {};
+  std::string subprogramDirectory = {};
 };
 
 // A request read: its profile, the machine parameters (the profile's defaults with the request's
@@ -38,6 +43,8 @@ ReadRequest readRequest(const PlanRequest& request);
 // (bad parameter) and NotSupported; a controller alarm is part of the returned toolpath.
 Toolpath planWithReference(const PlanRequest& request);
 Toolpath planSpecCase(const SpecCase& c);
+// A spec case as a plan request: its program, profile, parameters, mode, tool and subprograms.
+PlanRequest planRequestFor(const SpecCase& c);
 
 // The profile a program names in a "(profile: NAME)" comment, or "".
 std::string profileFromHeader(const std::string& programText);

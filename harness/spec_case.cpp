@@ -194,6 +194,13 @@ SpecCase specCaseFrom(json j, const std::string& file) {
     }
     c.stock = stock;
   }
+  if (j.contains("subprograms")) {
+    if (!j["subprograms"].is_object()) throw SpecError(file, "/subprograms", "an object of subprogram name → program text");
+    for (const auto& [name, text] : j["subprograms"].items()) {
+      if (!text.is_string()) throw SpecError(file, "/subprograms/" + name, "the subprogram's text (a string)");
+      c.subprograms.emplace_back(name, text.get<std::string>());
+    }
+  }
   if (j.contains("mode")) {
     if (j["mode"] != "mdi" && j["mode"] != "memory") throw SpecError(file, "/mode", "\"memory\" or \"mdi\"");
     c.mdi = j["mode"] == "mdi";

@@ -47,6 +47,9 @@ struct SpecCase {
   std::optional<ToolOffset> tool;             // the active tool's nose radius and tip direction
   bool mdi = false;                           // the program runs in MDI mode
   std::optional<CaseStock> stock;             // explicit stock (else implied by the cycle)
+  // SINUMERIK profiles (SIEMENS.SUB): the contour subprograms the program names, name → text
+  // ("subprograms": {"L42": "G1X0Z0\n…\nM02\n"}), by name.
+  std::vector<std::pair<std::string, std::string>> subprograms;
   nlohmann::json raw;                         // the case as written (what a process engine receives)
   std::string derivation;
 };

@@ -1,5 +1,6 @@
 // `cyclecert plan`: a program or a spec case planned by the reference engine.
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -73,6 +74,12 @@ PlanArgs parsePlanArgs(const std::vector<std::string>& args) {
   return p;
 }
 
+// The directory of a program file ("." for a bare file name).
+std::string siblingDirectoryOf(const std::string& program) {
+  const std::string parent = std::filesystem::path(program).parent_path().string();
+  return parent.empty() ? "." : parent;
+}
+
 }  // namespace
 
 static int commandPlan(const std::vector<std::string>& args) {
@@ -82,12 +89,11 @@ static int commandPlan(const std::vector<std::string>& args) {
   std::string title;
   if (!a.casePath.empty()) {
     specCase = loadSpecCase(a.casePath);
-    request = {specCase->program, a.casePath + "#/program", specCase->profile, specCase->params, {}};
-    request.options.mdi = specCase->mdi;
-    if (specCase->tool) request.options.tool = *specCase->tool;
+    request = planRequestFor(*specCase);
     title = specCase->id + " — " + specCase->title;
   } else {
     request = {readFile(a.program), a.program, "", {}, {}};
+    request.subprogramDirectory = siblingDirectoryOf(a.program);  // SIEMENS.SUB: NAME.spf next to it
     title = a.program;
   }
   if (!a.profile.empty()) request.profile = a.profile;

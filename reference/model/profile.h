@@ -19,6 +19,15 @@ namespace cyclecert {
 // forms.
 enum class RoughingBlockFormat { FanucTwoBlocks, HuazhongOneBlock, HaasOneBlock };
 
+// The language a profile reads programs in: ISO words with FANUC's canned cycles (FANUC, GSK,
+// Huazhong, Haas: reference/gcode), or SINUMERIK's (R parameters, `;` comments, cycle calls by
+// name with contour subprograms: reference/siemens).
+enum class Dialect { Fanuc, Siemens };
+
+// Which SINUMERIK control a Siemens profile models (seed 004): the 802S/C calls LCYC95 with R105…R112
+// and switches diameter programming with G23/G22; the 802D calls CYCLE95(…) and writes DIAMON/DIAMOF.
+enum class SiemensControl { None, Sinumerik802S, Sinumerik802D };
+
 struct Profile {
   std::string name;         // "fanuc-0i-f", "gsk"
   std::string description;
@@ -46,6 +55,8 @@ struct Profile {
   // Huazhong names a program on its first line "%3304" (seed 003's programs); FANUC, GSK and Haas
   // write O3304, and '%' alone frames the program.
   bool namesProgramsWithPercent = false;
+  Dialect dialect = Dialect::Fanuc;
+  SiemensControl siemensControl = SiemensControl::None;  // Dialect::Siemens only
 };
 
 const Profile* findProfile(std::string_view name);

@@ -64,10 +64,32 @@ Profile haas() {
   p.defaults.set("NT2", 1);
   return p;
 }
+
+// Seed 004, section 二: SINUMERIK 802S/C, stock removal with LCYC95 (R105…R112, the contour named by
+// _CNAME). Its alarm numbers come from the planners (reference/siemens).
+Profile sinumerik802s() {
+  Profile p;
+  p.name = "sinumerik-802s";
+  p.description = "SINUMERIK 802S/C lathe of seed 004: LCYC95 with R105…R112 and the contour subprogram _CNAME, G23/G22 diameter/radius";
+  p.seed = "004_e17a91cae76bcf9f.txt";
+  p.dialect = Dialect::Siemens;
+  p.siemensControl = SiemensControl::Sinumerik802S;
+  return p;
+}
+
+// Seed 004, section 三: SINUMERIK 802D, stock removal with CYCLE95(NPP, MID, …, _VRT).
+Profile sinumerik802d() {
+  Profile p = sinumerik802s();
+  p.name = "sinumerik-802d";
+  p.description = "SINUMERIK 802D lathe of seed 004: CYCLE95(NPP, MID, FALZ, FALX, FAL, FF1, FF2, FF3, VARI, DT, DAM, _VRT), DIAMON/DIAMOF";
+  p.siemensControl = SiemensControl::Sinumerik802D;
+  return p;
+}
 }  // namespace
 
 const std::vector<Profile>& allProfiles() {
-  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk(), hnc(), haas()};
+  static const std::vector<Profile> profiles = {fanuc0iF(), fanuc0iC(), gsk(), hnc(), haas(), sinumerik802s(),
+                                                sinumerik802d()};
   return profiles;
 }
 

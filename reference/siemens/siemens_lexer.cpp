@@ -1,0 +1,108 @@
+#include "reference/siemens/siemens_lexer.h"
+
+#include <charconv>
+#include <cmath>
+#include <utility>
+
+#include "reference/gcode/lexer.h"
+#include "reference/model/ascii.h"
+#include "reference/model/program.h"
+
+namespace cyclecert {
+
+namespace {
+
+bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+// A double holds any 15 significant decimal digits exactly; more would silently change the value
+// (the FANUC reader's limit, reference/gcode/parser.cpp).
+constexpr int kMostSignificantDigits = 15;
+
+int significantDigits(std::string_view number) {
+  int count = 0;
+  for (char c : number) {
+    if (!isDigit(c)) continue;
+    if (count > 0 || c != '0') ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
+std::string SiemensToken::upperName() const {
+  std::string upper(text);
+  for (char& c : upper) c = asciiUpper(c);
+  return upper;
+}
+
+std::string_view SiemensToken::stringBody() const {
+  return text.size() < 2 ? std::string_view{} : text.substr(1, text.size() - 2);
+}
+
+SiemensLexer::SiemensLexer(std::string_view line, std::string file, int lineNumber)
+    : line_(line), file_(std::move(file)), lineNumber_(lineNumber) {}
+
+SiemensToken SiemensLexer::next() {
+  while (pos_ < line_.size() && isBlank(line_[pos_])) ++pos_;
+  if (pos_ >= line_.size()) return take(SiemensTokenKind::EndOfLine, 0);
+  const char c = line_[pos_];
+  if (c == ';') return take(SiemensTokenKind::Comment, line_.size() - pos_);
+  if (isNameStart(c)) return name();
+  if (isDigit(c) || c == '+' || c == '-' || c == '.') return number();
+  if (c == '"') return string();
+  if (c == '=') return take(SiemensTokenKind::Equals, 1);
+  if (c == '(') return take(SiemensTokenKind::OpenParen, 1);
+  if (c == ')') return take(SiemensTokenKind::CloseParen, 1);
+  if (c == ',') return take(SiemensTokenKind::Comma, 1);
+  fail(pos_, "an address, a number, '=', a string in double quotes, a cycle's '(…)' or a ';' comment");
+}
+
+SiemensToken SiemensLexer::name() {
+  std::size_t end = pos_;
+  while (end < line_.size() && isNameStart(line_[end])) ++end;
+  return take(SiemensTokenKind::Name, end - pos_);
+}
+
+// The number's characters by the FANUC reader's rules (a lexer over the rest of the line: its
+// errors are moved to this line and column), its value by from_chars.
+SiemensToken SiemensLexer::number() {
+  Token scanned;
+  try {
+    scanned = Lexer(line_.substr(pos_), file_).next();
+  } catch (const ParseError& e) {
+    throw ParseError({file_, lineNumber_, static_cast<int>(pos_) + e.loc().column}, e.expected(), e.found());
+  }
+  SiemensToken token = take(SiemensTokenKind::Number, scanned.text.size());
+  const std::string_view digits = token.text.front() == '+' ? token.text.substr(1) : token.text;
+  if (significantDigits(digits) > kMostSignificantDigits) {
+    throw ParseError({file_, lineNumber_, token.column}, "a number of at most 15 significant digits", std::string(token.text));
+  }
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
+  if (error != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(token.number)) {
+    throw ParseError({file_, lineNumber_, token.column}, "a number within the range of a double", std::string(token.text));
+  }
+  return token;
+}
+
+SiemensToken SiemensLexer::string() {
+  const std::size_t close = line_.find('"', pos_ + 1);
+  if (close == std::string_view::npos) {
+    fail(line_.size(), "'\"' to close the string opened at column " + std::to_string(pos_ + 1));
+  }
+  return take(SiemensTokenKind::String, close - pos_ + 1);
+}
+
+SiemensToken SiemensLexer::take(SiemensTokenKind kind, std::size_t length) {
+  SiemensToken token{kind, line_.substr(pos_, length), static_cast<int>(pos_) + 1, 0};
+  pos_ += length;
+  return token;
+}
+
+void SiemensLexer::fail(std::size_t offset, const std::string& expected) const {
+  const std::string found = offset >= line_.size() ? "end of line" : describeSourceAt(line_, offset);
+  throw ParseError({file_, lineNumber_, static_cast<int>(offset) + 1}, expected, found);
+}
+
+}  // namespace cyclecert

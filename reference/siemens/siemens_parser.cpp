@@ -1,0 +1,274 @@
+#include "reference/siemens/siemens_parser.h"
+
+#include <cmath>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "reference/model/ascii.h"
+#include "reference/model/program.h"
+#include "reference/siemens/siemens_lexer.h"
+
+namespace cyclecert {
+
+namespace {
+
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+constexpr double kLargestSequenceNumber = 9999;  // 802S/D: N0…N9999 (interpretation, SIEMENS.LEX)
+constexpr const char* kAddressesWithNumbers = "G X Z I K F S T D M N L";
+constexpr const char* kEverythingAccepted =
+    "an address (G X Z I K F S T D M N L), R<n>=, CR=, CHF=, CHR=, RND=, _CNAME=, a cycle (LCYC95, CYCLE95(…)), "
+    "RET, DIAMON, DIAMOF or a ';' comment";
+
+struct Line {
+  std::string_view text;  // without its line end
+  int number = 0;
+};
+
+std::vector<Line> splitLines(std::string_view text) {
+  if (text.starts_with(kByteOrderMark)) text.remove_prefix(kByteOrderMark.size());
+  std::vector<Line> lines;
+  std::size_t start = 0;
+  int number = 1;
+  while (start <= text.size()) {
+    std::size_t end = start;
+    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+    lines.push_back({text.substr(start, end - start), number++});
+    if (end >= text.size()) break;
+    start = end + ((text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ? 2 : 1);
+  }
+  return lines;
+}
+
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && isBlank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && isBlank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// `L42.spf` (or .SPF, any case) alone on its line, a comment allowed after it: the subprogram's name.
+std::optional<std::string> subprogramHeading(std::string_view line) {
+  std::string_view s = trimmed(line.substr(0, line.find(';')));
+  const std::size_t dot = s.find('.');
+  if (dot == std::string_view::npos || dot == 0 || !equalIgnoringCase(s.substr(dot), ".spf")) return std::nullopt;
+  const std::string_view name = s.substr(0, dot);
+  for (char c : name) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    if (!ok) return std::nullopt;
+  }
+  std::string upper(name);
+  for (char& c : upper) c = asciiUpper(c);
+  return upper;
+}
+
+std::string describe(const SiemensToken& t) {
+  switch (t.kind) {
+    case SiemensTokenKind::EndOfLine: return "end of line";
+    case SiemensTokenKind::Comment: return "a ';' comment";
+    default: return std::string(t.text);
+  }
+}
+
+// A line without words (blank, or a comment only) is no block.
+bool holdsNothing(const SiemensBlock& b) {
+  return b.words.empty() && b.rAssignments.empty() && b.strings.empty() && b.keywords.empty() && !b.cycle &&
+         !b.subprogramCall && !b.sequence;
+}
+
+// Reads the tokens of one line into a block.
+class BlockParser {
+ public:
+  BlockParser(std::string_view line, const std::string& file, int lineNumber)
+      : lexer_(line, file, lineNumber), current_(lexer_.next()) {
+    block_.line = lineNumber;
+  }
+
+  SiemensBlock parse() {
+    while (current_.kind != SiemensTokenKind::EndOfLine && current_.kind != SiemensTokenKind::Comment) item();
+    const std::size_t commentAt = current_.kind == SiemensTokenKind::Comment ? static_cast<std::size_t>(current_.column - 1)
+                                                                             : lexer_.line().size();
+    block_.text = std::string(trimmed(lexer_.line().substr(0, commentAt)));
+    return std::move(block_);
+  }
+
+ private:
+  SiemensToken advance() { return std::exchange(current_, lexer_.next()); }
+
+  [[noreturn]] void fail(const SiemensToken& at, const std::string& expected) const {
+    throw ParseError({lexer_.file(), lexer_.lineNumber(), at.column}, expected, describe(at));
+  }
+
+  SiemensToken expect(SiemensTokenKind kind, const std::string& expected) {
+    if (current_.kind != kind) fail(current_, expected);
+    return advance();
+  }
+
+  void item() {
+    if (current_.kind != SiemensTokenKind::Name) fail(current_, kEverythingAccepted);
+    const SiemensToken name = advance();
+    const std::string upper = name.upperName();
+    if (upper == "R") return rAssignment(name);
+    if (upper == "CR" || upper == "CHF" || upper == "CHR" || upper == "RND") return namedValue(name, upper);
+    if (upper == "_CNAME") return stringAssignment(name, upper);
+    if (upper == "LCYC" || upper == "CYCLE") return cycleCall(name, upper);
+    if (upper == "RET" || upper == "DIAMON" || upper == "DIAMOF") {
+      block_.keywords.push_back({upper, lexer_.lineNumber(), name.column});
+      return;
+    }
+    if (upper.size() == 1 && std::string_view(kAddressesWithNumbers).find(upper[0]) != std::string_view::npos) {
+      return addressWord(name, upper);
+    }
+    fail(name, kEverythingAccepted);
+  }
+
+  SiemensWord wordFrom(const SiemensToken& name, const std::string& address, const SiemensToken& number,
+                       std::string_view between) const {
+    return {address, number.number, std::string(name.text) + std::string(between) + std::string(number.text),
+            lexer_.lineNumber(), name.column};
+  }
+
+  void addressWord(const SiemensToken& name, const std::string& address) {
+    if (current_.kind == SiemensTokenKind::Equals) {
+      fail(current_, "a number right after address " + address + " (" + address + "=… is not in the 802's language)");
+    }
+    const SiemensToken number = expect(SiemensTokenKind::Number, "a number after address " + address);
+    SiemensWord word = wordFrom(name, address, number, "");
+    if (address == "N") return sequence(number, word);
+    if (address == "L") return subprogramCall(number, std::move(word));
+    block_.words.push_back(std::move(word));
+  }
+
+  void sequence(const SiemensToken& number, const SiemensWord& word) {
+    if (block_.sequence) fail(number, "one N number per block");
+    if (number.text.find_first_not_of("0123456789") != std::string_view::npos || word.value > kLargestSequenceNumber) {
+      fail(number, "a block number N0…N9999 without sign or decimal point");
+    }
+    block_.sequence = static_cast<long>(word.value);
+  }
+
+  // L42: the subprogram named "L42" (seed 004's contours are named so).
+  void subprogramCall(const SiemensToken& number, SiemensWord word) {
+    if (number.text.find_first_not_of("0123456789") != std::string_view::npos) {
+      fail(number, "a subprogram number after L (L42), without sign or decimal point");
+    }
+    if (block_.subprogramCall) fail(number, "one subprogram call per block");
+    word.text = "L" + std::string(number.text);
+    block_.subprogramCall = std::move(word);
+  }
+
+  void rAssignment(const SiemensToken& name) {
+    const SiemensToken number = expect(SiemensTokenKind::Number, "an R parameter number after R (R105=…)");
+    if (number.text.find_first_not_of("0123456789") != std::string_view::npos || number.number > 999) {
+      fail(number, "an R parameter number 0…999 without sign or decimal point");
+    }
+    expect(SiemensTokenKind::Equals, "'=' after R" + std::string(number.text) + " (R" + std::string(number.text) + "=value)");
+    const SiemensToken value = expect(SiemensTokenKind::Number, "a number after R" + std::string(number.text) +
+                                                                   "= (expressions and other parameters are not read)");
+    block_.rAssignments.push_back({static_cast<int>(number.number), value.number, lexer_.lineNumber(), name.column});
+  }
+
+  void namedValue(const SiemensToken& name, const std::string& address) {
+    const SiemensToken equals = expect(SiemensTokenKind::Equals, "'=' after " + address + " (" + address + "=value)");
+    const SiemensToken number = expect(SiemensTokenKind::Number, "a number after " + address + "=");
+    block_.words.push_back(wordFrom(name, address, number, equals.text));
+  }
+
+  void stringAssignment(const SiemensToken& name, const std::string& variable) {
+    expect(SiemensTokenKind::Equals, "'=' after " + variable + " (" + variable + "=\"L42\")");
+    const SiemensToken value = expect(SiemensTokenKind::String, "a subprogram name in double quotes after " + variable + "=");
+    block_.strings.push_back({variable, std::string(value.stringBody()), lexer_.lineNumber(), name.column});
+  }
+
+  void cycleCall(const SiemensToken& name, const std::string& prefix) {
+    const SiemensToken number = expect(SiemensTokenKind::Number, "the cycle's number after " + prefix + " (" + prefix + "95)");
+    if (block_.cycle) fail(name, "one cycle call per block");
+    CycleCallText call;
+    call.name = prefix + std::string(number.text);
+    call.line = lexer_.lineNumber();
+    call.column = name.column;
+    if (current_.kind == SiemensTokenKind::OpenParen) {
+      advance();
+      call.withArguments = true;
+      arguments(call);
+    }
+    block_.cycle = std::move(call);
+  }
+
+  // (a, "b", , c): an argument is a number, a string or nothing; ',' separates, ')' ends.
+  void arguments(CycleCallText& call) {
+    for (;;) {
+      CycleArgument arg;
+      arg.line = lexer_.lineNumber();
+      arg.column = current_.column;
+      if (current_.kind == SiemensTokenKind::Number) {
+        arg.number = advance().number;
+      } else if (current_.kind == SiemensTokenKind::String) {
+        arg.text = std::string(advance().stringBody());
+      }
+      call.arguments.push_back(std::move(arg));
+      if (current_.kind == SiemensTokenKind::CloseParen) {
+        advance();
+        return;
+      }
+      expect(SiemensTokenKind::Comma, "',' or ')' after argument " + std::to_string(call.arguments.size()) + " of " +
+                                          call.name + " (an argument is a number, a \"string\" or empty)");
+    }
+  }
+
+  SiemensLexer lexer_;
+  SiemensToken current_;
+  SiemensBlock block_;
+};
+
+// The blocks of `lines`, in order; `printed` collects the subprograms printed after the main
+// program (nullptr: a heading is refused).
+SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file,
+                         std::vector<PrintedSubprogram>* printed) {
+  SiemensBlocks main{file, {}};
+  SiemensBlocks* section = &main;
+  int endLine = 0;  // the line of the current section's M02/M17/M30/RET, 0 before it
+  for (const Line& line : lines) {
+    if (const auto name = subprogramHeading(line.text)) {
+      const int column = static_cast<int>(line.text.find_first_not_of(" \t")) + 1;
+      if (!printed) {
+        throw ParseError({file, line.number, column}, "a block of the subprogram (a heading NAME.spf only in a main program)",
+                         std::string(trimmed(line.text)));
+      }
+      if (!endLine) {
+        throw ParseError({file, line.number, column},
+                         "the program's end (M02, M30, M17 or RET) before the subprogram heading", std::string(trimmed(line.text)));
+      }
+      printed->push_back({*name, line.number, {file, {}}});
+      section = &printed->back().body;
+      endLine = 0;
+      continue;
+    }
+    SiemensBlock block = BlockParser(line.text, file, line.number).parse();
+    if (holdsNothing(block)) continue;
+    if (endLine) {
+      throw ParseError({file, line.number, 1},
+                       std::string("nothing after the end at line ") + std::to_string(endLine) +
+                           (printed ? " but a subprogram heading NAME.spf (a line of its own, e.g. L42.spf)" : ""),
+                       block.text);
+    }
+    if (block.endsProgram()) endLine = block.line;
+    section->blocks.push_back(std::move(block));
+  }
+  return main;
+}
+
+}  // namespace
+
+SiemensProgram parseSiemensProgram(std::string_view text, const std::string& file) {
+  SiemensProgram program;
+  program.main = parseLines(splitLines(text), file, &program.printed);
+  return program;
+}
+
+SiemensBlocks parseSiemensSubprogram(std::string_view text, const std::string& file) {
+  return parseLines(splitLines(text), file, nullptr);
+}
+
+}  // namespace cyclecert

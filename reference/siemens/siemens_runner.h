@@ -1,0 +1,42 @@
+#pragma once
+// Runs a SINUMERIK program (profiles sinumerik-802s and sinumerik-802d; rules SIEMENS.*): the
+// main program's G0/G1/G2/G3 moves become moves of phase "program" from the first position the
+// program gives in both axes on (PROG.WHOLE, as the FANUC runner draws them); R parameters and
+// _CNAME are kept; LCYC95 (802S: R105…R112 read at the call, the contour named by _CNAME) and
+// CYCLE95 (802D: its arguments, the contour NPP) are built into a SiemensCycleCall and planned by
+// planLcyc95 / planCycle95, whose moves are appended. A controller alarm ends the run and is part
+// of the toolpath; NotSupported and ParseError are thrown.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "reference/model/profile.h"
+#include "reference/model/tool.h"
+#include "reference/model/toolpath.h"
+#include "reference/siemens/siemens_cycle_parameters.h"
+#include "reference/siemens/siemens_cycles.h"
+#include "reference/siemens/siemens_program.h"
+#include "reference/siemens/siemens_subprograms.h"
+
+namespace cyclecert {
+
+// The planners the runner calls (the real ones by default; a test's recording ones to see the
+// calls the runner builds).
+struct SiemensPlanners {
+  std::function<SiemensCycleOutcome(const SiemensCycleCall&, const Lcyc95Parameters&)> lcyc95 = planLcyc95;
+  std::function<SiemensCycleOutcome(const SiemensCycleCall&, const Cycle95Parameters&)> cycle95 = planCycle95;
+  MachiningTypeLookup typeOf = machiningTypeOf;
+};
+
+struct SiemensRunInput {
+  std::string text;                        // the main program (and any subprograms printed after it)
+  std::string file;                        // for error messages
+  std::vector<GivenSubprogram> subprograms;  // a spec case's "subprograms"
+  std::string siblingDirectory;            // searched for NAME.spf / NAME.SPF; empty: none
+  ToolOffset tool;                         // the active tool's nose radius and tip
+};
+
+// Requires profile.dialect == Dialect::Siemens.
+Toolpath planSiemensProgram(const SiemensRunInput& input, const Profile& profile, const SiemensPlanners& planners = {});
+
+}  // namespace cyclecert

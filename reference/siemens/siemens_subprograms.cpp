@@ -1,0 +1,39 @@
+#include "reference/siemens/siemens_subprograms.h"
+
+#include "reference/model/ascii.h"
+#include "reference/model/program.h"
+#include "reference/siemens/siemens_parser.h"
+
+namespace cyclecert {
+
+SiemensSubprograms::SiemensSubprograms(const SiemensProgram& program, std::vector<GivenSubprogram> given,
+                                       std::string siblingDirectory)
+    : program_(program), given_(std::move(given)), siblingDirectory_(std::move(siblingDirectory)) {}
+
+const SiemensBlocks& SiemensSubprograms::find(const std::string& name, const std::string& file, int line, int column) {
+  for (const PrintedSubprogram& p : program_.printed) {
+    if (equalIgnoringCase(p.name, name)) return p.body;
+  }
+  std::string key = name;
+  for (char& c : key) c = asciiUpper(c);
+  if (const auto found = read_.find(key); found != read_.end()) return *found->second;
+  for (const GivenSubprogram& g : given_) {
+    if (!equalIgnoringCase(g.name, name)) continue;
+    auto blocks = std::make_unique<SiemensBlocks>(parseSiemensSubprogram(g.text, g.file));
+    return *read_.emplace(key, std::move(blocks)).first->second;
+  }
+  if (!siblingDirectory_.empty()) {
+    if (const auto sibling = readSiblingSubprogram(siblingDirectory_, name)) {
+      auto blocks = std::make_unique<SiemensBlocks>(parseSiemensSubprogram(sibling->second, sibling->first));
+      return *read_.emplace(key, std::move(blocks)).first->second;
+    }
+  }
+  const std::string sibling = siblingDirectory_.empty() ? std::string("a file ") + name + ".spf next to the main program (when it is read from a file)"
+                                                        : "a file " + name + ".spf or " + name + ".SPF in " + siblingDirectory_;
+  throw ParseError({file, line, column},
+                   "the subprogram " + name + ": printed after the main program's M02/M30 under a line '" + name +
+                       ".spf', in the case's \"subprograms\" object, or " + sibling,
+                   "no subprogram " + name);
+}
+
+}  // namespace cyclecert
