@@ -19,7 +19,9 @@ StockRemovalSettings cycle95Settings(const Cycle95Parameters& p) {
   s.finishingFeed = p.finishingFeed;
   s.interruptLength = p.interruptLength;
   s.axesReturnOneAfterTheOther = true;
-  s.rules = {"CYCLE95.ROUGH", "CYCLE95.START", "CYCLE95.DEPTH", "CYCLE95.FINISH", "CYCLE95.COMPLETE", "CYCLE95.DAM"};
+  s.roughUndercuts = true;
+  s.undercutFeed = p.undercutFeed;
+  s.rules = {"CYCLE95.ROUGH", "CYCLE95.START", "CYCLE95.DEPTH", "CYCLE95.FINISH", "CYCLE95.COMPLETE", "CYCLE95.DAM", "CYCLE95.UNDERCUT"};
   return s;
 }
 

@@ -31,7 +31,7 @@ StockRemovalSettings lcyc95Settings(const Lcyc95Parameters& p) {
   s.roughingFeed = p.roughingFeed;
   s.finishingFeed = p.finishingFeed;
   s.axesReturnOneAfterTheOther = false;
-  s.rules = {"LCYC95.ROUGH", "LCYC95.START", "LCYC95.DEPTH", "LCYC95.FINISH", "LCYC95.COMPLETE", ""};
+  s.rules = {"LCYC95.ROUGH", "LCYC95.START", "LCYC95.DEPTH", "LCYC95.FINISH", "LCYC95.COMPLETE", "", ""};
   return s;
 }
 

@@ -43,6 +43,8 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
   cycle.finishingFeed = s.finishingFeed;
   cycle.interruptLength = s.interruptLength;
   cycle.axesReturnOneAfterTheOther = s.axesReturnOneAfterTheOther;
+  cycle.roughUndercuts = s.roughUndercuts;
+  cycle.undercutFeed = s.undercutFeed;
   cycle.technology = s.type.technology;
   cycle.rules = s.rules;
 

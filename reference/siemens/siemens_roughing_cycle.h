@@ -23,6 +23,8 @@ struct StockRemovalSettings {
   double finishingFeed = 0;
   double interruptLength = 0; // DAM
   bool axesReturnOneAfterTheOther = false;
+  bool roughUndercuts = false;
+  double undercutFeed = 0;    // FF2
   StockRemovalRules rules;
 };
 

@@ -9,6 +9,7 @@
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/model/alarms.h"
 #include "reference/model/offset.h"
+#include "reference/siemens/siemens_roughing_undercut.h"
 
 namespace cyclecert {
 
@@ -73,8 +74,6 @@ Segment trimmed(const Segment& s, Point from, Point to) {
   return r;
 }
 
-bool startsDescending(const Segment& s) { return unitTangentAtStart(s).x < -1e-9; }
-
 double angleAround(const Segment& arc, Point p) { return std::atan2(p.x - arc.center.x, p.z - arc.center.z); }
 
 // How far along `s` (0 at `from`) the point `p` on it lies.
@@ -83,19 +82,14 @@ double positionAlong(const Segment& s, Point p) {
   return offsetAlongArc(s, angleAround(s, p)).value_or(std::abs(sweep(s)));
 }
 
-// Where the contour-parallel cleanup stops on `s` (after its start): where the profile reaches the
-// previous level `upper`, or where it turns back down (an undercut begins: the top of an arc).
+// Where the contour-parallel cleanup stops on `s`: where the profile reaches the previous level
+// `upper` (after its start), or where it starts to turn back down (an undercut begins).
 std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
   std::vector<Point> stops;
   for (const Point& p : intersectWithLevelX(s, upper)) {
     if (distance(p, s.from) > kGeomEps) stops.push_back(p);
   }
-  if (s.isArc()) {
-    for (const Point& p : apexesAlong(s)) {
-      const bool top = std::abs(p.z - s.center.z) <= 1e-7 && p.x > s.center.x;
-      if (top && distance(p, s.from) > kGeomEps && distance(p, s.to) > kGeomEps) stops.push_back(p);
-    }
-  }
+  if (const auto descent = descentStartOn(s)) stops.push_back(*descent);
   if (stops.empty()) return std::nullopt;
   return *std::min_element(stops.begin(), stops.end(), [&](Point a, Point b) {
     return positionAlong(s, a) < positionAlong(s, b);
@@ -110,7 +104,6 @@ std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, co
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? trimmed(profile[i], hit.at, profile[i].to) : profile[i];
-    if (s.length() > kGeomEps && startsDescending(s)) break;
     if (const auto stop = cleanupStopOn(s, upper)) {
       pieces.push_back(trimmed(s, s.from, *stop));
       break;
@@ -163,21 +156,33 @@ class StockRemovalPlanner {
   // --- roughing (LCYC95.ROUGH, CYCLE95.ROUGH) ---
 
   void rough() {
-    const InfeedSteps steps = equalInfeedSteps(start_.x - c_.clearance.x - lowestX(c_.profile), c_.maxInfeed);
+    const double top = start_.x - c_.clearance.x;
+    const std::vector<double> levels = roughingLevels(top, lowestX(c_.profile));
+    approachStart();
+    const int count = static_cast<int>(levels.size()) - 1;
+    for (int k = 1; k <= count; ++k) {
+      roughingPass(k, levels[k], levels[k - 1]);
+      if (k < count) backAlongCutAxis(k);
+    }
+    if (c_.roughUndercuts) {
+      int pass = count;
+      for (const Undercut& u : findUndercuts(c_.profile, levels)) roughUndercut(u, pass);
+    }
+    if (c_.technology == SiemensTechnology::Roughing) returnToStart();
+  }
+
+  // The levels from `top` down to `bottom` in equal steps (LCYC95.DEPTH), `top` first; the last is
+  // `bottom` itself.
+  std::vector<double> roughingLevels(double top, double bottom) const {
+    const InfeedSteps steps = equalInfeedSteps(top - bottom, c_.maxInfeed);
     if (steps.count > kMostRoughingPasses) {
       throw NotSupported(0, "the stock-removal cycle would make " + std::to_string(steps.count) +
                                 " passes; the reference plans at most " +
                                 std::to_string(static_cast<long>(kMostRoughingPasses)));
     }
-    approachStart();
-    const double top = start_.x - c_.clearance.x;
-    for (int k = 1; k <= steps.count; ++k) {
-      const double previous = top - (k - 1) * steps.depth;
-      const double level = k == steps.count ? lowestX(c_.profile) : top - k * steps.depth;
-      roughingPass(k, level, previous);
-      if (k < steps.count) backAlongCutAxis(k);
-    }
-    if (c_.technology == SiemensTechnology::Roughing) returnToStart();
+    std::vector<double> levels{top};
+    for (int k = 1; k <= steps.count; ++k) levels.push_back(k == steps.count ? bottom : top - k * steps.depth);
+    return levels;
   }
 
   // G0 to the computed start with both axes together.
@@ -196,6 +201,39 @@ class StockRemovalPlanner {
       }
     }
     retract(k);
+  }
+
+  // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
+  // its own equal steps from the level that passed over it down to its lowest point, at FF2: G0 up to
+  // the start's height (the first pocket pass) or along the cut axis at the retract height, G1
+  // straight down where the level meets the pocket's falling side, G1 across to its rising side, along
+  // the profile up to the previous level, retract in each axis.
+
+  void roughUndercut(const Undercut& u, int& pass) {
+    emit(MoveKind::Rapid, {current().z, start_.x}, 0, StockRemovalPhase::Pass, pass + 1, {c_.rules.undercut});
+    const std::vector<double> levels = roughingLevels(u.top, u.bottom());
+    for (std::size_t m = 1; m < levels.size(); ++m) undercutPass(u, ++pass, levels[m], levels[m - 1], m + 1 == levels.size());
+  }
+
+  void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
+    const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
+    const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
+    const auto out = lowest ? std::optional<ProfilePoint>{ProfilePoint{0, lowPoint}}
+                            : roughingIntersection(u.up, level, std::numeric_limits<double>::infinity());
+    const double inZ = in ? in->at.z : lowPoint.z;
+    const std::vector<std::string> rules{c_.rules.undercut};
+    emit(MoveKind::Rapid, {inZ, current().x}, 0, StockRemovalPhase::Pass, k, rules);
+    emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, StockRemovalPhase::Pass, k, rules);
+    if (out && !u.up.empty()) {
+      emit(MoveKind::Feed, out->at, c_.undercutFeed, StockRemovalPhase::Pass, k, rules);
+      for (const Segment& s : cleanupAlongProfile(u.up, *out, previous)) {
+        emitAlong(s, c_.undercutFeed, StockRemovalPhase::Pass, k, c_.rules.undercut);
+      }
+    } else {  // the pocket stays open to the profile's end
+      const Point end = u.up.empty() ? lowPoint : u.up.back().to;
+      emit(MoveKind::Feed, {end.z, level}, c_.undercutFeed, StockRemovalPhase::Pass, k, rules);
+    }
+    emit(MoveKind::Rapid, current() + c_.clearance, 0, StockRemovalPhase::Pass, k, rules);
   }
 
   // Infeed to the level at the infeed angle (R109, from the infeed axis), never beyond the

@@ -23,6 +23,7 @@ struct StockRemovalRules {
   std::string finish;     // LCYC95.FINISH / CYCLE95.FINISH
   std::string complete;   // LCYC95.COMPLETE / CYCLE95.COMPLETE
   std::string interrupt;  // CYCLE95.DAM (empty for LCYC95)
+  std::string undercut;   // CYCLE95.UNDERCUT (empty for LCYC95)
 };
 
 // One stock-removal cycle, in the frame.
@@ -37,6 +38,8 @@ struct StockRemoval {
   double finishingFeed = 0;         // R112 / FF3
   double interruptLength = 0;       // DAM: a roughing cut is split after this length (0: never)
   bool axesReturnOneAfterTheOther = false;  // CYCLE95.ROUGH: at the end of roughing
+  bool roughUndercuts = false;      // CYCLE95.UNDERCUT (LCYC95 leaves them to finishing)
+  double undercutFeed = 0;          // FF2
   SiemensTechnology technology = SiemensTechnology::Roughing;
   StockRemovalRules rules;
 };
