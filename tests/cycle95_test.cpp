@@ -1,0 +1,242 @@
+// CYCLE95 (SINUMERIK 802D, seed 004 §3; reference/siemens/cycle95_planner.cpp and
+// siemens_roughing_*): the roughing with its own parameters (MID, FALZ/FALX/FAL, FF1, _VRT, the G0
+// infeed, the axes returning one after the other), DAM, undercuts at FF2, the seed's L18, the
+// alarms. Expectations derived by hand in the comments from CYCLE95.ROUGH/UNDERCUT and the
+// interpretations in specs/rules.json (CYCLE95.*).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "reference/model/alarms.h"
+#include "reference/siemens/siemens_cycles.h"
+#include "tests/siemens_contours.h"
+
+namespace cyclecert {
+namespace {
+
+using namespace siemens_test;
+
+// MID 4, no allowances, FF1 0.2, FF2 0.05, FF3 0.1, DT 0, DAM 0, _VRT 1 unless a test says otherwise.
+Cycle95Parameters params(double vari) {
+  Cycle95Parameters p;
+  p.contourName = "C";
+  p.infeed = 4;
+  p.roughingFeed = 0.2;
+  p.undercutFeed = 0.05;
+  p.finishingFeed = 0.1;
+  p.type = machiningTypeOf(vari).value();
+  p.retract = 1;
+  return p;
+}
+
+SiemensCycleCall callAt(Point position, const SiemensContour& contour) {
+  SiemensCycleCall c;
+  c.line = 4;
+  c.position = position;
+  c.contour = &contour;
+  return c;
+}
+
+// FALZ 0.5, FALX 0.25: the profile is the step shaft shifted by (0.5, 0.25): (0.5, 0.25) → (0.5, 4.25)
+// → (−9.5, 4.25) → (−9.5, 9.25) → (−19.5, 9.25). Start: (0.5 + 1, 9.25 + 1) = (1.5, 10.25). Depth
+// 9.25 − 0.25 = 9, MID 4: 3 passes of 3, levels 6.25, 3.25, 0.25. The infeed is a G0 (CYCLE95.ROUGH).
+TEST(Cycle95Rough, AxisAllowancesAndTheG0Infeed) {
+  const SiemensContour shaft = stepShaft();
+  Cycle95Parameters p = params(1);
+  p.allowanceZ = 0.5;
+  p.allowanceX = 0.25;
+  const auto out = planCycle95(callAt({5, 15}, shaft), p);
+  ASSERT_GE(out.moves.size(), 6u);
+  const std::vector<Move> first(out.moves.begin(), out.moves.begin() + 6);
+  expectMoves(first, {
+                         {G0, {1.5, 10.25}, "approach"},
+                         {G0, {1.5, 6.25}, "pass", 1},
+                         {G1, {-9.5, 6.25}, "pass", 1},
+                         {G1, {-9.5, 9.25}, "pass", 1},
+                         {G0, {-8.5, 10.25}, "pass", 1},
+                         {G0, {1.5, 10.25}, "pass", 1},
+                     });
+  EXPECT_EQ(passCount(out.moves), 3);
+  EXPECT_EQ(first[2].feed, 0.2);
+  EXPECT_EQ(first[2].rules, (std::vector<std::string>{"CYCLE95.ROUGH"}));
+}
+
+// DAM 4: pass 1's cut from (1, 6) to (−10, 6), 11 long, is interrupted after 4 and 8: (−3, 6), (−7, 6),
+// then the rest to (−10, 6). (DT is a dwell, not a move.)
+TEST(Cycle95Rough, DamInterruptsTheCut) {
+  const SiemensContour shaft = stepShaft();
+  Cycle95Parameters p = params(1);
+  p.interruptLength = 4;
+  p.dwell = 0.5;
+  const auto out = planCycle95(callAt({5, 15}, shaft), p);
+  ASSERT_GE(out.moves.size(), 6u);
+  EXPECT_EQ(out.moves[1].to, (Point{1, 6}));
+  EXPECT_EQ(out.moves[2].to, (Point{-3, 6}));
+  EXPECT_EQ(out.moves[3].to, (Point{-7, 6}));
+  EXPECT_EQ(out.moves[4].to, (Point{-10, 6}));
+  EXPECT_EQ(out.moves[2].rules, (std::vector<std::string>{"CYCLE95.ROUGH", "CYCLE95.DAM"}));
+  EXPECT_EQ(out.moves[4].rules, (std::vector<std::string>{"CYCLE95.ROUGH"}));
+}
+
+// --- CYCLE95.UNDERCUT: a V-shaped pocket ---
+//
+// Contour: (0, 0) → (0, 6) → (−5, 6) → (−10, 2) → (−15, 6) → (−15, 8) → (−25, 8). Start (1, 9); depth 8,
+// MID 4: levels 4 and 0.
+//  pass 1 (level 4): G0 in to (1, 4); G1 to the face z 0; along it to (0, 6) and the flat to (−5, 6),
+//    where the profile turns down (the pocket): stop; retract (−4, 7); G0 back (1, 7).
+//  pass 2 (level 0): G0 (1, 0); G1 (0, 0); up the face to the previous level (0, 4); retract (1, 5).
+//  The pocket: its rim (−5, 6) is below level 8 (the top: the lowest level at or above it), so its stock
+//  lies under 8, down to its lowest point x 2: depth 6, MID 4: 2 steps of 3, levels 5 and 2, at FF2.
+//  G0 up to the start's height: (1, 9).
+//  pass 3 (level 5): the falling side (−5, 6)→(−10, 2) is at x 5 at z −6.25: G0 (−6.25, 9), G1 down
+//    (−6.25, 5); across to the rising side (−10, 2)→(−15, 6) at x 5: z −13.75; along it to (−15, 6) and
+//    up the face to the previous level 8: (−15, 8); retract (−14, 9).
+//  pass 4 (level 2, the lowest point (−10, 2)): G0 (−10, 9); G1 (−10, 2); along the rising side to the
+//    previous level 5: (−13.75, 5); retract (−12.75, 6).
+//  The axes return one after the other, X first: (−12.75, 9), then (1, 9).
+TEST(Cycle95Undercut, AVPocketIsRoughedAtFF2) {
+  const SiemensContour v = polyline("V", {{0, 0}, {0, 6}, {-5, 6}, {-10, 2}, {-15, 6}, {-15, 8}, {-25, 8}});
+  const auto out = planCycle95(callAt({5, 15}, v), params(1));
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 4}, "pass", 1},
+                             {G1, {0, 4}, "pass", 1},
+                             {G1, {0, 6}, "pass", 1},
+                             {G1, {-5, 6}, "pass", 1},
+                             {G0, {-4, 7}, "pass", 1},
+                             {G0, {1, 7}, "pass", 1},
+                             {G0, {1, 0}, "pass", 2},
+                             {G1, {0, 0}, "pass", 2},
+                             {G1, {0, 4}, "pass", 2},
+                             {G0, {1, 5}, "pass", 2},
+                             {G0, {1, 9}, "pass", 3},
+                             {G0, {-6.25, 9}, "pass", 3},
+                             {G1, {-6.25, 5}, "pass", 3},
+                             {G1, {-13.75, 5}, "pass", 3},
+                             {G1, {-15, 6}, "pass", 3},
+                             {G1, {-15, 8}, "pass", 3},
+                             {G0, {-14, 9}, "pass", 3},
+                             {G0, {-10, 9}, "pass", 4},
+                             {G1, {-10, 2}, "pass", 4},
+                             {G1, {-13.75, 5}, "pass", 4},
+                             {G0, {-12.75, 6}, "pass", 4},
+                             {G0, {-12.75, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (std::size_t i = 11; i < 22; ++i) {
+    EXPECT_EQ(out.moves[i].rules, (std::vector<std::string>{"CYCLE95.UNDERCUT"})) << i;
+    if (out.moves[i].kind == MoveKind::Feed) {
+      EXPECT_EQ(out.moves[i].feed, 0.05) << i;
+    }
+  }
+}
+
+// LCYC95 on the same contour leaves the pocket to finishing: its passes stop at the rim and no pass
+// goes below level 4 between z −5 and −15.
+TEST(Cycle95Undercut, Lcyc95DoesNotRoughThePocket) {
+  const SiemensContour v = polyline("V", {{0, 0}, {0, 6}, {-5, 6}, {-10, 2}, {-15, 6}, {-15, 8}, {-25, 8}});
+  Lcyc95Parameters p;
+  p.type = machiningTypeOf(1).value();
+  p.maxInfeed = 4;
+  p.retract = 1;
+  p.roughingFeed = 0.2;
+  const auto out = planLcyc95(callAt({5, 15}, v), p);
+  EXPECT_EQ(passCount(out.moves), 2);
+  for (const Move& m : out.moves) EXPECT_FALSE(m.to.z < -5 && m.to.z > -15 && m.to.x < 6) << m.to.z << " " << m.to.x;
+}
+
+// --- The seed's L18 (SEED004.EX.L18): CYCLE95("L18", 1.5, 0.3, 0.3, 0.2, 0.2, 0.2, 0.2, 9, 0, 0, 1)
+// from G0X0Z2: (2, 0) ---
+//
+// L18 in radius: (0, 0); G03 to (−10, 10) CR=10: a quarter circle about (−10, 0); (−16, 10); (−16, 13.5);
+// (−17.5, 15); (−30.5, 15); (−30.5, 20); (−35.5, 20); G02 to (−50, 20) CR=20: the centre above the
+// chord, (−42.75, 20 + √(400 − 7.25²)) = (−42.75, 38.63968), 42.5°; (−58, 25); (−70, 25).
+// The profile: offset 0.2 (FAL), shifted 0.3 (FALZ) and 0.3 (FALX): top 25 + 0.2 + 0.3 = 25.5; the
+// lowest point the start moved 0.2 along +z and 0.3 up: (0.5, 0.3); largest z 0.5. Start
+// (0.5 + 1, 25.5 + 1) = (1.5, 26.5). Depth 25.2, MID 1.5: 16.8 → 17 passes of 1.482353.
+// The G02 is an undercut: the profile turns down at the offset flat x 20.5, under level 3
+// (25.5 − 3·1.482353 = 21.052941) and over level 4 (19.570588); its lowest point 38.63968 − 19.8 + 0.3 =
+// 19.13968; depth 21.052941 − 19.13968 = 1.913261, MID 1.5: 2 more passes at FF2.
+SiemensContour l18() {
+  SiemensContour c{"L18", "L18.spf", {}};
+  c.segments.push_back(arc(SegmentKind::ArcCCW, {0, 0}, {-10, 10}, {-10, 0}, 2));
+  const std::vector<Point> a = {{-10, 10}, {-16, 10}, {-16, 13.5}, {-17.5, 15}, {-30.5, 15}, {-30.5, 20}, {-35.5, 20}};
+  for (std::size_t i = 1; i < a.size(); ++i) c.segments.push_back(line(a[i - 1], a[i], int(i) + 2));
+  c.segments.push_back(arc(SegmentKind::ArcCW, {-35.5, 20}, {-50, 20}, {-42.75, 20 + std::sqrt(400 - 7.25 * 7.25)}, 9));
+  c.segments.push_back(line({-50, 20}, {-58, 25}, 10));
+  c.segments.push_back(line({-58, 25}, {-70, 25}, 11));
+  return c;
+}
+
+Cycle95Parameters l18Call() {
+  Cycle95Parameters p;
+  p.contourName = "L18";
+  p.infeed = 1.5;
+  p.allowanceZ = 0.3;
+  p.allowanceX = 0.3;
+  p.allowance = 0.2;
+  p.roughingFeed = 0.2;
+  p.undercutFeed = 0.2;
+  p.finishingFeed = 0.2;
+  p.type = machiningTypeOf(9).value();
+  p.retract = 1;
+  return p;
+}
+
+TEST(Cycle95Seed, L18SeventeenPassesThenTwoInTheUndercutThenFinishing) {
+  const SiemensContour contour = l18();
+  const auto out = planCycle95(callAt({2, 0}, contour), l18Call());
+  EXPECT_TRUE(nearlyEqual(out.moves.front().to, {1.5, 26.5}, 1e-9));
+  EXPECT_EQ(passCount(out.moves), 19);
+  int k = 0;
+  for (const Move& m : out.moves) {
+    if (m.phase != "pass" || m.pass == k || m.pass > 17) continue;
+    k = m.pass;  // the infeed of an axis-parallel pass ends on its level
+    EXPECT_NEAR(m.to.x, k == 17 ? 0.3 : 25.5 - k * 25.2 / 17, 1e-9) << "pass " << k;
+  }
+  // The undercut's two levels: 21.052941 − 1.913261/2 = 20.096311 and its lowest point 19.13968.
+  std::vector<double> undercutLevels;
+  for (const Move& m : out.moves) {
+    if (m.pass > 17 && m.kind == MoveKind::Feed && undercutLevels.size() < std::size_t(m.pass - 17)) {
+      undercutLevels.push_back(m.to.x);  // the plunge comes first
+    }
+  }
+  ASSERT_EQ(undercutLevels.size(), 2u);
+  EXPECT_NEAR(undercutLevels[0], 20.096311, 1e-5);
+  EXPECT_NEAR(undercutLevels[1], 19.13968, 1e-5);
+  // Complete machining: the finishing ends the cycle at the start.
+  EXPECT_EQ(out.moves.back().phase, "return");
+  EXPECT_TRUE(nearlyEqual(out.end, {1.5, 26.5}, 1e-9));
+  EXPECT_TRUE(std::any_of(out.moves.begin(), out.moves.end(), [](const Move& m) { return m.phase == "finish"; }));
+}
+
+// --- Alarms ---
+
+TEST(Cycle95Alarms, NoMidForRoughing) {
+  const SiemensContour shaft = stepShaft();
+  Cycle95Parameters p = params(1);
+  p.infeed = 0;
+  try {
+    planCycle95(callAt({5, 15}, shaft), p);
+    FAIL() << "no alarm";
+  } catch (const CycleAlarm& a) {
+    EXPECT_EQ(a.alarm().code, "61610");
+    EXPECT_EQ(a.alarm().line, 4);
+    EXPECT_NE(std::string(a.what()).find("MID"), std::string::npos) << a.what();
+  }
+  p.type = machiningTypeOf(5).value();
+  EXPECT_NO_THROW(planCycle95(callAt({5, 15}, shaft), p));
+}
+
+TEST(Cycle95Alarms, AContourAgainstTheFinishingDirection) {
+  const SiemensContour reversed = polyline("REV", {{-20, 9}, {-10, 9}, {-10, 4}, {0, 4}, {0, 0}});
+  try {
+    planCycle95(callAt({5, 15}, reversed), params(9));
+    FAIL() << "no alarm";
+  } catch (const CycleAlarm& a) {
+    EXPECT_EQ(a.alarm().code, "10931");
+  }
+}
+
+}  // namespace
+}  // namespace cyclecert
