@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "reference/model/alarms.h"
 #include "reference/siemens/siemens_cycles.h"
@@ -491,6 +492,76 @@ TEST(Lcyc95Alarms, NoInfeedDepthForRoughing) {
     p.type = typeOf(5);  // finishing does not infeed: R108 is not read
     EXPECT_EQ(alarmCodeOf(callAt({5, 15}, shaft), p), "no alarm") << r108;
   }
+}
+
+}  // namespace
+}  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+using namespace siemens_test;
+
+Lcyc95Parameters shaftRoughing() {
+  Lcyc95Parameters p;
+  p.type = machiningTypeOf(1).value();
+  p.maxInfeed = 4;
+  p.retract = 1;
+  p.roughingFeed = 0.2;
+  p.finishingFeed = 0.1;
+  return p;
+}
+
+SiemensCycleCall shaftCall(const SiemensContour& c) {
+  SiemensCycleCall call;
+  call.line = 12;
+  call.position = {5, 15};
+  call.contour = &c;
+  return call;
+}
+
+// Values no program should give the planner are a clear NotSupported naming the call's line, never
+// NaN moves or a crash: a non-finite angle, an infeed so small the passes would exceed PROG.CAP.PASSES
+// (9 / 1e-9 = 9e9, far beyond what an int holds), a tool tip outside 0…9.
+TEST(Lcyc95Limits, UnplannableValuesAreNotSupported) {
+  const SiemensContour shaft = stepShaft();
+  Lcyc95Parameters p = shaftRoughing();
+  p.infeedAngle = std::nan("");
+  EXPECT_THROW(planLcyc95(shaftCall(shaft), p), NotSupported);
+  p = shaftRoughing();
+  p.maxInfeed = 1e-9;
+  try {
+    planLcyc95(shaftCall(shaft), p);
+    FAIL() << "no NotSupported";
+  } catch (const NotSupported& e) {
+    EXPECT_EQ(e.line(), 12);
+  }
+  SiemensCycleCall call = shaftCall(shaft);
+  call.tool = {0.4, 11};
+  p = shaftRoughing();
+  p.type = machiningTypeOf(5).value();
+  EXPECT_THROW(planLcyc95(call, p), NotSupported);
+}
+
+// R108 = 100 covers the depth 9: one step, level 0 straight away.
+TEST(Lcyc95Limits, OneStepWhenR108CoversTheDepth) {
+  const SiemensContour shaft = stepShaft();
+  Lcyc95Parameters p = shaftRoughing();
+  p.maxInfeed = 100;
+  const auto out = planLcyc95(shaftCall(shaft), p);
+  EXPECT_EQ(passCount(out.moves), 1);
+  EXPECT_EQ(out.moves[1].to, (Point{1, 0}));
+}
+
+// R106 and R110 are unsigned (entered without sign): −0.5 is taken as 0.5 (interpretation), as in
+// Lcyc95Complete: the start (1.5, 10.5).
+TEST(Lcyc95Limits, UnsignedParametersAreTakenBySize) {
+  const SiemensContour shaft = stepShaft();
+  Lcyc95Parameters p = shaftRoughing();
+  p.allowance = -0.5;
+  p.retract = -1;
+  const auto out = planLcyc95(shaftCall(shaft), p);
+  EXPECT_EQ(out.moves[0].to, (Point{1.5, 10.5}));
 }
 
 }  // namespace

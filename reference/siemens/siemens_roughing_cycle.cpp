@@ -1,5 +1,9 @@
 #include "reference/siemens/siemens_roughing_cycle.h"
 
+#include <cmath>
+#include <string>
+#include <utility>
+
 #include "reference/model/offset.h"
 
 namespace cyclecert {
@@ -25,14 +29,54 @@ std::vector<Segment> finishingPathInPlane(const SiemensContour& contour, const S
   }
 }
 
+// The planner's own limits on the values it is given (the front end reads them from the program):
+// every value finite, the tip 0…9. NotSupported naming the value otherwise.
+void requirePlannableValues(const SiemensCycleCall& call, const StockRemovalSettings& s) {
+  const std::pair<const char*, double> values[] = {
+      {"the allowance along the contour", s.allowance.alongContour},
+      {"the Z allowance", s.allowance.longitudinal},
+      {"the X allowance", s.allowance.transverse},
+      {"the retract", s.clearance},
+      {"the infeed depth", s.maxInfeed},
+      {"the infeed angle", s.infeedAngle},
+      {"the roughing feed", s.roughingFeed},
+      {"the finishing feed", s.finishingFeed},
+      {"the undercut feed", s.undercutFeed},
+      {"the interruption length", s.interruptLength},
+      {"the nose radius", call.tool.noseRadius},
+  };
+  for (const auto& [name, value] : values) {
+    if (!std::isfinite(value)) {
+      throw NotSupported(call.line, std::string(name) + " is " + std::to_string(value) + "; the cycle needs a finite number");
+    }
+  }
+  if (call.tool.noseRadius > 0 && (call.tool.tip < 0 || call.tool.tip > 9)) {
+    throw NotSupported(call.line, "tool tip " + std::to_string(call.tool.tip) + ": the tip direction must be 0...9");
+  }
+}
+
+// The unsigned parameters (R106, R110, FALZ, FALX, FAL, _VRT: "无符号", entered without sign) are
+// taken by their size (interpretation).
+StockRemovalSettings withUnsignedSizes(StockRemovalSettings s) {
+  s.allowance.alongContour = std::abs(s.allowance.alongContour);
+  s.allowance.longitudinal = std::abs(s.allowance.longitudinal);
+  s.allowance.transverse = std::abs(s.allowance.transverse);
+  s.clearance = std::abs(s.clearance);
+  s.interruptLength = std::abs(s.interruptLength);
+  return s;
+}
+
 }  // namespace
 
-SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& s) {
+SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& settings) {
+  requirePlannableValues(call, settings);
+  const StockRemovalSettings s = withUnsignedSizes(settings);
   const SiemensContour& contour = requireContour(call);
   const StockRemovalFrame frame = frameOf(s.type);
   checkContour(contour, frame, call.line);
 
   StockRemoval cycle;
+  cycle.line = call.line;
   cycle.profile = roughingProfile(frame.toFrame(contour.segments), s.allowance, frame, call.line);
   cycle.finishPath = frame.toFrame(finishingPathInPlane(contour, call, frame));
   cycle.clearance = {s.clearance, s.clearance};

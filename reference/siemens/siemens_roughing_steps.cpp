@@ -34,10 +34,16 @@ Point computedStart(const std::vector<Segment>& profile, Point clearance) {
   return {zMax + clearance.z, xMax + clearance.x};
 }
 
-InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed) {
+InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line) {
   if (totalDepth <= kGeomEps) return {};
-  const int count = static_cast<int>(std::ceil(totalDepth / maxInfeed - 1e-9));
-  return {count, totalDepth / count};
+  const double count = std::max(1.0, std::ceil(totalDepth / maxInfeed - 1e-9));
+  if (!(count <= kMostRoughingPasses)) {  // PROG.CAP.PASSES, checked before the count is made an int
+    throw NotSupported(line, "the stock-removal cycle would make " + std::to_string(count) +
+                              " passes (depth " + std::to_string(totalDepth) + " in steps of at most " +
+                              std::to_string(maxInfeed) + "); the reference plans at most " +
+                              std::to_string(static_cast<long>(kMostRoughingPasses)));
+  }
+  return {static_cast<int>(count), totalDepth / count};
 }
 
 namespace {
@@ -174,12 +180,7 @@ class StockRemovalPlanner {
   // The levels from `top` down to `bottom` in equal steps (LCYC95.DEPTH), `top` first; the last is
   // `bottom` itself.
   std::vector<double> roughingLevels(double top, double bottom) const {
-    const InfeedSteps steps = equalInfeedSteps(top - bottom, c_.maxInfeed);
-    if (steps.count > kMostRoughingPasses) {
-      throw NotSupported(0, "the stock-removal cycle would make " + std::to_string(steps.count) +
-                                " passes; the reference plans at most " +
-                                std::to_string(static_cast<long>(kMostRoughingPasses)));
-    }
+    const InfeedSteps steps = equalInfeedSteps(top - bottom, c_.maxInfeed, c_.line);
     std::vector<double> levels{top};
     for (int k = 1; k <= steps.count; ++k) levels.push_back(k == steps.count ? bottom : top - k * steps.depth);
     return levels;

@@ -28,6 +28,7 @@ struct StockRemovalRules {
 
 // One stock-removal cycle, in the frame.
 struct StockRemoval {
+  int line = 0;                     // the call's line (named by NotSupported)
   std::vector<Segment> profile;     // contour + finishing allowance: what roughing follows
   std::vector<Segment> finishPath;  // the contour as finishing follows it (nose-radius compensated)
   Point clearance;                  // R110 / _VRT in each axis: the retract, and the start's distance
@@ -49,12 +50,13 @@ struct StockRemoval {
 Point computedStart(const std::vector<Segment>& profile, Point clearance);
 
 // The actual infeed (LCYC95.DEPTH): the total depth divided into the fewest equal steps not above
-// the largest infeed.
+// the largest infeed (at least one step for any depth). More than PROG.CAP.PASSES steps is
+// NotSupported (roughing_cycle.h).
 struct InfeedSteps {
   int count = 0;
   double depth = 0;
 };
-InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed);
+InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line = 0);
 
 // The moves from `position` (frame) to the cycle's end, in the frame.
 std::vector<Move> planStockRemoval(const StockRemoval& cycle, Point position);
