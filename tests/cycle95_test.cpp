@@ -325,3 +325,27 @@ TEST(Cycle95Robustness, RandomContoursPlanOrAlarm) {
 
 }  // namespace
 }  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+// A DAM of 1e-6 on the step shaft's 11 mm cut would make 11 million moves: NotSupported at the
+// bound (PROG.CAP.MOVES), naming the call's line.
+TEST(Cycle95Limits, ATinyDamIsBounded) {
+  const SiemensContour shaft = siemens_test::stepShaft();
+  Cycle95Parameters p = params(1);
+  p.interruptLength = 1e-6;
+  SiemensCycleCall call;
+  call.line = 9;
+  call.position = {5, 15};
+  call.contour = &shaft;
+  try {
+    planCycle95(call, p);
+    FAIL() << "no NotSupported";
+  } catch (const NotSupported& e) {
+    EXPECT_EQ(e.line(), 9);
+  }
+}
+
+}  // namespace
+}  // namespace cyclecert

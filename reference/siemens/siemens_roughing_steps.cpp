@@ -73,13 +73,6 @@ std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& pro
   return best;
 }
 
-Segment trimmed(const Segment& s, Point from, Point to) {
-  Segment r = s;
-  r.from = from;
-  r.to = to;
-  return r;
-}
-
 double angleAround(const Segment& arc, Point p) { return std::atan2(p.x - arc.center.x, p.z - arc.center.z); }
 
 // How far along `s` (0 at `from`) the point `p` on it lies.
@@ -109,9 +102,9 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper) {
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
-    const Segment s = i == hit.segment ? trimmed(profile[i], hit.at, profile[i].to) : profile[i];
+    const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (const auto stop = cleanupStopOn(s, upper)) {
-      pieces.push_back(trimmed(s, s.from, *stop));
+      pieces.push_back(portionOf(s, s.from, *stop));
       break;
     }
     pieces.push_back(s);
@@ -142,7 +135,7 @@ class StockRemovalPlanner {
     if (kind == MoveKind::Feed) m.feed = feed;
     stampPhase(m, phase, pass);
     m.rules = std::move(rules);
-    moves_.push_back(std::move(m));
+    push(std::move(m));
   }
 
   void emitAlong(const Segment& s, double feed, StockRemovalPhase phase, int pass, const std::string& rule) {
@@ -156,6 +149,17 @@ class StockRemovalPlanner {
     m.feed = feed;
     stampPhase(m, phase, pass);
     m.rules = {rule};
+    push(std::move(m));
+  }
+
+  // PROG.CAP.MOVES for one cycle (roughing_cycle.h): a tiny DAM or MID over a long contour could
+  // otherwise make millions of moves.
+  void push(Move m) {
+    if (moves_.size() >= kMostCycleMoves) {
+      throw NotSupported(c_.line, "the stock-removal cycle would make more than " +
+                                      std::to_string(static_cast<long>(kMostCycleMoves)) +
+                                      " moves (DAM or the infeed depth too small for the contour)");
+    }
     moves_.push_back(std::move(m));
   }
 

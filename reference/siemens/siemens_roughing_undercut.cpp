@@ -10,13 +10,6 @@ namespace cyclecert {
 
 namespace {
 
-Segment piece(const Segment& s, Point from, Point to) {
-  Segment r = s;
-  r.from = from;
-  r.to = to;
-  return r;
-}
-
 // The top of an arc strictly inside it (where it stops rising and starts falling).
 std::optional<Point> arcTopInside(const Segment& s) {
   if (!s.isArc()) return std::nullopt;
@@ -67,16 +60,17 @@ PocketWalk walkPocket(const std::vector<Segment>& profile, std::size_t i, Point 
   std::size_t next = profile.size();
   Point end = profile.back().to;
   for (std::size_t j = i; j < profile.size(); ++j) {
-    const Segment s = j == i ? piece(profile[j], rim, profile[j].to) : profile[j];
+    const Segment s = j == i ? portionOf(profile[j], rim, profile[j].to) : profile[j];
     if (s.length() <= kGeomEps) continue;
     if (const auto back = reachesLevelOn(s, top)) {
-      pieces.push_back(piece(s, s.from, *back));
+      pieces.push_back(portionOf(s, s.from, *back));
       next = j;
       end = *back;
       break;
     }
     pieces.push_back(s);
   }
+  if (pieces.empty()) return {Undercut{top, {}, {}}, next, end};  // nothing between the rim and the end
   // Split at the lowest point.
   std::size_t low = 0;
   Point lowPoint = pieces.front().from;
@@ -95,13 +89,20 @@ PocketWalk walkPocket(const std::vector<Segment>& profile, std::size_t i, Point 
   }
   if (!pieces.empty()) {
     const Segment& s = pieces[low];
-    if (distance(s.from, lowPoint) > kGeomEps) u.down.push_back(piece(s, s.from, lowPoint));
-    if (distance(lowPoint, s.to) > kGeomEps) u.up.insert(u.up.begin(), piece(s, lowPoint, s.to));
+    if (distance(s.from, lowPoint) > kGeomEps) u.down.push_back(portionOf(s, s.from, lowPoint));
+    if (distance(lowPoint, s.to) > kGeomEps) u.up.insert(u.up.begin(), portionOf(s, lowPoint, s.to));
   }
   return {u, next, end};
 }
 
 }  // namespace
+
+Segment portionOf(const Segment& s, Point from, Point to) {
+  Segment r = s;
+  r.from = from;
+  r.to = to;
+  return r;
+}
 
 double Undercut::bottom() const {
   if (!up.empty()) return up.front().from.x;
@@ -119,7 +120,7 @@ std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const s
   std::size_t i = 0;
   std::optional<Point> resumeFrom;  // inside segment i, after a pocket that ended there
   while (i < profile.size()) {
-    const Segment s = resumeFrom ? piece(profile[i], *resumeFrom, profile[i].to) : profile[i];
+    const Segment s = resumeFrom ? portionOf(profile[i], *resumeFrom, profile[i].to) : profile[i];
     resumeFrom.reset();
     const auto rim = descentStartOn(s);
     if (!rim) {

@@ -2,6 +2,7 @@
 // Undercuts (CYCLE95.UNDERCUT): where the roughing profile turns back towards the depth axis and
 // rises again later — a pocket the axis-parallel passes cannot reach from the entry side. In the
 // stock-removal frame (siemens_roughing_frame.h).
+#include <optional>
 #include <vector>
 
 #include "reference/model/geometry.h"
@@ -14,6 +15,9 @@ struct Undercut {
   std::vector<Segment> up;     // from the lowest point until the profile is back at `top` (or ends)
   double bottom() const;       // the lowest point's x
 };
+
+// The part of `s` between two of its points (an arc keeps its centre and direction).
+Segment portionOf(const Segment& s, Point from, Point to);
 
 // Where the profile starts to descend on `s` (towards its end): its start when it leaves downwards,
 // the top of an arc inside it, or nothing.
