@@ -479,6 +479,13 @@ TEST(Lcyc95Alarms, AContourAgainstTheFinishingDirection) {
 TEST(Lcyc95Alarms, AnEmptyContour) {
   const SiemensContour empty{"E", "E.spf", {}};
   EXPECT_EQ(alarmCodeOf(callAt({5, 15}, empty), params(1)), "10931");
+  const SiemensContour standingStill{"S", "S.spf", {line({0, 5}, {0, 5}, 1)}};  // a block that does not move
+  EXPECT_EQ(alarmCodeOf(callAt({5, 15}, standingStill), params(5)), "10931");
+  try {
+    planLcyc95(callAt({5, 15}, standingStill), params(5));
+  } catch (const CycleAlarm& a) {
+    EXPECT_NE(std::string(a.what()).find("has no moves"), std::string::npos) << a.what();
+  }
 }
 
 TEST(Lcyc95Alarms, NoInfeedDepthForRoughing) {

@@ -1,5 +1,6 @@
 #include "reference/siemens/siemens_roughing_contour.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -31,8 +32,8 @@ void requireFinishingDirection(const SiemensContour& contour, const StockRemoval
   if (end.z < start.z - kGeomEps) return;
   const std::string axis = frame.transposed ? "X" : "Z";
   throw CycleAlarm(siemens_alarm::kContour, line,
-                   "contour " + contour.name + " (" + contour.file + ") runs towards +" + axis +
-                       "; it must be programmed in the finishing direction, towards -" + axis +
+                   "contour " + contour.name + " (" + contour.file + ") ends no further towards -" + axis +
+                       " than it starts; it must be programmed in the finishing direction, towards -" + axis +
                        " (reverse the contour's blocks)");
 }
 
@@ -53,7 +54,9 @@ void requireInfeedDepth(double depth, const MachiningType& type, std::string_vie
 }
 
 void checkContour(const SiemensContour& contour, const StockRemovalFrame& frame, int line) {
-  if (contour.segments.empty()) {
+  const bool moves = std::any_of(contour.segments.begin(), contour.segments.end(),
+                                 [](const Segment& s) { return s.length() > kGeomEps; });
+  if (!moves) {
     throw CycleAlarm(siemens_alarm::kContour, line,
                      "contour " + contour.name + " (" + contour.file + ") has no moves; it needs lines or arcs");
   }
