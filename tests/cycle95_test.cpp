@@ -100,6 +100,7 @@ TEST(Cycle95Rough, DamInterruptsTheCut) {
 TEST(Cycle95Undercut, AVPocketIsRoughedAtFF2) {
   const SiemensContour v = polyline("V", {{0, 0}, {0, 6}, {-5, 6}, {-10, 2}, {-15, 6}, {-15, 8}, {-25, 8}});
   const auto out = planCycle95(callAt({5, 15}, v), params(1));
+  EXPECT_TRUE(out.warnings.empty());
   expectMoves(out.moves, {
                              {G0, {1, 9}, "approach"},
                              {G0, {1, 4}, "pass", 1},
@@ -145,6 +146,11 @@ TEST(Cycle95Undercut, Lcyc95DoesNotRoughThePocket) {
   p.roughingFeed = 0.2;
   const auto out = planLcyc95(callAt({5, 15}, v), p);
   EXPECT_EQ(passCount(out.moves), 2);
+  // It says so: the pocket begins on the contour's third block, (−5, 6) → (−10, 2), at Z −5.
+  ASSERT_EQ(out.warnings.size(), 1u);
+  EXPECT_NE(out.warnings[0].message.find("V.spf line 3"), std::string::npos) << out.warnings[0].message;
+  EXPECT_NE(out.warnings[0].message.find("Z-5.0"), std::string::npos) << out.warnings[0].message;
+  EXPECT_EQ(out.warnings[0].line, 4);
   for (const Move& m : out.moves) EXPECT_FALSE(m.to.z < -5 && m.to.z > -15 && m.to.x < 6) << m.to.z << " " << m.to.x;
 }
 

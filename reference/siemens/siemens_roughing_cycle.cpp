@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "reference/model/offset.h"
+#include "reference/siemens/siemens_roughing_undercut.h"
 
 namespace cyclecert {
 
@@ -66,6 +67,23 @@ StockRemovalSettings withUnsignedSizes(StockRemovalSettings s) {
   return s;
 }
 
+// LCYC95 does not rough undercuts (LCYC95.ROUGH notes): each pocket on the profile is reported,
+// with the contour line where the profile turns back towards the axis.
+std::vector<Warning> undercutsLeftToFinishing(const std::vector<Segment>& profile, const SiemensContour& contour,
+                                              const StockRemovalFrame& frame, int line) {
+  std::vector<Warning> warnings;
+  const double top = computedStart(profile, {0, 0}).x;
+  for (const Undercut& u : findUndercuts(profile, {top})) {
+    if (u.down.empty()) continue;
+    const Point rim = frame.toPlane(u.down.front().from);
+    warnings.push_back({line, "LCYC95 does not rough the undercut where contour " + contour.name + " (" + contour.file +
+                                  " line " + std::to_string(u.down.front().sourceLine) +
+                                  ") turns back towards the axis at Z" + std::to_string(rim.z) + " X(radius)" +
+                                  std::to_string(rim.x) + "; the finishing pass cuts what is left there"});
+  }
+  return warnings;
+}
+
 }  // namespace
 
 SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& settings) {
@@ -93,6 +111,9 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
   cycle.rules = s.rules;
 
   SiemensCycleOutcome out;
+  if (s.type.technology != SiemensTechnology::Finishing && !s.roughUndercuts) {
+    out.warnings = undercutsLeftToFinishing(cycle.profile, contour, frame, call.line);
+  }
   for (Move& m : planStockRemoval(cycle, frame.toFrame(call.position))) out.moves.push_back(frame.toPlane(std::move(m)));
   out.end = out.moves.empty() ? call.position : out.moves.back().to;
   return out;
