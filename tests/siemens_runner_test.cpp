@@ -35,7 +35,7 @@ SiemensPlanners recordingInto(Seen& seen) {
     Move back;  // one move, so that the runner's appending shows
     back.kind = MoveKind::Rapid;
     back.to = c.position;
-    back.phase = "return";
+    back.phase = MovePhase::Return;
     return SiemensCycleOutcome{{back}, {}, c.position};
   };
   p.lcyc95 = [&seen, outcome](const SiemensCycleCall& c, const Lcyc95Parameters& params) {
@@ -88,7 +88,7 @@ TEST(SiemensRunner, Lcyc95ReadsR105ToR112AtTheCallAndTheContourNamedByCname) {
   EXPECT_EQ(t.cycles[1].firstMove, 1u);
   ASSERT_EQ(t.moves.size(), 3u);
   EXPECT_EQ(t.moves[2].to, (Point{200, 100}));
-  EXPECT_EQ(t.moves[2].phase, "program");
+  EXPECT_EQ(t.moves[2].phase, MovePhase::Program);
   EXPECT_EQ(t.moves[2].kind, MoveKind::Rapid);
 }
 
@@ -155,14 +155,15 @@ TEST(SiemensRunner, Cycle95ArgumentErrorsNameTheirColumn) {
   EXPECT_NE(errorOf("CYCLE95(\"L19\", 1)").find("no subprogram L19"), std::string::npos);
 }
 
-TEST(SiemensRunner, TheRealPlannersAnswerNotPlannedYet) {
-  try {
-    run(kSeedL42, "sinumerik-802s");
-    FAIL() << "planned";
-  } catch (const NotSupported& e) {
-    EXPECT_EQ(e.line(), 7);
-    EXPECT_NE(std::string(e.what()).find("LCYC95 is not planned yet"), std::string::npos) << e.what();
-  }
+// The seed's L42 as printed: its G3 (K-15 I0, radius 15, from the axis to X20.8 Z-25.8) sweeps
+// about 136° (atan2 of (10.4, −10.8) from the +Z direction), over the quarter circle LCYC95.CONTOUR
+// allows: the planner alarms at the call (line 7) rather than plan an arc the cycle does not take.
+TEST(SiemensRunner, TheSeedsL42AsPrintedHasAnArcOverAQuarterCircle) {
+  const Toolpath t = run(kSeedL42, "sinumerik-802s");
+  ASSERT_TRUE(t.alarm.has_value());
+  EXPECT_EQ(t.alarm->code, "10931");
+  EXPECT_EQ(t.alarm->line, 7);
+  EXPECT_NE(t.alarm->message.find("quarter circle"), std::string::npos) << t.alarm->message;
 }
 
 TEST(SiemensRunner, EachControlReadsItsOwnCycleAndDiameterWords) {
@@ -199,12 +200,16 @@ TEST(SiemensRunner, DiameterAndRadiusProgrammingOfTheMainProgramsMoves) {
 
 class SiemensPlanCli : public CliFixture {};
 
-TEST_F(SiemensPlanCli, TheSeedProgramsAreReadToTheCycleThatIsNotPlannedYet) {
-  for (const char* program : {"corpus/seed004-l42-lcyc95.nc", "corpus/seed004-l18-cycle95.nc"}) {
-    const CliRun r = run(std::string("plan ") + CYCLECERT_SOURCE_DIR + "/" + program);
-    EXPECT_EQ(r.exitCode, 3) << program << ": " << r.err;
-    EXPECT_NE(r.err.find("is not planned yet"), std::string::npos) << r.err;
-  }
+// L42 as printed alarms at its first LCYC95 (the 136° arc); L18's CYCLE95 is planned and the
+// program stops at CYCLE97, which the seed calls but does not describe (SEED004.THREAD).
+TEST_F(SiemensPlanCli, TheSeedProgramsAreReadToTheirAlarmOrTheThreadCycle) {
+  const CliRun l42 = run(std::string("plan ") + CYCLECERT_SOURCE_DIR + "/corpus/seed004-l42-lcyc95.nc");
+  EXPECT_EQ(l42.exitCode, 1) << l42.err;
+  EXPECT_NE(l42.err.find("alarm 10931"), std::string::npos) << l42.err;
+  const CliRun l18 = run(std::string("plan ") + CYCLECERT_SOURCE_DIR + "/corpus/seed004-l18-cycle95.nc");
+  EXPECT_EQ(l18.exitCode, 3) << l18.err;
+  EXPECT_NE(l18.err.find("CYCLE97"), std::string::npos) << l18.err;
+  EXPECT_NE(l18.err.find("SEED004.THREAD"), std::string::npos) << l18.err;
 }
 
 TEST_F(SiemensPlanCli, ASiblingSpfFileIsTheContour) {
@@ -215,8 +220,9 @@ TEST_F(SiemensPlanCli, ASiblingSpfFileIsTheContour) {
   EXPECT_NE(missing.err.find("main.mpf:2:1"), std::string::npos) << missing.err;
   write("L5.SPF", "G1X0Z0\nZ-5\nM17\n");
   const CliRun found = run("plan " + main + " --profile sinumerik-802s");
-  EXPECT_EQ(found.exitCode, 3) << found.err;
-  EXPECT_NE(found.err.find("LCYC95 is not planned yet"), std::string::npos) << found.err;
+  // Found and planned: R108 is not set (0), so the roughing alarms (LCYC95.ALARMS, 61610).
+  EXPECT_EQ(found.exitCode, 1) << found.err;
+  EXPECT_NE(found.err.find("alarm 61610"), std::string::npos) << found.err;
 }
 
 TEST_F(SiemensPlanCli, AFanucProfileOnASiemensProgramSaysWhichProfileReadsIt) {

@@ -5,6 +5,7 @@
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
 #include "reference/siemens/siemens_number_text.h"
+#include "reference/siemens/siemens_roughing_contour.h"
 
 namespace cyclecert {
 
@@ -34,7 +35,7 @@ constexpr double kDefaultRetract = 1.0;
 
 void requireMachiningTypeNumber(double value, const std::string& what, int line) {
   if (value >= 1 && value <= 12 && value == std::floor(value)) return;
-  throw cycleBlockAlarm(kSiemensMachiningTypeAlarm, line,
+  throw cycleBlockAlarm(siemens_alarm::kMachiningType, line,
                         what + " = " + siemensNumberText(value) + ": the machining type is a whole number 1…12");
 }
 

@@ -17,10 +17,6 @@ using RParameters = std::map<int, double>;
 // How a machining type number (R105, VARI) becomes a MachiningType: machiningTypeOf, or a test's own.
 using MachiningTypeLookup = std::optional<MachiningType> (*)(double);
 
-// The alarm for a machining type outside 1…12 (interpretation: SINUMERIK cycles alarm 61002
-// "machining type incorrectly defined"; SIEMENS.VARI).
-inline constexpr const char* kSiemensMachiningTypeAlarm = "61002";
-
 // Throws CycleAlarm 61002 (when: "cycle block") unless `value` is a whole number 1…12; `what`
 // names it ("R105", "VARI").
 void requireMachiningTypeNumber(double value, const std::string& what, int line);

@@ -1,0 +1,304 @@
+#include "reference/siemens/siemens_roughing_steps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "reference/cycles/roughing_cycle.h"
+#include "reference/model/alarms.h"
+#include "reference/model/offset.h"
+#include "reference/siemens/siemens_roughing_undercut.h"
+
+namespace cyclecert {
+
+void stampPhase(Move& m, MovePhase phase, int pass) {
+  m.phase = phase;
+  m.pass = phase == MovePhase::Pass ? pass : 0;
+}
+
+Point computedStart(const std::vector<Segment>& profile, Point clearance) {
+  double zMax = -std::numeric_limits<double>::infinity();
+  double xMax = -std::numeric_limits<double>::infinity();
+  for (const Segment& s : profile) {
+    const Extent e = extent(s);
+    zMax = std::max(zMax, e.zMax);
+    xMax = std::max(xMax, e.xMax);
+  }
+  return {zMax + clearance.z, xMax + clearance.x};
+}
+
+InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line) {
+  if (totalDepth <= kGeomEps) return {};
+  const double count = std::max(1.0, std::ceil(totalDepth / maxInfeed - 1e-9));
+  if (!(count <= kMostRoughingPasses)) {  // PROG.CAP.PASSES, checked before the count is made an int
+    throw NotSupported(line, "the stock-removal cycle would make " + std::to_string(count) +
+                              " passes (depth " + std::to_string(totalDepth) + " in steps of at most " +
+                              std::to_string(maxInfeed) + "); the reference plans at most " +
+                              std::to_string(static_cast<long>(kMostRoughingPasses)));
+  }
+  return {static_cast<int>(count), totalDepth / count};
+}
+
+namespace {
+
+double lowestX(const std::vector<Segment>& profile) {
+  double xMin = std::numeric_limits<double>::infinity();
+  for (const Segment& s : profile) xMin = std::min(xMin, extent(s).xMin);
+  return xMin;
+}
+
+// A point on the profile and the segment it lies on.
+struct ProfilePoint {
+  std::size_t segment = 0;
+  Point at;
+};
+
+// The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
+// `fromZ`, meets the profile.
+std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& profile, double level, double fromZ) {
+  std::optional<ProfilePoint> best;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    for (const Point& p : intersectWithLevelX(profile[i], level)) {
+      if (p.z > fromZ + kGeomEps) continue;
+      if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
+    }
+  }
+  return best;
+}
+
+double angleAround(const Segment& arc, Point p) { return std::atan2(p.x - arc.center.x, p.z - arc.center.z); }
+
+// How far along `s` (0 at `from`) the point `p` on it lies.
+double positionAlong(const Segment& s, Point p) {
+  if (!s.isArc()) return distance(s.from, p);
+  return offsetAlongArc(s, angleAround(s, p)).value_or(std::abs(sweep(s)));
+}
+
+// Where the contour-parallel cleanup stops on `s`: where the profile reaches the previous level
+// `upper` (after its start), or where it starts to turn back down (an undercut begins).
+std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
+  std::vector<Point> stops;
+  for (const Point& p : intersectWithLevelX(s, upper)) {
+    if (distance(p, s.from) > kGeomEps) stops.push_back(p);
+  }
+  if (const auto descent = descentStartOn(s)) stops.push_back(*descent);
+  if (stops.empty()) return std::nullopt;
+  return *std::min_element(stops.begin(), stops.end(), [&](Point a, Point b) {
+    return positionAlong(s, a) < positionAlong(s, b);
+  });
+}
+
+// The contour-parallel cleanup (LCYC95.ROUGH "G1/G2/G3 along contour + allowance to its last
+// point"; CYCLE95.ROUGH "up to the last point of intersection"), interpretation: from the roughing
+// intersection forwards along the profile until it reaches the previous level (the last point the
+// previous pass cut), turns back towards the depth axis (an undercut), or ends.
+std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper) {
+  std::vector<Segment> pieces;
+  for (std::size_t i = hit.segment; i < profile.size(); ++i) {
+    const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
+    if (const auto stop = cleanupStopOn(s, upper)) {
+      pieces.push_back(portionOf(s, s.from, *stop));
+      break;
+    }
+    pieces.push_back(s);
+    if (s.to.x >= upper - kGeomEps) break;
+  }
+  return pieces;
+}
+
+class StockRemovalPlanner {
+ public:
+  StockRemovalPlanner(const StockRemoval& c, Point position)
+      : c_(c), position_(position), start_(computedStart(c.profile, c.clearance)) {}
+
+  std::vector<Move> plan() {
+    if (c_.technology != SiemensTechnology::Finishing) rough();
+    if (c_.technology != SiemensTechnology::Roughing) finish();
+    return std::move(moves_);
+  }
+
+ private:
+  Point current() const { return moves_.empty() ? position_ : moves_.back().to; }
+
+  void emit(MoveKind kind, Point to, double feed, MovePhase phase, int pass, std::vector<std::string> rules) {
+    if (distance(current(), to) <= kGeomEps) return;  // zero-length moves are never emitted
+    Move m;
+    m.kind = kind;
+    m.to = to;
+    if (kind == MoveKind::Feed) m.feed = feed;
+    stampPhase(m, phase, pass);
+    m.rules = std::move(rules);
+    push(std::move(m));
+  }
+
+  void emitAlong(const Segment& s, double feed, MovePhase phase, int pass, const std::string& rule) {
+    if (s.length() <= kGeomEps) return;
+    if (!s.isArc()) return emit(MoveKind::Feed, s.to, feed, phase, pass, {rule});
+    Move m;
+    m.kind = MoveKind::Feed;
+    m.shape = s.kind;
+    m.to = s.to;
+    m.center = s.center;
+    m.feed = feed;
+    stampPhase(m, phase, pass);
+    m.rules = {rule};
+    push(std::move(m));
+  }
+
+  // PROG.CAP.MOVES for one cycle (roughing_cycle.h): a tiny DAM or MID over a long contour could
+  // otherwise make millions of moves.
+  void push(Move m) {
+    if (moves_.size() >= kMostCycleMoves) {
+      throw NotSupported(c_.line, "the stock-removal cycle would make more than " +
+                                      std::to_string(static_cast<long>(kMostCycleMoves)) +
+                                      " moves (DAM or the infeed depth too small for the contour)");
+    }
+    moves_.push_back(std::move(m));
+  }
+
+  // --- roughing (LCYC95.ROUGH, CYCLE95.ROUGH) ---
+
+  void rough() {
+    const double top = start_.x - c_.clearance.x;
+    const std::vector<double> levels = roughingLevels(top, lowestX(c_.profile));
+    approachStart();
+    const int count = static_cast<int>(levels.size()) - 1;
+    for (int k = 1; k <= count; ++k) {
+      roughingPass(k, levels[k], levels[k - 1]);
+      if (k < count) backAlongCutAxis(k);
+    }
+    if (c_.roughUndercuts) {
+      int pass = count;
+      for (const Undercut& u : findUndercuts(c_.profile, levels)) roughUndercut(u, pass);
+    }
+    if (c_.technology == SiemensTechnology::Roughing) returnToStart();
+  }
+
+  // The levels from `top` down to `bottom` in equal steps (LCYC95.DEPTH), `top` first; the last is
+  // `bottom` itself.
+  std::vector<double> roughingLevels(double top, double bottom) const {
+    const InfeedSteps steps = equalInfeedSteps(top - bottom, c_.maxInfeed, c_.line);
+    std::vector<double> levels{top};
+    for (int k = 1; k <= steps.count; ++k) levels.push_back(k == steps.count ? bottom : top - k * steps.depth);
+    return levels;
+  }
+
+  // G0 to the computed start with both axes together.
+  void approachStart() {
+    emit(MoveKind::Rapid, start_, 0, MovePhase::Approach, 0, {c_.rules.rough, c_.rules.start});
+  }
+
+  void roughingPass(int k, double level, double previous) {
+    const auto hit = roughingIntersection(c_.profile, level, start_.z);
+    const double hitZ = hit ? hit->at.z : c_.profile.back().to.z;
+    infeed(k, level, hitZ);
+    cutToIntersection(k, {hitZ, level});
+    if (hit) {
+      for (const Segment& s : cleanupAlongProfile(c_.profile, *hit, previous)) {
+        emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
+      }
+    }
+    retract(k);
+  }
+
+  // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
+  // its own equal steps from the level that passed over it down to its lowest point, at FF2: G0 up to
+  // the start's height (the first pocket pass) or along the cut axis at the retract height, G1
+  // straight down where the level meets the pocket's falling side, G1 across to its rising side, along
+  // the profile up to the previous level, retract in each axis.
+
+  void roughUndercut(const Undercut& u, int& pass) {
+    emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, pass + 1, {c_.rules.undercut});
+    const std::vector<double> levels = roughingLevels(u.top, u.bottom());
+    for (std::size_t m = 1; m < levels.size(); ++m) undercutPass(u, ++pass, levels[m], levels[m - 1], m + 1 == levels.size());
+  }
+
+  void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
+    const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
+    const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
+    const auto out = lowest ? std::optional<ProfilePoint>{ProfilePoint{0, lowPoint}}
+                            : roughingIntersection(u.up, level, std::numeric_limits<double>::infinity());
+    const double inZ = in ? in->at.z : lowPoint.z;
+    const std::vector<std::string> rules{c_.rules.undercut};
+    emit(MoveKind::Rapid, {inZ, current().x}, 0, MovePhase::Pass, k, rules);
+    emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+    if (out && !u.up.empty()) {
+      emit(MoveKind::Feed, out->at, c_.undercutFeed, MovePhase::Pass, k, rules);
+      for (const Segment& s : cleanupAlongProfile(u.up, *out, previous)) {
+        emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
+      }
+    } else {  // the pocket stays open to the profile's end
+      const Point end = u.up.empty() ? lowPoint : u.up.back().to;
+      emit(MoveKind::Feed, {end.z, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+    }
+    emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+  }
+
+  // Infeed to the level at the infeed angle (R109, from the infeed axis), never beyond the
+  // roughing intersection.
+  void infeed(int k, double level, double hitZ) {
+    const Point from = current();
+    const double run = (from.x - level) * std::tan(c_.infeedAngle * std::numbers::pi / 180);
+    const Point to{std::max(from.z - run, hitZ), level};
+    emit(c_.infeedKind, to, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough, c_.rules.depth});
+  }
+
+  // G1 parallel to the cut axis to the roughing intersection; with DAM, in pieces of that length.
+  void cutToIntersection(int k, Point to) {
+    if (c_.interruptLength > 0) {
+      while (current().z - to.z > c_.interruptLength + kGeomEps) {
+        emit(MoveKind::Feed, {current().z - c_.interruptLength, to.x}, c_.roughingFeed, MovePhase::Pass, k,
+             {c_.rules.rough, c_.rules.interrupt});
+      }
+    }
+    emit(MoveKind::Feed, to, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
+  }
+
+  // Retract by the clearance in each axis (R110 / _VRT), with G0.
+  void retract(int k) {
+    emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, {c_.rules.rough});
+  }
+
+  // G0 back along the cut axis to the start's z, at the retract height.
+  void backAlongCutAxis(int k) {
+    emit(MoveKind::Rapid, {start_.z, current().x}, 0, MovePhase::Pass, k, {c_.rules.rough});
+  }
+
+  // After the last roughing pass (roughing only; complete machining goes on to finishing without it,
+  // LCYC95.COMPLETE): LCYC95 both axes together, CYCLE95 one after the other, the infeed axis first.
+  void returnToStart() {
+    if (c_.axesReturnOneAfterTheOther) {
+      emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Return, 0, {c_.rules.rough});
+    }
+    emit(MoveKind::Rapid, start_, 0, MovePhase::Return, 0, {c_.rules.rough});
+  }
+
+  // --- finishing (LCYC95.FINISH) ---
+
+  void finish() {
+    std::vector<std::string> approachRules{c_.rules.finish};
+    if (c_.technology == SiemensTechnology::Complete) approachRules.push_back(c_.rules.complete);
+    // G0 to the cycle start axis by axis, the infeed axis first.
+    emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Approach, 0, approachRules);
+    emit(MoveKind::Rapid, start_, 0, MovePhase::Approach, 0, approachRules);
+    // G0 both axes to the contour start; along the contour at the finishing feed; G0 back.
+    emit(MoveKind::Rapid, c_.finishPath.front().from, 0, MovePhase::Finish, 0, {c_.rules.finish});
+    for (const Segment& s : c_.finishPath) emitAlong(s, c_.finishingFeed, MovePhase::Finish, 0, c_.rules.finish);
+    emit(MoveKind::Rapid, start_, 0, MovePhase::Return, 0, {c_.rules.finish});
+  }
+
+  const StockRemoval& c_;
+  Point position_;
+  Point start_;
+  std::vector<Move> moves_;
+};
+
+}  // namespace
+
+std::vector<Move> planStockRemoval(const StockRemoval& cycle, Point position) {
+  return StockRemovalPlanner(cycle, position).plan();
+}
+
+}  // namespace cyclecert

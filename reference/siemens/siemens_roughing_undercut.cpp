@@ -1,0 +1,144 @@
+#include "reference/siemens/siemens_roughing_undercut.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "reference/model/offset.h"
+
+namespace cyclecert {
+
+namespace {
+
+// The top of an arc strictly inside it (where it stops rising and starts falling).
+std::optional<Point> arcTopInside(const Segment& s) {
+  if (!s.isArc()) return std::nullopt;
+  for (const Point& p : apexesAlong(s)) {
+    const bool top = std::abs(p.z - s.center.z) <= 1e-7 && p.x > s.center.x;
+    if (top && distance(p, s.from) > kGeomEps && distance(p, s.to) > kGeomEps) return p;
+  }
+  return std::nullopt;
+}
+
+// The lowest point of a segment (an arc's bottom when inside it).
+Point lowestPointOf(const Segment& s) {
+  Point low = s.from.x <= s.to.x ? s.from : s.to;
+  if (s.isArc()) {
+    for (const Point& p : apexesAlong(s)) {
+      if (std::abs(p.z - s.center.z) <= 1e-7 && p.x < low.x) low = p;
+    }
+  }
+  return low;
+}
+
+// Where the profile from `s` onwards first reaches `level` rising (the first crossing after the start).
+std::optional<Point> reachesLevelOn(const Segment& s, double level) {
+  for (const Point& p : intersectWithLevelX(s, level)) {
+    if (distance(p, s.from) > kGeomEps) return p;
+  }
+  return std::nullopt;
+}
+
+double lowestLevelAtOrAbove(const std::vector<double>& levels, double x) {
+  double best = levels.front();
+  for (double l : levels) {
+    if (l >= x - kGeomEps) best = std::min(best, l);
+  }
+  return best;
+}
+
+// The pocket's pieces from the rim to where the profile is back at `top`, split at the lowest point.
+// Returns the index of the segment after the pocket and the point it ends at.
+struct PocketWalk {
+  Undercut undercut;
+  std::size_t nextSegment;
+  Point end;
+};
+
+PocketWalk walkPocket(const std::vector<Segment>& profile, std::size_t i, Point rim, double top) {
+  std::vector<Segment> pieces;
+  std::size_t next = profile.size();
+  Point end = profile.back().to;
+  for (std::size_t j = i; j < profile.size(); ++j) {
+    const Segment s = j == i ? portionOf(profile[j], rim, profile[j].to) : profile[j];
+    if (s.length() <= kGeomEps) continue;
+    if (const auto back = reachesLevelOn(s, top)) {
+      pieces.push_back(portionOf(s, s.from, *back));
+      next = j;
+      end = *back;
+      break;
+    }
+    pieces.push_back(s);
+  }
+  if (pieces.empty()) return {Undercut{top, {}, {}}, next, end};  // nothing between the rim and the end
+  // Split at the lowest point.
+  std::size_t low = 0;
+  Point lowPoint = pieces.front().from;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const Point p = lowestPointOf(pieces[k]);
+    if (p.x < lowPoint.x - kGeomEps) {
+      low = k;
+      lowPoint = p;
+    }
+  }
+  Undercut u;
+  u.top = top;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    if (k < low) u.down.push_back(pieces[k]);
+    if (k > low) u.up.push_back(pieces[k]);
+  }
+  if (!pieces.empty()) {
+    const Segment& s = pieces[low];
+    if (distance(s.from, lowPoint) > kGeomEps) u.down.push_back(portionOf(s, s.from, lowPoint));
+    if (distance(lowPoint, s.to) > kGeomEps) u.up.insert(u.up.begin(), portionOf(s, lowPoint, s.to));
+  }
+  return {u, next, end};
+}
+
+}  // namespace
+
+Segment portionOf(const Segment& s, Point from, Point to) {
+  Segment r = s;
+  r.from = from;
+  r.to = to;
+  return r;
+}
+
+double Undercut::bottom() const {
+  if (!up.empty()) return up.front().from.x;
+  return down.empty() ? top : down.back().to.x;
+}
+
+std::optional<Point> descentStartOn(const Segment& s) {
+  if (s.length() <= kGeomEps) return std::nullopt;
+  if (unitTangentAtStart(s).x < -1e-9) return s.from;
+  return arcTopInside(s);
+}
+
+std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const std::vector<double>& levels) {
+  std::vector<Undercut> found;
+  std::size_t i = 0;
+  std::optional<Point> resumeFrom;  // inside segment i, after a pocket that ended there
+  while (i < profile.size()) {
+    const Segment s = resumeFrom ? portionOf(profile[i], *resumeFrom, profile[i].to) : profile[i];
+    resumeFrom.reset();
+    const auto rim = descentStartOn(s);
+    if (!rim) {
+      ++i;
+      continue;
+    }
+    const double top = lowestLevelAtOrAbove(levels, rim->x);
+    PocketWalk walk = walkPocket(profile, i, *rim, top);
+    if (walk.nextSegment == i && distance(walk.end, *rim) <= kGeomEps) {
+      ++i;
+      continue;
+    }
+    if (walk.undercut.bottom() < top - kGeomEps) found.push_back(std::move(walk.undercut));
+    if (walk.nextSegment >= profile.size()) break;
+    i = walk.nextSegment;
+    resumeFrom = walk.end;
+  }
+  return found;
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,30 @@
+#pragma once
+// Undercuts (CYCLE95.UNDERCUT): where the roughing profile turns back towards the depth axis and
+// rises again later — a pocket the axis-parallel passes cannot reach from the entry side. In the
+// stock-removal frame (siemens_roughing_frame.h).
+#include <optional>
+#include <vector>
+
+#include "reference/model/geometry.h"
+
+namespace cyclecert {
+
+struct Undercut {
+  double top = 0;              // the lowest roughing level that passed over the pocket: its stock lies below
+  std::vector<Segment> down;   // the profile from where it turns back down to the pocket's lowest point
+  std::vector<Segment> up;     // from the lowest point until the profile is back at `top` (or ends)
+  double bottom() const;       // the lowest point's x
+};
+
+// The part of `s` between two of its points (an arc keeps its centre and direction).
+Segment portionOf(const Segment& s, Point from, Point to);
+
+// Where the profile starts to descend on `s` (towards its end): its start when it leaves downwards,
+// the top of an arc inside it, or nothing.
+std::optional<Point> descentStartOn(const Segment& s);
+
+// The undercuts of `profile`, in order along it. `levels` are the roughing levels from the top down
+// (the top of the profile first): a pocket's stock lies below the lowest level at or above its rim.
+std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const std::vector<double>& levels);
+
+}  // namespace cyclecert
