@@ -38,7 +38,7 @@ CycleAlarm::CycleAlarm(std::string_view code, int line, std::string detail) {
 }
 
 NotSupported::NotSupported(int line, const std::string& what)
-    : std::runtime_error("line " + std::to_string(line) + ": " + what), line_(line) {}
+    : std::runtime_error(line > 0 ? "line " + std::to_string(line) + ": " + what : what), line_(line) {}
 
 bool isFanucAlarmCode(std::string_view code) {
   if (code.size() != 6 || code.substr(0, 2) != "PS") return false;

@@ -65,7 +65,8 @@ inline CycleAlarm cycleBlockAlarm(std::string_view code, int line, std::string d
   return a;
 }
 
-// Thrown where a program needs a capability the reference does not have yet (e.g. type II).
+// Thrown where a program needs a capability the reference does not have yet (e.g. type II). Line 0:
+// the program as a whole (its message names no line).
 class NotSupported : public std::runtime_error {
  public:
   NotSupported(int line, const std::string& what);
