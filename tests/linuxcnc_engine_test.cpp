@@ -44,6 +44,17 @@ std::string notApplicable(const SpecCase& c) {
 // G73.*: FANUC's pattern repeating cycle has no LinuxCNC counterpart (LinuxCNC's G73 drills): not
 // applicable with that reason — before the parameters 5135–5137 a G73 case sets, and in system C,
 // where the cycle is written G75 (and G73 is G71's roughing, which translates).
+// A SINUMERIK case is not applicable, named as such (before: "cannot read the program: expected a
+// number after address C", the FANUC reader's complaint about CYCLE95).
+TEST(LinuxCncTranslate, SinumerikProgramsAreNotApplicable) {
+  const std::string lcyc95 = "G0X30Z2\n_CNAME=\"L1\"\nR105=1 R108=2\nLCYC95\nM02\n";
+  EXPECT_NE(notApplicable(makeCase("lcyc95", lcyc95, "sinumerik-802s")).find("a SINUMERIK program (sinumerik-802s)"),
+            std::string::npos);
+  const std::string cycle95 = "G0X30Z2\nCYCLE95(\"L1\", 2)\nM02\n";
+  EXPECT_NE(notApplicable(makeCase("cycle95", cycle95, "sinumerik-802d")).find("LinuxCNC has no LCYC95/CYCLE95"),
+            std::string::npos);
+}
+
 TEST(LinuxCncTranslate, G73IsNotApplicableBecauseLinuxCncsG73Drills) {
   const std::string g73 = "G00 X60 Z2;\nG73 U3 W0 R2;\nG73 P10 Q20 U0.4 W0.1 F0.2;\nN10 G01 X30 Z0;\nX40 Z-10;\n"
                           "Z-30;\nN20 X56;\n";

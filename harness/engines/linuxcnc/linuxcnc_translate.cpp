@@ -150,6 +150,10 @@ LinuxCncTranslation translateForLinuxCnc(const SpecCase& c, const LinuxCncOption
   const Profile* profile = findProfile(profileName);
   if (!profile) return notApplicable("unknown profile '" + profileName + "'");
   if (auto why = huazhongFormat(*profile)) return notApplicable(*why);
+  if (profile->dialect == Dialect::Siemens) {
+    return notApplicable("a SINUMERIK program (" + profile->name + "): LinuxCNC has no LCYC95/CYCLE95 and reads no " +
+                         "R parameters or contour subprograms of this kind");
+  }
 
   MachineParams params = profile->defaults;
   std::vector<std::string> inexpressible;
