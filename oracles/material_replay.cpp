@@ -184,14 +184,9 @@ BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance)
     }
   }
   if (!(hi > lo)) return {};
-  // A blank profile that is a graph over the cut axis: its region clipped to the span directly.
-  const PartOutline outline = partOutlineOf(blank, frame, reach, chordTolerance);
-  if (outline.graph && outline.bottom > -2 * reach) {
-    return graphRegionWithin(outline.profile, frame, outline.bottom, lo, hi);
-  }
   const BgRegion span = regionFrom({frame.point(lo, 2 * reach), frame.point(hi, 2 * reach), frame.point(hi, -2 * reach),
                                     frame.point(lo, -2 * reach)});
-  return checkedIntersection(span, partRegionFrom(outline, blank, frame, reach, chordTolerance));
+  return checkedIntersection(span, partRegionOf(blank, frame.away(), reach, chordTolerance));
 }
 
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {

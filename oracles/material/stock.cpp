@@ -83,45 +83,4 @@ BgRegion partRegion(const std::vector<Segment>& roughProfile, Point away, double
   return region;
 }
 
-namespace {
-
-// The point of chord a → b where its cut coordinate is `c` (between theirs), exactly at `c`.
-Point atCut(Point a, Point b, double c, const DepthFrame& frame) {
-  const double ca = frame.cut(a), cb = frame.cut(b);
-  const double t = (c - ca) / (cb - ca);
-  return frame.point(c, frame.depth(a) + t * (frame.depth(b) - frame.depth(a)));
-}
-
-}  // namespace
-
-BgRegion graphRegionWithin(const std::vector<Point>& profile, const DepthFrame& frame, double bottom, double lo,
-                           double hi) {
-  std::vector<Point> outline;
-  const auto add = [&outline](Point p) {
-    if (outline.empty() || !(outline.back() == p)) outline.push_back(p);
-  };
-  const auto inside = [&](Point p) { return frame.cut(p) >= lo && frame.cut(p) <= hi; };
-  for (std::size_t i = 1; i < profile.size(); ++i) {
-    const Point a = profile[i - 1], b = profile[i];
-    const double ca = frame.cut(a), cb = frame.cut(b);
-    if (std::max(ca, cb) < lo || std::min(ca, cb) > hi) continue;
-    // Entering the band: from its near edge; leaving it: at its far edge.
-    if (inside(a)) {
-      add(a);
-    } else {
-      add(atCut(a, b, ca < lo ? lo : hi, frame));
-    }
-    if (inside(b)) {
-      add(b);
-    } else {
-      add(atCut(a, b, cb > hi ? hi : lo, frame));
-    }
-  }
-  if (outline.size() < 2) return {};
-  const Point first = outline.front(), last = outline.back();
-  outline.push_back(frame.atDepth(last, bottom));
-  outline.push_back(frame.atDepth(first, bottom));
-  return regionFromSimpleOutline(outline);
-}
-
 }  // namespace cyclecert

@@ -5,7 +5,6 @@
 // lie on the arc's centre side, within the tolerance).
 #include <vector>
 
-#include "oracles/material/depth_frame.h"
 #include "oracles/material/region.h"
 
 namespace cyclecert {
@@ -35,13 +34,5 @@ BgRegion impliedStock(const std::vector<Segment>& finishShape, Point away, doubl
 // empty profile.
 BgRegion partRegion(const std::vector<Segment>& roughProfile, Point away, double reach,
                     double chordTolerance);
-
-// The region between `profile` (flattened points that never turn back along the frame's cut axis:
-// steps along the depth axis allowed) and the line at depth `bottom` beneath it, over the cut
-// coordinates [lo, hi] only: the profile's region clipped to that band, built directly rather than
-// by a boolean (the clipped ends interpolated along the chords they cut). `bottom` stands below
-// every point of the profile. Empty when less than a sliver of the profile lies within the band.
-BgRegion graphRegionWithin(const std::vector<Point>& profile, const DepthFrame& frame, double bottom, double lo,
-                           double hi);
 
 }  // namespace cyclecert
