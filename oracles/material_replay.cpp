@@ -72,9 +72,12 @@ bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c
   // 1e-7 of the material's size (region.h), 1e-5 mm on a 100 mm part; a tenth of the oracles'
   // tolerance is 3e-4 mm.
   constexpr double kMargin = 0.1;
+  // One top, read with its skins and without them.
+  const std::optional<CutEnvelope> top = model.pointwiseTopWithin(c0 - skin, c1 + skin);
+  if (!top) return true;
   const auto thicker = [&](double width) {
-    const auto top = model.topWithoutSkinsWithin(c0, c1, width);
-    return !top || standsThickerThan(*top, profile, model.away(), kMeasuringChord, limit - kMargin * skin);
+    return standsThickerThan(MaterialModel::withoutSkinsOf(*top, c0, c1, width), profile, model.away(),
+                             kMeasuringChord, limit - kMargin * skin);
   };
   // The top with its skins stands above the top without them: where it stays below the limit (a
   // sloping stock's top), the copies are not needed.

@@ -421,7 +421,11 @@ std::optional<std::vector<CutEnvelope::Piece>> MaterialModel::topWithoutSkinsWit
                                                                                     double skin) const {
   const std::optional<CutEnvelope> found = pointwiseTopWithin(c0 - skin, c1 + skin);
   if (!found) return std::nullopt;
-  const CutEnvelope& top = *found;
+  return withoutSkinsOf(*found, c0, c1, skin);
+}
+
+std::vector<CutEnvelope::Piece> MaterialModel::withoutSkinsOf(const CutEnvelope& top, double c0, double c1,
+                                                              double skin) {
   // The lowest of the top and its copies moved by ± skin (where a copy does not reach, the others
   // bound alone: looser, still above every point of the material without skins).
   CutEnvelope solid;

@@ -83,6 +83,15 @@ class MaterialModel {
   // that are no graph over the cut axis): no bound. No Boost.
   std::optional<std::vector<CutEnvelope::Piece>> topWithoutSkinsWithin(double c0, double c1, double skin) const;
 
+  // The material's top at each cut coordinate over [c0, c1]: the stock's top, lowered to the
+  // envelope where feeds have been; nothing where no stock stands. Nothing at all where the
+  // envelope's pieces overlap. What topWithoutSkinsWithin reads from.
+  std::optional<CutEnvelope> pointwiseTopWithin(double c0, double c1) const;
+
+  // topWithoutSkinsWithin(c0, c1, skin) read from `top`, a pointwiseTopWithin over at least
+  // [c0 − skin, c1 + skin]: one top serves several skin widths.
+  static std::vector<CutEnvelope::Piece> withoutSkinsOf(const CutEnvelope& top, double c0, double c1, double skin);
+
   // The material a feed along `move` would remove now (remaining ∩ shadow), without removing it.
   BgRegion removedBy(const Segment& move) const;
 
@@ -101,10 +110,6 @@ class MaterialModel {
   // The deepest the stock comes over the cut coordinates [c0, c1]; nothing when it has no point
   // there. Where the range has some width, a wall standing at one of its ends does not count.
   std::optional<double> stockDeepestWithin(double c0, double c1) const;
-  // The material's top at each cut coordinate over [c0, c1]: the stock's top, lowered to the
-  // envelope where feeds have been; nothing where no stock stands.
-  // Nothing where the envelope's pieces overlap.
-  std::optional<CutEnvelope> pointwiseTopWithin(double c0, double c1) const;
 
   BgRegion stock_;
   CrossingRegion stockForCrossing_;

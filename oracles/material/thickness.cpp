@@ -119,9 +119,13 @@ class ProfileSteps {
 class ThicknessSearch {
  public:
   // Only thicknesses above `floor` are sought: an edge that cannot stand thicker is not measured.
+  // With `firstOnly`, the search ends at the first one found (whether any is: standsThickerThan).
   ThicknessSearch(const ProfileSteps& profile, const DepthFrame& frame, double resolution, double window,
-                  double floor = -INFINITY)
-      : profile_(profile), frame_(frame), resolution_(resolution), window_(window), floor_(floor) {}
+                  double floor = -INFINITY, bool firstOnly = false)
+      : profile_(profile), frame_(frame), resolution_(resolution), window_(window), floor_(floor),
+        firstOnly_(firstOnly) {}
+  // Whether the search has what it was asked for: a thickness above the floor, when the first will do.
+  bool done() const { return firstOnly_ && best_.has_value(); }
 
   void measureEdge(Point p, Point q) { measureEdge(frame_.cut(p), frame_.depth(p), frame_.cut(q), frame_.depth(q)); }
 
@@ -149,6 +153,7 @@ class ThicknessSearch {
     if (highestPoint + window_ < lowestStep) return;
     if (highestPoint - lowestStep <= (best_ ? std::max(best_->thickness, floor_) : floor_)) return;
     for (const ProfileStep* s : under_) {
+      if (done()) return;
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
       measureAt(edge, lo);
       measureAt(edge, hi);
@@ -195,6 +200,7 @@ class ThicknessSearch {
   double resolution_;
   double window_;
   double floor_;
+  bool firstOnly_;
   std::vector<const ProfileStep*> under_;  // the steps under the edge being measured, by c0
   double underWidest_ = 0;
   std::optional<Thickest> best_;
@@ -231,7 +237,7 @@ namespace {
 
 std::optional<Thickest> thickestBeneathAbove(const std::vector<CutEnvelope::Piece>& top,
                                              const std::vector<Segment>& profile, Point away, double chordTolerance,
-                                             double floor) {
+                                             double floor, bool firstOnly) {
   if (top.empty() || profile.empty()) return std::nullopt;
   const DepthFrame frame(away);
   const ProfileSteps steps(profile, frame, chordTolerance);
@@ -243,8 +249,11 @@ std::optional<Thickest> thickestBeneathAbove(const std::vector<CutEnvelope::Piec
     dMax = std::max({dMax, p.d0, p.d1});
   }
   const double resolution = std::max(kTidyDistance, 4 * kBooleanResolution * std::max(cMax - cMin, dMax - dMin));
-  ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution, floor);
-  for (const CutEnvelope::Piece& p : top) search.measureEdge(p.c0, p.d0, p.c1, p.d1);
+  ThicknessSearch search(steps, frame, resolution, 2 * chordTolerance + resolution, floor, firstOnly);
+  for (const CutEnvelope::Piece& p : top) {
+    if (search.done()) break;
+    search.measureEdge(p.c0, p.d0, p.c1, p.d1);
+  }
   return search.best();
 }
 
@@ -252,12 +261,13 @@ std::optional<Thickest> thickestBeneathAbove(const std::vector<CutEnvelope::Piec
 
 std::optional<Thickest> thickestBeneath(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile,
                                         Point away, double chordTolerance) {
-  return thickestBeneathAbove(top, profile, away, chordTolerance, -INFINITY);
+  return thickestBeneathAbove(top, profile, away, chordTolerance, -INFINITY, false);
 }
 
 bool standsThickerThan(const std::vector<CutEnvelope::Piece>& top, const std::vector<Segment>& profile, Point away,
                        double chordTolerance, double limit) {
-  return thickestBeneathAbove(top, profile, away, chordTolerance, limit).has_value();
+  // Any thickness above the limit answers: the search stops at the first.
+  return thickestBeneathAbove(top, profile, away, chordTolerance, limit, true).has_value();
 }
 
 }  // namespace cyclecert
