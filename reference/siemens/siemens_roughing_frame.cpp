@@ -23,36 +23,43 @@ Point StockRemovalFrame::toPlane(Point p) const {
   return p;
 }
 
-Segment StockRemovalFrame::toFrame(const Segment& s) const {
+namespace {
+
+// A segment with its points mapped one way or the other; reflections turn an arc round.
+template <typename MapPoint>
+Segment mapped(const Segment& s, const StockRemovalFrame& f, MapPoint point) {
   Segment r = s;
-  r.from = toFrame(s.from);
-  r.to = toFrame(s.to);
-  r.center = toFrame(s.center);
-  r.kind = reflectedKind(s.kind, reflections(*this));
+  r.from = point(s.from);
+  r.to = point(s.to);
+  r.center = point(s.center);
+  r.kind = reflectedKind(s.kind, reflections(f));
   return r;
+}
+
+template <typename MapSegment>
+std::vector<Segment> mappedAll(const std::vector<Segment>& in, MapSegment segment) {
+  std::vector<Segment> out;
+  out.reserve(in.size());
+  for (const Segment& s : in) out.push_back(segment(s));
+  return out;
+}
+
+}  // namespace
+
+Segment StockRemovalFrame::toFrame(const Segment& s) const {
+  return mapped(s, *this, [this](Point p) { return toFrame(p); });
 }
 
 Segment StockRemovalFrame::toPlane(const Segment& s) const {
-  Segment r = s;
-  r.from = toPlane(s.from);
-  r.to = toPlane(s.to);
-  r.center = toPlane(s.center);
-  r.kind = reflectedKind(s.kind, reflections(*this));
-  return r;
+  return mapped(s, *this, [this](Point p) { return toPlane(p); });
 }
 
 std::vector<Segment> StockRemovalFrame::toFrame(const std::vector<Segment>& plane) const {
-  std::vector<Segment> out;
-  out.reserve(plane.size());
-  for (const Segment& s : plane) out.push_back(toFrame(s));
-  return out;
+  return mappedAll(plane, [this](const Segment& s) { return toFrame(s); });
 }
 
 std::vector<Segment> StockRemovalFrame::toPlane(const std::vector<Segment>& frame) const {
-  std::vector<Segment> out;
-  out.reserve(frame.size());
-  for (const Segment& s : frame) out.push_back(toPlane(s));
-  return out;
+  return mappedAll(frame, [this](const Segment& s) { return toPlane(s); });
 }
 
 Move StockRemovalFrame::toPlane(Move m) const {
