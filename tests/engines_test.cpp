@@ -15,7 +15,9 @@
 
 #include "harness/check_run.h"
 #include "harness/engines/engine.h"
+#include "harness/reference_plan.h"
 #include "harness/rule_catalogue.h"
+#include "harness/spec_case.h"
 #include "tests/check_run_fixture.h"
 
 namespace cyclecert {
@@ -63,6 +65,22 @@ TEST_F(CheckRun, AProcessSpeakingJsonLinesPlugsIn) {
   const CheckSummary s = runCheck(*engine, options(), progress);
   EXPECT_EQ(s.pass, 3) << progress.str();
   EXPECT_EQ(results().size(), 3u);
+}
+
+// The process protocol carries a SINUMERIK case's contour subprograms to the engine: the request
+// is the whole case, its `subprograms` object included, so examples/engine.py (which hands the case
+// to `cyclecert plan --case`) plans the same path as the reference; without them it could not.
+TEST(Engines, AProcessEngineReceivesTheContourSubprograms) {
+  const SpecCase c = loadSpecCase(source("specs/cases/sinumerik-802s/lcyc95/r105-1-rough-step-shaft.json"));
+  ASSERT_FALSE(c.subprograms.empty());
+  auto engine = makeEngine("process:python3 " + source("examples/engine.py") + " " + CYCLECERT_CLI);
+  const EngineResult got = engine->run(c);
+  ASSERT_EQ(got.kind, EngineResult::Planned) << got.detail;
+  const Toolpath want = planSpecCase(c);
+  ASSERT_EQ(got.path.moves.size(), want.moves.size());
+  for (std::size_t i = 0; i < want.moves.size(); ++i) {
+    EXPECT_LT(distance(got.path.moves[i].to, want.moves[i].to), 1e-9) << "move " << i;
+  }
 }
 
 // `check --engine linuxcnc` end to end, through the engine factory: every spec case gets an answer
