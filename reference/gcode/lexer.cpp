@@ -3,7 +3,10 @@
 #include <cctype>
 
 #include <array>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <system_error>
 #include <utility>
 
 #include "reference/model/ascii.h"
@@ -194,6 +197,30 @@ std::vector<Token> tokenize(std::string_view source, const std::string& file) {
     tokens.push_back(lexer.next());
   } while (tokens.back().kind != TokenKind::EndOfInput);
   return tokens;
+}
+
+int significantDigits(std::string_view number) {
+  int count = 0;
+  for (char c : number) {
+    if (c < '0' || c > '9') continue;
+    if (count > 0 || c != '0') ++count;
+  }
+  return count;
+}
+
+NumberReading readNumber(std::string_view text) {
+  NumberReading r;
+  if (significantDigits(text) > kMostSignificantDigits) {
+    r.expected = "a number of at most 15 significant digits";
+    return r;
+  }
+  // from_chars takes a leading '-' but not a leading '+'.
+  const std::string_view digits = !text.empty() && text.front() == '+' ? text.substr(1) : text;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), r.value);
+  if (error != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(r.value)) {
+    r.expected = "a number within the range of a double";
+  }
+  return r;
 }
 
 }  // namespace cyclecert

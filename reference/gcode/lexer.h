@@ -62,6 +62,22 @@ class Lexer {
   int line_ = 1;
 };
 
+// A double holds any 15 significant decimal digits exactly; more would silently change the value.
+// Every reader of numbers (the FANUC parser, the SINUMERIK lexer) and the writer keep to it.
+inline constexpr int kMostSignificantDigits = 15;
+
+// Digits from the first non-zero one on: "-0.0061" has 2, "1.500" has 4.
+int significantDigits(std::string_view number);
+
+// A Number token's text read as a double: the value, or what a number must be that this one is not
+// ("a number of at most 15 significant digits", "a number within the range of a double"); the
+// caller says where.
+struct NumberReading {
+  double value = 0;
+  const char* expected = nullptr;  // set when the text is no number the readers accept
+};
+NumberReading readNumber(std::string_view text);
+
 // Every token of the source, ending with EndOfInput.
 std::vector<Token> tokenize(std::string_view source, const std::string& file);
 

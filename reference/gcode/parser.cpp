@@ -1,8 +1,5 @@
 #include "reference/gcode/parser.h"
 
-#include <charconv>
-#include <cmath>
-#include <system_error>
 #include <utility>
 
 #include "reference/gcode/lexer.h"
@@ -13,19 +10,6 @@ namespace {
 
 // FANUC accepts sequence numbers N1 to N99999.
 constexpr double kLargestSequenceNumber = 99999;
-// A double holds any 15 significant decimal digits exactly; more would silently change the value.
-constexpr int kMostSignificantDigits = 15;
-
-// Digits from the first non-zero one on: "-0.0061" has 2, "1.500" has 4.
-int significantDigits(std::string_view number) {
-  int count = 0;
-  for (char c : number) {
-    if (c < '0' || c > '9') continue;
-    if (count > 0 || c != '0') ++count;
-  }
-  return count;
-}
-
 bool isUnsignedWholeNumber(std::string_view number) {
   return number.find_first_not_of("0123456789") == std::string_view::npos;
 }
@@ -133,18 +117,9 @@ class ProgramParser {
   }
 
   double valueOf(const Token& number) const {
-    const std::string text(number.text);
-    if (significantDigits(text) > kMostSignificantDigits) {
-      fail(number, "a number of at most 15 significant digits", text);
-    }
-    // from_chars takes a leading '-' but not a leading '+'.
-    const std::string_view digits = text.front() == '+' ? number.text.substr(1) : number.text;
-    double value = 0;
-    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (error != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(value)) {
-      fail(number, "a number within the range of a double", text);
-    }
-    return value;
+    const NumberReading r = readNumber(number.text);
+    if (r.expected) fail(number, r.expected, std::string(number.text));
+    return r.value;
   }
 
   void setSequence(Block& block, const Token& letter, const Token& number, const Word& word) const {

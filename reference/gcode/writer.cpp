@@ -8,23 +8,12 @@
 #include <string_view>
 #include <system_error>
 
+#include "reference/gcode/lexer.h"
 #include "reference/model/ascii.h"
 
 namespace cyclecert {
 
 namespace {
-
-// The parser rejects numbers of more than 15 significant digits (a double holds 15 exactly).
-constexpr int kMostSignificantDigits = 15;
-
-int significantDigits(const std::string& number) {
-  int count = 0;
-  for (char c : number) {
-    if (c < '0' || c > '9') continue;
-    if (count > 0 || c != '0') ++count;
-  }
-  return count;
-}
 
 // The shortest plain decimal text that reads back as exactly this double.
 std::string shortestFixed(double value) {

@@ -1,7 +1,5 @@
 #include "reference/siemens/siemens_lexer.h"
 
-#include <charconv>
-#include <cmath>
 #include <utility>
 
 #include "reference/gcode/lexer.h"
@@ -15,19 +13,6 @@ namespace {
 bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
-
-// A double holds any 15 significant decimal digits exactly; more would silently change the value
-// (the FANUC reader's limit, reference/gcode/parser.cpp).
-constexpr int kMostSignificantDigits = 15;
-
-int significantDigits(std::string_view number) {
-  int count = 0;
-  for (char c : number) {
-    if (!isDigit(c)) continue;
-    if (count > 0 || c != '0') ++count;
-  }
-  return count;
-}
 
 }  // namespace
 
@@ -66,7 +51,7 @@ SiemensToken SiemensLexer::name() {
 }
 
 // The number's characters by the FANUC reader's rules (a lexer over the rest of the line: its
-// errors are moved to this line and column), its value by from_chars.
+// errors are moved to this line and column), its value as the FANUC reader reads it (readNumber).
 SiemensToken SiemensLexer::number() {
   Token scanned;
   try {
@@ -75,14 +60,9 @@ SiemensToken SiemensLexer::number() {
     throw ParseError({file_, lineNumber_, static_cast<int>(pos_) + e.loc().column}, e.expected(), e.found());
   }
   SiemensToken token = take(SiemensTokenKind::Number, scanned.text.size());
-  const std::string_view digits = token.text.front() == '+' ? token.text.substr(1) : token.text;
-  if (significantDigits(digits) > kMostSignificantDigits) {
-    throw ParseError({file_, lineNumber_, token.column}, "a number of at most 15 significant digits", std::string(token.text));
-  }
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), token.number);
-  if (error != std::errc{} || end != digits.data() + digits.size() || !std::isfinite(token.number)) {
-    throw ParseError({file_, lineNumber_, token.column}, "a number within the range of a double", std::string(token.text));
-  }
+  const NumberReading r = readNumber(token.text);
+  if (r.expected) throw ParseError({file_, lineNumber_, token.column}, r.expected, std::string(token.text));
+  token.number = r.value;
   return token;
 }
 
