@@ -1,10 +1,10 @@
-#include "reference/siemens/siemens_number_text.h"
+#include "reference/model/number_text.h"
 
 #include <cstdio>
 
 namespace cyclecert {
 
-std::string siemensNumberText(double v) {
+std::string shortDecimalText(double v) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6f", v);
   std::string s = buffer;

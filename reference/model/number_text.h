@@ -1,9 +1,10 @@
 #pragma once
-// A number as messages show it: "13", "1.5", "7.362914" (at most 6 decimals, no trailing zeros).
+// A number as messages and translated programs show it: "13", "1.5", "7.362914" — at most 6
+// decimals, no trailing zeros, never "-0".
 #include <string>
 
 namespace cyclecert {
 
-std::string siemensNumberText(double v);
+std::string shortDecimalText(double v);
 
 }  // namespace cyclecert

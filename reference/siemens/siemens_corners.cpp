@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "reference/model/alarms.h"
-#include "reference/siemens/siemens_number_text.h"
+#include "reference/model/number_text.h"
 
 namespace cyclecert {
 
@@ -45,7 +45,7 @@ std::optional<Segment> insertCorner(Segment& a, Segment& b, const CornerRequest&
   }
   const double leg = legOf(corner, turn);
   if (leg > a.length() + kGeomEps || leg > b.length() + kGeomEps) {
-    throw NotSupported(corner.line, corner.text + " needs " + siemensNumberText(leg) +
+    throw NotSupported(corner.line, corner.text + " needs " + shortDecimalText(leg) +
                                         " mm of each element; the controller shortens it then, which cyclecert does not model");
   }
   const Point corner0 = a.to;

@@ -4,7 +4,7 @@
 
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
-#include "reference/siemens/siemens_number_text.h"
+#include "reference/model/number_text.h"
 #include "reference/siemens/siemens_roughing_contour.h"
 
 namespace cyclecert {
@@ -36,7 +36,7 @@ constexpr double kDefaultRetract = 1.0;
 void requireMachiningTypeNumber(double value, const std::string& what, int line) {
   if (value >= 1 && value <= 12 && value == std::floor(value)) return;
   throw cycleBlockAlarm(siemens_alarm::kMachiningType, line,
-                        what + " = " + siemensNumberText(value) + ": the machining type is a whole number 1…12");
+                        what + " = " + shortDecimalText(value) + ": the machining type is a whole number 1…12");
 }
 
 Lcyc95Parameters lcyc95ParametersFrom(const RParameters& r, int line, MachiningTypeLookup typeOf) {

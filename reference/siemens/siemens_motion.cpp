@@ -5,7 +5,7 @@
 
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
-#include "reference/siemens/siemens_number_text.h"
+#include "reference/model/number_text.h"
 
 namespace cyclecert {
 
@@ -61,7 +61,7 @@ std::optional<Segment> siemensMotionSegment(const SiemensBlock& b, Point from, c
     const auto center = arcCenterFromRadius(seg.from, seg.to, cr->value, seg.kind);
     if (!center) {
       throw CycleAlarm(kSiemensCircleEndPointAlarm, b.line,
-                       cr->text + " is shorter than half the chord (" + siemensNumberText(distance(seg.from, seg.to) / 2) +
+                       cr->text + " is shorter than half the chord (" + shortDecimalText(distance(seg.from, seg.to) / 2) +
                            " mm), or the end point equals the start");
     }
     seg.center = *center;
@@ -75,7 +75,7 @@ std::optional<Segment> siemensMotionSegment(const SiemensBlock& b, Point from, c
   const double r1 = distance(seg.to, seg.center);
   if (std::abs(r0 - r1) > kArcRadiusTolerance || r0 <= kGeomEps) {
     throw CycleAlarm(kSiemensCircleEndPointAlarm, b.line,
-                     "the end point is not on the circle (radius " + siemensNumberText(r0) + " mm at the start, " + siemensNumberText(r1) +
+                     "the end point is not on the circle (radius " + shortDecimalText(r0) + " mm at the start, " + shortDecimalText(r1) +
                          " mm at the end)");
   }
   return seg;

@@ -14,14 +14,13 @@
 //   M2
 //
 // The word-by-word table and what is not applicable are in README.md beside this file.
-#include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
 #include "oracles/cycle_spec.h"
 #include "reference/gcode/parser.h"
 #include "reference/interpreter/g_codes.h"
+#include "reference/model/number_text.h"
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 #include "reference/profiles/default_profile.h"
@@ -31,15 +30,7 @@ namespace cyclecert {
 namespace {
 
 // A number as LinuxCNC reads it: up to 6 decimals, no trailing zeros, never "-0".
-std::string num(double v) {
-  if (std::abs(v) < 5e-7) return "0";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6f", v);
-  std::string s = buf;
-  while (!s.empty() && s.back() == '0') s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
+std::string num(double v) { return shortDecimalText(v); }
 
 // "X… Z…" of a point (X as a diameter: G7).
 std::string xz(Point p) {
