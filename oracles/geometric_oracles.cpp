@@ -20,14 +20,7 @@ double tolerance(const JudgeInput& in) { return in.settings.tolerance(); }
 // The target's span along the cut axis, less the tolerance at each end (the cycle does not cut
 // beyond its shape's ends); nothing when no more is left.
 std::optional<std::pair<double, double>> targetSpan(const MaterialReplay& r, double tolerance) {
-  const DepthFrame frame(r.away);
-  double lo = INFINITY, hi = -INFINITY;
-  for (const Segment& s : r.target) {
-    for (Point p : {s.from, s.to}) {
-      lo = std::min(lo, frame.cut(p));
-      hi = std::max(hi, frame.cut(p));
-    }
-  }
+  const auto [lo, hi] = cutSpanOf(r.target, DepthFrame(r.away));
   if (!(hi - lo > 2 * tolerance)) return std::nullopt;
   return std::pair{lo + tolerance, hi - tolerance};
 }

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <span>
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/oracles.h"
 #include "oracles/run_after_cycle.h"
 #include "reference/model/offset.h"
-#include <cmath>
 
 namespace cyclecert {
 
@@ -31,7 +32,7 @@ Point awayFrom(const CycleSpec& c) {
 // from the head's end towards A). A shape that is a graph over neither is swept along the relief.
 Point partSideOf(const CycleSpec& c) {
   if (!c.patternRepeating() || c.shape.size() < 2) return awayFrom(c);
-  const std::vector<Segment> profile(c.shape.begin() + 1, c.shape.end());
+  const std::span<const Segment> profile = std::span(c.shape).subspan(1);
   const Point headEnd = c.shape.front().to;
   const auto senseAlong = [&](bool alongX) {
     const std::array<double, 3> candidates = alongX ? std::array{c.relief.x, c.allowance.x, c.start.x - headEnd.x}
@@ -179,13 +180,7 @@ BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance)
   const std::vector<Segment> blank = nearNetBlankProfile(c);
   if (blank.empty()) return {};
   const DepthFrame frame(partSideOf(c));
-  double lo = INFINITY, hi = -INFINITY;
-  for (auto s = c.shape.begin() + 1; s != c.shape.end(); ++s) {
-    for (Point p : {s->from, s->to}) {
-      lo = std::min(lo, frame.cut(p));
-      hi = std::max(hi, frame.cut(p));
-    }
-  }
+  const auto [lo, hi] = cutSpanOf(std::span(c.shape).subspan(1), frame);
   if (!(hi > lo)) return {};
   const BgRegion span = regionFrom({frame.point(lo, 2 * reach), frame.point(hi, 2 * reach), frame.point(hi, -2 * reach),
                                     frame.point(lo, -2 * reach)});
@@ -197,13 +192,7 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
   const DepthFrame frame(away);
   const double level = frame.depth(c.start);
   const std::vector<Segment> shape = stockBoundingShape(c, frame, level);
-  double lo = INFINITY, hi = -INFINITY;
-  for (const Segment& s : shape) {
-    for (Point p : {s.from, s.to}) {
-      lo = std::min(lo, frame.cut(p));
-      hi = std::max(hi, frame.cut(p));
-    }
-  }
+  const auto [lo, hi] = cutSpanOf(shape, frame);
   if (!(hi > lo)) return {};
   // A shape that is a graph over the cut axis and stands below the start level between its ends
   // (A stands on it; C may) bounds the stock itself: the shape, up to the level at its end and back
@@ -312,7 +301,7 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   // against it as finely as the region below would be, bounds the layer (thickness.h,
   // standsThickerThan) and spares making the material left.
   const DepthFrame frame(away);
-  if (isGraphOverCutAxis({move}, frame)) {
+  if (isGraphOverCutAxis(std::span(&move, 1), frame)) {
     const double a = std::min(frame.cut(move.from), frame.cut(move.to));
     const double b = std::max(frame.cut(move.from), frame.cut(move.to));
     if (!standsThickerThan(model.topWithin(a, b), {move}, away, kMeasuringChord, allowed)) return std::nullopt;

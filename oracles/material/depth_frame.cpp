@@ -31,7 +31,7 @@ SegmentPieces splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame
   return pieces;
 }
 
-bool isGraphOverCutAxis(const std::vector<Segment>& path, const DepthFrame& frame) {
+bool isGraphOverCutAxis(std::span<const Segment> path, const DepthFrame& frame) {
   int direction = 0;
   for (const Segment& s : path) {
     for (const Segment& piece : splitWhereTangentIsAlong(s, frame)) {

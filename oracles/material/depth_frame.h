@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -60,6 +61,21 @@ class DepthFrame {
   Point along_;
 };
 
+// The span of segments' end points along a frame's cut axis; lo > hi when there are none.
+struct CutSpan {
+  double lo = INFINITY, hi = -INFINITY;
+};
+inline CutSpan cutSpanOf(std::span<const Segment> segments, const DepthFrame& frame) {
+  CutSpan span;
+  for (const Segment& s : segments) {
+    for (Point p : {s.from, s.to}) {
+      span.lo = std::min(span.lo, frame.cut(p));
+      span.hi = std::max(span.hi, frame.cut(p));
+    }
+  }
+  return span;
+}
+
 // The pieces of a segment, held in place (no allocation: callers split every move): an arc turns
 // back along the cut axis at most twice, so three pieces at most.
 class SegmentPieces {
@@ -80,6 +96,6 @@ SegmentPieces splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame
 
 // Whether the path is a graph over the cut axis: it never turns back along it (walls along the
 // depth axis allowed).
-bool isGraphOverCutAxis(const std::vector<Segment>& path, const DepthFrame& frame);
+bool isGraphOverCutAxis(std::span<const Segment> path, const DepthFrame& frame);
 
 }  // namespace cyclecert
