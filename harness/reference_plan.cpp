@@ -77,26 +77,31 @@ Toolpath planSiemensRequest(const PlanRequest& request, const Profile& profile) 
                             profile);
 }
 
-}  // namespace
-
-ReadRequest readRequest(const PlanRequest& request) {
+// A program of a FANUC-dialect profile: its parameters and its parsed blocks.
+ReadRequest readFanucRequest(const PlanRequest& request, const Profile& profile) {
   ReadRequest read;
-  read.profile = &requestedProfile(request);
-  if (read.profile->dialect == Dialect::Siemens) {
-    throw NotSupported(0, "the " + read.profile->name + " profile's programs are planned (cyclecert plan) but not judged yet "
-                          "(issue 16: the Siemens oracles)");
-  }
-  read.params = read.profile->defaults;
+  read.profile = &profile;
+  read.params = profile.defaults;
   for (const auto& [name, value] : request.params) read.params.set(name, value);
-  read.program = parsedInTheFanucDialect(request, *read.profile);
+  read.program = parsedInTheFanucDialect(request, profile);
   return read;
 }
 
-Toolpath planWithReference(const PlanRequest& request) {
-  if (const Profile& profile = requestedProfile(request); profile.dialect == Dialect::Siemens) {
-    return planSiemensRequest(request, profile);
+}  // namespace
+
+ReadRequest readRequest(const PlanRequest& request) {
+  const Profile& profile = requestedProfile(request);
+  if (profile.dialect == Dialect::Siemens) {
+    throw NotSupported(0, "the " + profile.name + " profile's programs are planned (cyclecert plan) but not judged yet "
+                          "(issue 16: the Siemens oracles)");
   }
-  const ReadRequest read = readRequest(request);
+  return readFanucRequest(request, profile);
+}
+
+Toolpath planWithReference(const PlanRequest& request) {
+  const Profile& profile = requestedProfile(request);
+  if (profile.dialect == Dialect::Siemens) return planSiemensRequest(request, profile);
+  const ReadRequest read = readFanucRequest(request, profile);
   return planProgram(*read.program, *read.profile, read.params, request.options);
 }
 
