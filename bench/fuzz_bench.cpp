@@ -95,34 +95,27 @@ void BM_FuzzCaseReferenceHaasAndGCodeSystems(benchmark::State& state) {
 }
 BENCHMARK(BM_FuzzCaseReferenceHaasAndGCodeSystems)->Unit(benchmark::kMicrosecond);
 
+// Cases of the given cycle families generated, planned and judged in the loop, as `fuzz` does.
+void judgeGeneratedCases(benchmark::State& state, const FuzzCycles& cycles) {
+  const auto engine = makeEngine("reference");
+  long i = 0;
+  for (auto _ : state) {
+    const std::uint64_t seed = fuzzCaseSeed(kSeed, i++);
+    const SpecCase c = fuzzSpecCase(generateFuzzCase(seed, kDefaultCycleFormats, cycles), "bench");
+    benchmark::DoNotOptimize(judgeFuzzCase(*engine, nullptr, c, 1e-3));
+  }
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+
 // `fuzz --engine reference --cycles g73` end to end: each case generated, planned and judged by
 // every oracle (the material replayed on the near-net blank, in the relief's frame). Its time per
 // case over BM_FuzzG71CaseReferenceGenerated's (G71/G72, generated the same way, the same run) is
 // the figure issue 15 asks for; target ≥ 10,000/s (bench/README.md).
-void BM_FuzzG73CaseReference(benchmark::State& state) {
-  const auto engine = makeEngine("reference");
-  const FuzzCycles g73 = {FuzzCycle::G73};
-  long i = 0;
-  for (auto _ : state) {
-    const std::uint64_t seed = fuzzCaseSeed(kSeed, i++);
-    const SpecCase c = fuzzSpecCase(generateFuzzCase(seed, kDefaultCycleFormats, g73), "bench");
-    benchmark::DoNotOptimize(judgeFuzzCase(*engine, nullptr, c, 1e-3));
-  }
-  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
-}
+void BM_FuzzG73CaseReference(benchmark::State& state) { judgeGeneratedCases(state, {FuzzCycle::G73}); }
 BENCHMARK(BM_FuzzG73CaseReference)->Unit(benchmark::kMicrosecond);
 
 // The same for G71/G72 cases, generated in the loop too, so that the two lines compare like with like.
-void BM_FuzzG71CaseReferenceGenerated(benchmark::State& state) {
-  const auto engine = makeEngine("reference");
-  long i = 0;
-  for (auto _ : state) {
-    const std::uint64_t seed = fuzzCaseSeed(kSeed, i++);
-    const SpecCase c = fuzzSpecCase(generateFuzzCase(seed), "bench");
-    benchmark::DoNotOptimize(judgeFuzzCase(*engine, nullptr, c, 1e-3));
-  }
-  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
-}
+void BM_FuzzG71CaseReferenceGenerated(benchmark::State& state) { judgeGeneratedCases(state, kDefaultFuzzCycles); }
 BENCHMARK(BM_FuzzG71CaseReferenceGenerated)->Unit(benchmark::kMicrosecond);
 
 // LinuxCNC's rs274 on the same cases, one process per case and batched (when rs274 was fetched:
