@@ -173,18 +173,33 @@ std::vector<Segment> nearNetBlankProfile(const CycleSpec& c) {
   return blank;
 }
 
+namespace {
+
+// The band of the cut coordinates [lo, hi] of a frame, `width` deep on either side of its cut axis.
+BgRegion cutBand(const DepthFrame& frame, double lo, double hi, double width) {
+  return regionFrom({frame.point(lo, width), frame.point(hi, width), frame.point(hi, -width), frame.point(lo, -width)});
+}
+
+}  // namespace
+
 // G73: the near-net blank (a casting or forging), everything behind the shape after block ns grown
-// by (Δk + Δw, Δi + Δu/2) — the first pass's path — over the shape's own span along the cut axis:
-// beyond B and C the program describes neither part nor blank (interpretation, G73.PASS.SHIFT).
+// by (Δk + Δw, Δi + Δu/2) — the first pass's path — where the program describes it: over the
+// shape's span along the cut axis of the side the part stands on (partSideOf), and between the rays
+// from B and C along the relief (awayFrom: the direction the passes stand apart in, which the
+// completeness oracle's span also follows). Beyond either, a point may lie past the ends of the
+// part the program draws, where a pass's or the finishing pass's shadow cannot reach
+// (interpretation, G73.PASS.SHIFT).
 BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance) {
   const std::vector<Segment> blank = nearNetBlankProfile(c);
   if (blank.empty()) return {};
-  const DepthFrame frame(partSideOf(c));
-  const auto [lo, hi] = cutSpanOf(std::span(c.shape).subspan(1), frame);
-  if (!(hi > lo)) return {};
-  const BgRegion span = regionFrom({frame.point(lo, 2 * reach), frame.point(hi, 2 * reach), frame.point(hi, -2 * reach),
-                                    frame.point(lo, -2 * reach)});
-  return checkedIntersection(span, partRegionOf(blank, frame.away(), reach, chordTolerance));
+  const std::span<const Segment> shape = std::span(c.shape).subspan(1);
+  const DepthFrame partSide(partSideOf(c));
+  const DepthFrame relief(awayFrom(c));
+  const auto [lo, hi] = cutSpanOf(shape, partSide);
+  const auto [reliefLo, reliefHi] = cutSpanOf(shape, relief);
+  if (!(hi > lo) || !(reliefHi > reliefLo)) return {};
+  const BgRegion known = checkedIntersection(cutBand(partSide, lo, hi, 4 * reach), cutBand(relief, reliefLo, reliefHi, 4 * reach));
+  return checkedIntersection(known, partRegionOf(blank, partSide.away(), reach, chordTolerance));
 }
 
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
