@@ -174,6 +174,16 @@ std::vector<Segment> nearNetBlankProfile(const CycleSpec& c) {
   return blank;
 }
 
+namespace {
+
+// The band of the cut coordinates [lo, hi] of a frame, `width` deep on either side of its cut axis.
+BgRegion cutBand(const DepthFrame& frame, double lo, double hi, double width) {
+  return regionFromSimpleOutline(
+      {frame.point(lo, width), frame.point(hi, width), frame.point(hi, -width), frame.point(lo, -width)});
+}
+
+}  // namespace
+
 // G73: the near-net blank (a casting or forging), everything behind the shape after block ns grown
 // by (Δk + Δw, Δi + Δu/2) — the first pass's path — where the program describes it: over the
 // shape's span along the cut axis of the side the part stands on (partSideOf), and between the rays
@@ -190,8 +200,10 @@ BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance)
   const auto [lo, hi] = cutSpanOf(shape, partSide);
   const auto [reliefLo, reliefHi] = cutSpanOf(shape, relief);
   if (!(hi > lo) || !(reliefHi > reliefLo)) return {};
-  const std::array<CutBand, 2> bands{CutBand{partSide, lo, hi}, CutBand{relief, reliefLo, reliefHi}};
-  const BgRegion known = regionFromSimpleOutline(outlineWithinBands(bands, 4 * reach));
+  // A relief along the part side's axis gives the same band twice: no boolean needed.
+  const bool sameBands = std::abs(partSide.away().z * relief.away().x - partSide.away().x * relief.away().z) < 1e-12;
+  const BgRegion band = cutBand(partSide, lo, hi, 4 * reach);
+  const BgRegion known = sameBands ? band : checkedIntersection(band, cutBand(relief, reliefLo, reliefHi, 4 * reach));
   return checkedIntersection(known, partRegionOf(blank, partSide.away(), reach, chordTolerance));
 }
 

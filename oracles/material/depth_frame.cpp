@@ -6,32 +6,6 @@
 
 namespace cyclecert {
 
-namespace {
-
-// The part of a convex outline where frame.cut(p)·sense ≥ bound·sense (Sutherland–Hodgman).
-std::vector<Point> clippedTo(const std::vector<Point>& outline, const DepthFrame& frame, double bound, double sense) {
-  std::vector<Point> kept;
-  const auto inside = [&](Point p) { return sense * (frame.cut(p) - bound); };
-  for (std::size_t i = 0; i < outline.size(); ++i) {
-    const Point a = outline[i], b = outline[(i + 1) % outline.size()];
-    const double da = inside(a), db = inside(b);
-    if (da >= 0) kept.push_back(a);
-    if ((da >= 0) != (db >= 0)) kept.push_back(a + (da / (da - db)) * (b - a));
-  }
-  return kept;
-}
-
-}  // namespace
-
-std::vector<Point> outlineWithinBands(std::span<const CutBand> bands, double size) {
-  std::vector<Point> outline{{-size, -size}, {size, -size}, {size, size}, {-size, size}};
-  for (const CutBand& band : bands) {
-    outline = clippedTo(outline, band.frame, band.lo, 1);
-    outline = clippedTo(outline, band.frame, band.hi, -1);
-  }
-  return outline;
-}
-
 SegmentPieces splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame) {
   SegmentPieces pieces;
   if (!s.isArc() || s.radius() <= kGeomEps) {

@@ -76,17 +76,6 @@ inline CutSpan cutSpanOf(std::span<const Segment> segments, const DepthFrame& fr
   return span;
 }
 
-// A band of a frame: the points of the plane whose cut coordinate lies in [lo, hi].
-struct CutBand {
-  DepthFrame frame;
-  double lo, hi;
-};
-
-// The outline of the points that lie in every band and within `size` of the origin along both
-// axes of the plane: a convex polygon (the square clipped by each band's two edges, Sutherland–
-// Hodgman, exact for convex figures), empty when nothing is left. Crosses bands without a boolean.
-std::vector<Point> outlineWithinBands(std::span<const CutBand> bands, double size);
-
 // The pieces of a segment, held in place (no allocation: callers split every move): an arc turns
 // back along the cut axis at most twice, so three pieces at most.
 class SegmentPieces {
