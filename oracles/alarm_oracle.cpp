@@ -14,8 +14,9 @@ class AlarmOracle : public Oracle {
   std::string id() const override { return "alarm"; }
   std::vector<std::string> rules() const override {
     return {"G71.T1.ALARM", "G71.T2.MONO", "G72.T1.MONO", "G71.HEAD.G0G1", "G71.HEAD.NOX", "G71.LIMIT.HEIGHT", "G72.RANGE",
-            "G73.ALARMS", "G73.D.RANGE", "G73.FS10.FMT", "G73.HEAD"};
+            "G73.ALARMS", "G73.D.RANGE", "G73.FS10.FMT", "G73.HEAD", "LCYC95.ALARMS"};
   }
+  bool judges(CycleFamily) const override { return true; }  // every family, the SINUMERIK ones too
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
