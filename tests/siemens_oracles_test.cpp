@@ -13,6 +13,7 @@
 
 #include "harness/judging.h"
 #include "harness/reference_plan.h"
+#include "harness/rule_catalogue.h"
 #include "harness/spec_case.h"
 #include "oracles/judgement.h"
 
