@@ -68,8 +68,8 @@ class Oracle {
   // Whether the oracle judges a roughing cycle of this family (its rules apply to it); judge() skips
   // it for a program whose one roughing cycle (or SINUMERIK program) it does not judge. How it
   // judges each family is in its comment and oracles/README.md (depth-per-pass: Δd for G71/G72, the
-  // division step for G73). By default the FANUC families; the SINUMERIK oracles (oracles/siemens/)
-  // judge LCYC95 and CYCLE95.
+  // division step for G73). By default the FANUC families; the SINUMERIK oracles (oracles/siemens/,
+  // siemens-alarm) judge LCYC95 and CYCLE95.
   virtual bool judges(CycleFamily family) const { return !isSiemensFamily(family); }
   virtual void judge(const JudgeContext& ctx, std::vector<Finding>& findings) const = 0;
 };

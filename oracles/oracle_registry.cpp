@@ -18,6 +18,7 @@ std::vector<std::unique_ptr<Oracle>> makeOracles() {
   all.push_back(makePocketEntryOracle());
   all.push_back(makeReturnsToStartOracle());
   all.push_back(makeFeedsOracle());
+  all.push_back(makeSiemensAlarmOracle());
   all.push_back(makeSiemensRetractOracle());
   all.push_back(makeSiemensInfeedStepsOracle());
   all.push_back(makeSiemensInfeedOracle());

@@ -17,7 +17,8 @@ std::unique_ptr<Oracle> makeCompleteOracle();
 std::unique_ptr<Oracle> makeDepthPerPassOracle();
 std::unique_ptr<Oracle> makePassLevelsOracle();
 std::unique_ptr<Oracle> makePocketEntryOracle();
-// SINUMERIK LCYC95 / CYCLE95 (oracles/siemens/).
+// SINUMERIK LCYC95 / CYCLE95 (oracles/siemens/; siemens-alarm in alarm_oracle.cpp).
+std::unique_ptr<Oracle> makeSiemensAlarmOracle();
 std::unique_ptr<Oracle> makeSiemensRetractOracle();
 std::unique_ptr<Oracle> makeSiemensInfeedStepsOracle();
 std::unique_ptr<Oracle> makeSiemensInfeedOracle();

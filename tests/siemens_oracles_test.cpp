@@ -280,14 +280,14 @@ TEST(SiemensOracles, AlarmsTheRulesDemandAreExpected) {
       {lcyc95Program("1"), "G1 X40 Z-20\nX32\nZ-10\nX20\nZ0\nRET\n", "10931"},
   };
   for (const auto& c : cases) {
-    const std::vector<Finding> f = of(judged(c.program, "sinumerik-802s", Toolpath{}, c.subprogram), "alarm");
+    const std::vector<Finding> f = of(judged(c.program, "sinumerik-802s", Toolpath{}, c.subprogram), "siemens-alarm");
     ASSERT_EQ(f.size(), 1u) << c.code;
     EXPECT_NE(f[0].message.find(c.code), std::string::npos) << f[0].message;
   }
   // … and the good program alarmed is reported too.
   Toolpath alarmed;
   alarmed.alarm = Alarm{"61610", "no infeed", 5, ""};
-  EXPECT_EQ(of(judged(lcyc95Program("1"), "sinumerik-802s", alarmed), "alarm").size(), 1u);
+  EXPECT_EQ(of(judged(lcyc95Program("1"), "sinumerik-802s", alarmed), "siemens-alarm").size(), 1u);
 }
 
 // The frame: in every machining type's spec case, the first retract shortened to a 45° retract of
@@ -313,10 +313,10 @@ TEST(SiemensOracles, RetractAt45DegreesIsReportedInEveryFrame) {
 }
 
 TEST(SiemensOracles, FanucOraclesDoNotJudgeSiemensPrograms) {
-  // Only the alarm oracle and the SINUMERIK ones run on a SINUMERIK program.
+  // Only the SINUMERIK oracles run on a SINUMERIK program.
   const std::vector<Finding> f = judged(lcyc95Program("1"), "sinumerik-802s", PathBuilder({2, 25}).path);
   ASSERT_FALSE(f.empty());
-  for (const Finding& x : f) EXPECT_TRUE(x.oracle == "alarm" || x.oracle.rfind("siemens-", 0) == 0) << x.oracle;
+  for (const Finding& x : f) EXPECT_EQ(x.oracle.rfind("siemens-", 0), 0u) << x.oracle;
 }
 
 }  // namespace
