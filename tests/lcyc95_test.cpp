@@ -667,25 +667,27 @@ TEST(Lcyc95Rough, ADomeSplitAtItsApexStopsThePassesAtTheApex) {
 
 // --- An I/K arc whose end lies slightly off its circle (issue 16; SIEMENS.ARC) ---
 //
-// Contour Q2: G1 X0 Z0; G3 X20.01 Z-10 K-10 I0: centre (−10, 0) as programmed, radius 10 at the
-// start; the end (−10, 10.005) lies 10.005 from it, 0.005 off (accepted: at most 0.01). The controller
+// Contour Q2: G1 X0 Z0; G3 X19.99 Z-10 K-10 I0: centre (−10, 0) as programmed, radius 10 at the
+// start; the end (−10, 9.995) lies 9.995 from it, 0.005 off (accepted: at most 0.01). The controller
 // keeps the end and moves the centre onto the chord's perpendicular bisector, 10 (the start's radius)
-// from both ends, on the programmed centre's side: z² + x² = 100 and (z + 10)² + (x − 10.005)² = 100
-// give x = 0.005 and z = −√(100 − 0.005²) = −9.99999875. Then the taper G1 X24 Z-20 to (−20, 12): a
-// corner after the arc. R105=5 R106=0 finishes it (before: alarm 10931, the allowance 0 "not fitting"
-// because the profile put the arc's end on the programmed circle, 0.005 from the taper's start).
-// Start (LCYC95.START): (0 + 1, 12 + 1) = (1, 13).
+// from both ends, on the programmed centre's side: z² + x² = 100 and (z + 10)² + (x − 9.995)² = 100
+// give 20z − 19.99x = −199.900025, so x = −0.005 and z = −√(100 − 0.005²) = −9.99999875. The arc
+// then turns 89.97° (the chord, 14.13860, is shorter than a quarter circle's 14.14214; an end 0.005
+// beyond the circle instead would turn it past 90°: alarm 10931). Then the taper G1 X24 Z-20 to
+// (−20, 12): a corner after the arc. R105=5 R106=0 finishes it (before: alarm 10931, the allowance 0
+// "not fitting" because the profile put the arc's end on the programmed circle, 0.005 from the
+// taper's start). Start (LCYC95.START): (0 + 1, 12 + 1) = (1, 13).
 TEST(Lcyc95Contour, AnIKArcEndingOffItsCircleIsOneCircle) {
   SiemensModal modal;
   modal.motion = 1;
   const SiemensContour c =
-      readSiemensContour("Q2", parseSiemensSubprogram("G1 X0 Z0\nG3 X20.01 Z-10 K-10 I0\nG1 X24 Z-20\nRET\n", "Q2.spf"), modal);
+      readSiemensContour("Q2", parseSiemensSubprogram("G1 X0 Z0\nG3 X19.99 Z-10 K-10 I0\nG1 X24 Z-20\nRET\n", "Q2.spf"), modal);
   ASSERT_EQ(c.segments.size(), 2u);
   const Segment& a = c.segments[0];
   EXPECT_NEAR(a.to.z, -10, 1e-12);
-  EXPECT_NEAR(a.to.x, 10.005, 1e-12);
+  EXPECT_NEAR(a.to.x, 9.995, 1e-12);
   EXPECT_NEAR(a.center.z, -9.99999875, 1e-8);
-  EXPECT_NEAR(a.center.x, 0.005, 1e-9);
+  EXPECT_NEAR(a.center.x, -0.005, 1e-9);
   EXPECT_NEAR(distance(a.from, a.center), 10, 1e-9);
   EXPECT_NEAR(distance(a.to, a.center), 10, 1e-9);
   const auto out = planLcyc95(callAt({2, 25}, c), params(5));
@@ -693,7 +695,7 @@ TEST(Lcyc95Contour, AnIKArcEndingOffItsCircleIsOneCircle) {
                              {G0, {2, 13}, "approach"},
                              {G0, {1, 13}, "approach"},
                              {G0, {0, 0}, "finish"},
-                             {G1, {-10, 10.005}, "finish"},
+                             {G1, {-10, 9.995}, "finish"},
                              {G1, {-20, 12}, "finish"},
                              {G0, {1, 13}, "return"},
                          });
