@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "harness/siemens_reading.h"
 #include "oracles/material_replay.h"
 #include "reference/gcode/parser.h"
 #include "reference/model/profile.h"
@@ -11,9 +12,7 @@ namespace cyclecert {
 
 JudgeRequest judgeRequestFor(const SpecCase& c) {
   JudgeRequest r;
-  r.program = {c.program, c.file + "#/program", c.profile, c.params, {}};
-  r.program.options.mdi = c.mdi;
-  if (c.tool) r.program.options.tool = *c.tool;
+  r.program = planRequestFor(c);  // with the case's SINUMERIK subprograms
   r.stock = c.stock;
   r.settings.epsilon = c.tolerance;
   return r;
@@ -21,9 +20,13 @@ JudgeRequest judgeRequestFor(const SpecCase& c) {
 
 JudgeInput judgeInputFor(const JudgeRequest& request, Toolpath path) {
   const PlanRequest& p = request.program;
-  const ReadRequest read = readRequest(p);
   JudgeInput in;
-  in.program = readProgramSpec(*read.program, *read.profile, read.params, p.options.tool, p.options.mdi);
+  if (const Profile& profile = requestedProfile(p); profile.dialect == Dialect::Siemens) {
+    in.program = readSiemensProgramSpec(p, profile);
+  } else {
+    const ReadRequest read = readRequest(p, profile);
+    in.program = readProgramSpec(*read.program, *read.profile, read.params, p.options.tool, p.options.mdi);
+  }
   if (request.stock) {
     in.stock.kind = request.stock->bar ? Stock::Bar : Stock::Polygon;
     in.stock.diameter = request.stock->diameter;

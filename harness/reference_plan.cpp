@@ -44,8 +44,6 @@ std::shared_ptr<const Program> parsedOnce(const std::string& text, const std::st
 
 }  // namespace
 
-namespace {
-
 const Profile& requestedProfile(const PlanRequest& request) {
   std::string profileName = request.profile;
   if (profileName.empty()) profileName = profileFromHeader(request.programText);
@@ -54,6 +52,8 @@ const Profile& requestedProfile(const PlanRequest& request) {
   if (!profile) throw UnknownProfile(profileName);
   return *profile;
 }
+
+namespace {
 
 // SIEMENS.DIALECT: a SINUMERIK program read with a FANUC-dialect profile fails where the FANUC
 // reader stops; the error then says which profiles read it.
@@ -89,11 +89,12 @@ ReadRequest readFanucRequest(const PlanRequest& request, const Profile& profile)
 
 }  // namespace
 
-ReadRequest readRequest(const PlanRequest& request) {
-  const Profile& profile = requestedProfile(request);
+ReadRequest readRequest(const PlanRequest& request) { return readRequest(request, requestedProfile(request)); }
+
+ReadRequest readRequest(const PlanRequest& request, const Profile& profile) {
   if (profile.dialect == Dialect::Siemens) {
-    throw NotSupported(0, "the " + profile.name + " profile's programs are planned (cyclecert plan) but not judged yet "
-                          "(issue 16: the Siemens oracles)");
+    throw NotSupported(0, "the " + profile.name + " profile's programs are SINUMERIK programs, not read as FANUC blocks "
+                          "(the oracles read them with readSiemensProgramSpec, harness/siemens_reading.h)");
   }
   return readFanucRequest(request, profile);
 }

@@ -36,8 +36,13 @@ struct ReadRequest {
   MachineParams params;
   std::shared_ptr<const Program> program;
 };
-// Throws ParseError, UnknownProfile and UnknownParam / std::invalid_argument.
+// The request's profile: its own, else a "(profile: NAME)" header, else the default. Throws
+// UnknownProfile.
+const Profile& requestedProfile(const PlanRequest& request);
+// A FANUC-dialect request read. Throws ParseError, UnknownProfile and UnknownParam /
+// std::invalid_argument; NotSupported for a SINUMERIK profile (harness/siemens_reading.h reads those).
 ReadRequest readRequest(const PlanRequest& request);
+ReadRequest readRequest(const PlanRequest& request, const Profile& profile);  // its profile found already
 
 // Throws ParseError (malformed program), UnknownProfile, UnknownParam / std::invalid_argument
 // (bad parameter) and NotSupported; a controller alarm is part of the returned toolpath.

@@ -665,7 +665,18 @@ std::optional<Alarm> ProgramSpec::firstAlarm() const {
   }
   for (const Alarm& a : finishingAlarms) consider(a);
   if (blockAlarm) consider(*blockAlarm);
+  if (siemensAlarm) consider(*siemensAlarm);
   return first;
+}
+
+const SiemensCycleSpec* ProgramSpec::singleSiemensCycle() const {
+  return siemensCycles.size() == 1 && !siemensAlarm ? &siemensCycles.front() : nullptr;
+}
+
+std::optional<CycleFamily> ProgramSpec::judgedFamily() const {
+  if (siemensFamily) return siemensFamily;
+  if (const CycleSpec* c = singleRoughingCycle()) return c->family;
+  return std::nullopt;
 }
 
 const CycleSpec* ProgramSpec::firstForbidden() const {

@@ -13,6 +13,7 @@
 #include "reference/model/program.h"
 #include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
+#include "oracles/siemens/siemens_cycle_spec.h"
 
 namespace cyclecert {
 
@@ -88,10 +89,21 @@ struct ProgramSpec {
   // HNC.G71.FST: the blocks that move the tool after the program's last Huazhong G71 (its finishing
   // run of ns…nf among them, which makes hasFinishingCycle true). Empty for other programs.
   std::vector<ProgramMove> runAfterHuazhong;
+  // SINUMERIK programs (profiles sinumerik-802s/-802d): the profile's stock-removal cycle, each call
+  // as the front end reads it (harness/siemens_reading.h), and the alarm the controller must stop
+  // with (LCYC95.ALARMS: 61002, 61610, 10931), read from the program. `cycles` stays empty.
+  std::optional<CycleFamily> siemensFamily;
+  std::vector<SiemensCycleSpec> siemensCycles;
+  std::optional<Alarm> siemensAlarm;
 
   // The program's one roughing cycle when it has exactly one that the rules allow (what the
   // geometric oracles judge), else nullptr.
   const CycleSpec* singleRoughingCycle() const;
+  // The program's one SINUMERIK cycle call when it has exactly one and no alarm stops it, else nullptr.
+  const SiemensCycleSpec* singleSiemensCycle() const;
+  // The family the oracles are chosen by (Oracle::judges): a SINUMERIK program's cycle, else the one
+  // roughing cycle's; nothing for other programs (every oracle judges them).
+  std::optional<CycleFamily> judgedFamily() const;
   // The first cycle the rules forbid, or nullptr.
   const CycleSpec* firstForbidden() const;
   // The alarm the controller must stop with: the earliest one in the program, if any.

@@ -177,7 +177,7 @@ class PassLevelsOracle : public Oracle {
  public:
   std::string id() const override { return "pass-levels"; }
   std::vector<std::string> rules() const override { return {"G72.STEP2", "G72.STEP6", "G71.T1.STEP6", "G71.OP"}; }
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G73; }
+  bool judges(CycleFamily f) const override { return f == CycleFamily::G71 || f == CycleFamily::G72; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const CycleSpec* c = ctx.replay ? ctx.replay->cycle : nullptr;
     // G73's passes follow the whole shape, not levels (depth-per-pass judges how far apart they stand).

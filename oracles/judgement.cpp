@@ -14,9 +14,9 @@ std::vector<Finding> judge(const JudgeInput& in) {
   const std::optional<MaterialReplay> replay = replayMaterial(in);
   const JudgeContext ctx{in, replay ? &*replay : nullptr};
   std::vector<Finding> findings;
-  const CycleSpec* cycle = in.program.singleRoughingCycle();
+  const std::optional<CycleFamily> family = in.program.judgedFamily();
   for (const auto& oracle : allOracles()) {
-    if (!cycle || oracle->judges(cycle->family)) oracle->judge(ctx, findings);
+    if (!family || oracle->judges(*family)) oracle->judge(ctx, findings);
   }
   return findings;
 }

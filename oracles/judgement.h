@@ -66,9 +66,11 @@ class Oracle {
   virtual std::string id() const = 0;
   virtual std::vector<std::string> rules() const = 0;
   // Whether the oracle judges a roughing cycle of this family (its rules apply to it); judge() skips
-  // it for a program whose one roughing cycle it does not judge. How it judges each family is in its
-  // comment and oracles/README.md (depth-per-pass: Δd for G71/G72, the division step for G73).
-  virtual bool judges(CycleFamily) const { return true; }
+  // it for a program whose one roughing cycle (or SINUMERIK program) it does not judge. How it
+  // judges each family is in its comment and oracles/README.md (depth-per-pass: Δd for G71/G72, the
+  // division step for G73). By default the FANUC families; the SINUMERIK oracles (oracles/siemens/,
+  // siemens-alarm) judge LCYC95 and CYCLE95.
+  virtual bool judges(CycleFamily family) const { return !isSiemensFamily(family); }
   virtual void judge(const JudgeContext& ctx, std::vector<Finding>& findings) const = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <unordered_map>
 
 #include "oracles/material/boost_geometry.h"
 #include "oracles/oracles.h"
@@ -173,18 +174,37 @@ std::vector<Segment> nearNetBlankProfile(const CycleSpec& c) {
   return blank;
 }
 
+namespace {
+
+// The band of the cut coordinates [lo, hi] of a frame, `width` deep on either side of its cut axis.
+BgRegion cutBand(const DepthFrame& frame, double lo, double hi, double width) {
+  return regionFromSimpleOutline(
+      {frame.point(lo, width), frame.point(hi, width), frame.point(hi, -width), frame.point(lo, -width)});
+}
+
+}  // namespace
+
 // G73: the near-net blank (a casting or forging), everything behind the shape after block ns grown
-// by (Δk + Δw, Δi + Δu/2) — the first pass's path — over the shape's own span along the cut axis:
-// beyond B and C the program describes neither part nor blank (interpretation, G73.PASS.SHIFT).
+// by (Δk + Δw, Δi + Δu/2) — the first pass's path — where the program describes it: over the
+// shape's span along the cut axis of the side the part stands on (partSideOf), and between the rays
+// from B and C along the relief (awayFrom: the direction the passes stand apart in, which the
+// completeness oracle's span also follows). Beyond either, a point may lie past the ends of the
+// part the program draws, where a pass's or the finishing pass's shadow cannot reach
+// (interpretation, G73.PASS.SHIFT).
 BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance) {
   const std::vector<Segment> blank = nearNetBlankProfile(c);
   if (blank.empty()) return {};
-  const DepthFrame frame(partSideOf(c));
-  const auto [lo, hi] = cutSpanOf(std::span(c.shape).subspan(1), frame);
-  if (!(hi > lo)) return {};
-  const BgRegion span = regionFrom({frame.point(lo, 2 * reach), frame.point(hi, 2 * reach), frame.point(hi, -2 * reach),
-                                    frame.point(lo, -2 * reach)});
-  return checkedIntersection(span, partRegionOf(blank, frame.away(), reach, chordTolerance));
+  const std::span<const Segment> shape = std::span(c.shape).subspan(1);
+  const DepthFrame partSide(partSideOf(c));
+  const DepthFrame relief(awayFrom(c));
+  const auto [lo, hi] = cutSpanOf(shape, partSide);
+  const auto [reliefLo, reliefHi] = cutSpanOf(shape, relief);
+  if (!(hi > lo) || !(reliefHi > reliefLo)) return {};
+  // A relief along the part side's axis gives the same band twice: no boolean needed.
+  const bool sameBands = std::abs(partSide.away().z * relief.away().x - partSide.away().x * relief.away().z) < 1e-12;
+  const BgRegion band = cutBand(partSide, lo, hi, 4 * reach);
+  const BgRegion known = sameBands ? band : checkedIntersection(band, cutBand(relief, reliefLo, reliefHi, 4 * reach));
+  return checkedIntersection(known, partRegionOf(blank, partSide.away(), reach, chordTolerance));
 }
 
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
@@ -286,17 +306,62 @@ BgRegion touching(const BgRegion& region, const Segment& move, double tolerance)
   return near;
 }
 
+// The feeds replayed so far, found by where they stand along the cut axis. A feed that runs along
+// an earlier one moved back by t·away, 0 ≤ t ≤ the layer limit (G73's passes: each is the one
+// before it moved by the division step along the relief, G73.PASS.SHIFT), removes a layer no
+// thicker than t: the earlier feed's shadow took everything beyond t over the same cut span, so the
+// material above the feed stands between the two (the envelope, material_model.h). The match is
+// exact to kSameCut; a feed that matches none is measured.
+class EarlierFeeds {
+ public:
+  explicit EarlierFeeds(Point away) : frame_(away) {}
+
+  void add(const Segment& feed) { byCut_[keyOf(feed)].push_back(feed); }
+
+  bool runAbove(const Segment& feed, double limit) const {
+    const auto found = byCut_.find(keyOf(feed));
+    if (found == byCut_.end()) return false;
+    return std::any_of(found->second.begin(), found->second.end(),
+                       [&](const Segment& earlier) { return isTranslateWithin(earlier, feed, limit); });
+  }
+
+ private:
+  static constexpr double kSameCut = 1e-9;  // mm: far below every tolerance, far above rounding
+  using Key = std::pair<long long, long long>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const { return std::hash<long long>()(k.first * 1000003 ^ k.second); }
+  };
+
+  Key keyOf(const Segment& s) const {
+    return {std::llround(frame_.cut(s.from) / (16 * kSameCut)), std::llround(frame_.cut(s.to) / (16 * kSameCut))};
+  }
+
+  // `earlier` is `feed` moved by t·away, 0 ≤ t ≤ limit (its ends, and an arc's centre and sense).
+  bool isTranslateWithin(const Segment& earlier, const Segment& feed, double limit) const {
+    if (earlier.kind != feed.kind) return false;
+    const Point by = earlier.from - feed.from;
+    const auto sameShift = [&](Point other) { return distance(other, by) <= kSameCut; };
+    if (!sameShift(earlier.to - feed.to) || (feed.isArc() && !sameShift(earlier.center - feed.center))) return false;
+    const double t = frame_.depth(by);
+    return std::abs(frame_.cut(by)) <= kSameCut && t >= 0 && t <= limit;
+  }
+
+  DepthFrame frame_;
+  std::unordered_map<Key, std::vector<Segment>, KeyHash> byCut_;
+};
+
 // The layer a feed removes when it may be thicker than Δd (nothing when it provably is not, or
 // when the feed touches no material). The layer is the material the move itself touches, measured
 // above it (its shadow): material the shadow reaches beyond a part overhang (a shape turning back
 // within 5145/5146) is not a layer of this pass. The pieces of material that touch the move are
 // measured whole — thickestAbove counts only what stands above the move within its span — which
 // spares a boolean per feed.
-std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const Segment& move, const CycleSpec& c,
-                                              const JudgeSettings& settings) {
+std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const EarlierFeeds& earlier, const Segment& move,
+                                              const CycleSpec& c, const JudgeSettings& settings) {
   const Point away = model.away();
   const double tolerance = settings.tolerance();
   const double allowed = c.layerLimit() + tolerance;
+  if (earlier.runAbove(move, allowed)) return std::nullopt;
   // Most passes provably remove no more than Δd: the material's top over the move, measured
   // against it as finely as the region below would be, bounds the layer (thickness.h,
   // standsThickerThan) and spares making the material left.
@@ -384,13 +449,17 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   // The moves before the first cycle (PROG.WHOLE: the approach, a facing cut) remove material and
   // are judged for rapids, but they are no roughing pass: their layers are not Δd's business.
   const std::size_t firstPass = firstMoveOfTheCycles(in);
+  EarlierFeeds earlierFeeds(r.away);
   for (std::size_t i = 0; i < r.judgedMoves; ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
       if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(r, model, in, i);
-    } else if (i >= firstPass && !onFinishShape(in, *c, move)) {
-      r.removedThickness[i] = layerBeyondDepthOfCut(model, move, *c, in.settings);
+    } else {
+      if (i >= firstPass && !onFinishShape(in, *c, move)) {
+        r.removedThickness[i] = layerBeyondDepthOfCut(model, earlierFeeds, move, *c, in.settings);
+      }
+      earlierFeeds.add(move);
     }
     model.apply(move, in.path.moves[i].kind);
   }

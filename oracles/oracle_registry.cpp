@@ -18,6 +18,13 @@ std::vector<std::unique_ptr<Oracle>> makeOracles() {
   all.push_back(makePocketEntryOracle());
   all.push_back(makeReturnsToStartOracle());
   all.push_back(makeFeedsOracle());
+  all.push_back(makeSiemensAlarmOracle());
+  all.push_back(makeSiemensRetractOracle());
+  all.push_back(makeSiemensInfeedStepsOracle());
+  all.push_back(makeSiemensInfeedOracle());
+  all.push_back(makeSiemensFeedsOracle());
+  all.push_back(makeSiemensChipBreakingOracle());
+  all.push_back(makeSiemensReturnsOracle());
   return all;
 }
 

@@ -17,6 +17,14 @@ std::unique_ptr<Oracle> makeCompleteOracle();
 std::unique_ptr<Oracle> makeDepthPerPassOracle();
 std::unique_ptr<Oracle> makePassLevelsOracle();
 std::unique_ptr<Oracle> makePocketEntryOracle();
+// SINUMERIK LCYC95 / CYCLE95 (oracles/siemens/; siemens-alarm in alarm_oracle.cpp).
+std::unique_ptr<Oracle> makeSiemensAlarmOracle();
+std::unique_ptr<Oracle> makeSiemensRetractOracle();
+std::unique_ptr<Oracle> makeSiemensInfeedStepsOracle();
+std::unique_ptr<Oracle> makeSiemensInfeedOracle();
+std::unique_ptr<Oracle> makeSiemensFeedsOracle();
+std::unique_ptr<Oracle> makeSiemensChipBreakingOracle();
+std::unique_ptr<Oracle> makeSiemensReturnsOracle();
 
 std::vector<std::unique_ptr<Oracle>> makeOracles();
 

@@ -44,7 +44,7 @@ class PocketEntryOracle : public Oracle {
  public:
   std::string id() const override { return "pocket-entry"; }
   std::vector<std::string> rules() const override { return {"G71.T2.POCKET.EXIT"}; }
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G73; }
+  bool judges(CycleFamily f) const override { return f == CycleFamily::G71 || f == CycleFamily::G72; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const MaterialReplay* r = ctx.replay;
     if (!r || !judgesPocketEntries(*r->cycle, ctx.in.settings)) return;

@@ -17,7 +17,7 @@ class RetractOracle : public Oracle {
  public:
   std::string id() const override { return "retract"; }
   std::vector<std::string> rules() const override { return {"G71.T1.RETRACT45", "G72.STEP4", "G72.RETRACT", "G71.T2.FOLLOW"}; }
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G73; }
+  bool judges(CycleFamily f) const override { return f == CycleFamily::G71 || f == CycleFamily::G72; }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;

@@ -11,7 +11,9 @@
 #include <random>
 
 #include "reference/model/alarms.h"
+#include "reference/siemens/siemens_contour.h"
 #include "reference/siemens/siemens_cycles.h"
+#include "reference/siemens/siemens_parser.h"
 #include "tests/siemens_contours.h"
 
 namespace cyclecert {
@@ -350,6 +352,133 @@ TEST(Cycle95Limits, ATinyDamIsBounded) {
     FAIL() << "no NotSupported";
   } catch (const NotSupported& e) {
     EXPECT_EQ(e.line(), 9);
+  }
+}
+
+}  // namespace
+}  // namespace cyclecert
+
+// --- A level through an element's end (issue 16) ---
+
+namespace cyclecert {
+namespace {
+
+using namespace siemens_test;
+
+// Contour L9 (radius): (0, 10) → (−5, 10); G2 to (−10, 15) CR=5 about (−5, 15), a quarter-circle
+// fillet; the face (−10, 15) → (−10, 20); (−20, 20). MID 5, _VRT 1: start (1, 21); depth 10, levels
+// 15 and 10. Level 15 first meets the profile at (−10, 15), the fillet's end: the pass goes on along
+// the next element, the face, to the previous level (−10, 20) — not along the fillet's circle beyond
+// its end (LCYC95.ROUGH / CYCLE95.ROUGH). Level 10: from the contour's start along the flat and the
+// fillet up to (−10, 15). The axes return X first.
+TEST(Cycle95Rough, ALevelThroughAnArcsEndGoesOnAlongTheNextElement) {
+  SiemensContour c{"L9", "L9.spf", {}};
+  c.segments.push_back(line({0, 10}, {-5, 10}, 2));
+  c.segments.push_back(arc(SegmentKind::ArcCW, {-5, 10}, {-10, 15}, {-5, 15}, 3));
+  c.segments.push_back(line({-10, 15}, {-10, 20}, 4));
+  c.segments.push_back(line({-10, 20}, {-20, 20}, 5));
+  Cycle95Parameters p = params(1);
+  p.infeed = 5;
+  const auto out = planCycle95(callAt({2, 25}, c), p);
+  expectMoves(out.moves, {
+                             {G0, {1, 21}, "approach"},
+                             {G0, {1, 15}, "pass", 1},
+                             {G1, {-10, 15}, "pass", 1},
+                             {G1, {-10, 20}, "pass", 1},
+                             {G0, {-9, 21}, "pass", 1},
+                             {G0, {1, 21}, "pass", 1},
+                             {G0, {1, 10}, "pass", 2},
+                             {G1, {0, 10}, "pass", 2},
+                             {G1, {-5, 10}, "pass", 2},
+                             {G1, {-10, 15}, "pass", 2},
+                             {G0, {-9, 16}, "pass", 2},
+                             {G0, {-9, 21}, "return"},
+                             {G0, {1, 21}, "return"},
+                         });
+  EXPECT_EQ(out.moves[3].shape, SegmentKind::Line);
+  EXPECT_EQ(out.moves[9].shape, SegmentKind::ArcCW);
+  EXPECT_EQ(out.moves[9].center, (std::optional<Point>{Point{-5, 15}}));
+}
+
+// --- An undercut whose rim is an arc's top (issue 16; CYCLE95.UNDERCUT) ---
+//
+// Contour L7 (radius): (0, 10) → (−5, 10) → (−5, 16) → (−10, 16); G3 X28 Z-12 CR=2 to (−12, 14) about
+// (−10, 14): an arc starting at its top (tangent along −z) and falling, a quarter circle; → (−12, 12)
+// → (−15, 12) → (−15, 16) → (−20, 16) → (−20, 20). MID 3, _VRT 1: start (1, 21); depth 10, 4 steps of
+// 2.5: levels 17.5, 15, 12.5, 10. The rim is the arc's start (−10, 16) (CYCLE95.UNDERCUT: "the top of
+// an arc"): pass 2 stops there, not after the falling arc. The pocket: from the level above the rim,
+// 17.5, met again at (−20, 17.5), down to x 12: 5.5 in 2 steps of 2.75 (levels 14.75, 12) at FF2. Level
+// 14.75 meets the arc at z = −10 − √(4 − 0.75²) = −11.854050 and the rising side at (−15, 14.75);
+// level 12 is the pocket's lowest point, (−12, 12) where the falling side ends.
+TEST(Cycle95Undercut, ARimAtAnArcsTopStopsThePasses) {
+  SiemensContour c = polyline("L7", {{0, 10}, {-5, 10}, {-5, 16}, {-10, 16}});
+  c.segments.push_back(arc(SegmentKind::ArcCCW, {-10, 16}, {-12, 14}, {-10, 14}, 5));
+  const std::vector<Point> rest = {{-12, 14}, {-12, 12}, {-15, 12}, {-15, 16}, {-20, 16}, {-20, 20}};
+  for (std::size_t i = 1; i < rest.size(); ++i) c.segments.push_back(line(rest[i - 1], rest[i], int(i) + 5));
+  Cycle95Parameters p = params(1);
+  p.infeed = 3;
+  const double z1475 = -10 - std::sqrt(4 - 0.75 * 0.75);
+  const auto out = planCycle95(callAt({2, 25}, c), p);
+  expectMoves(out.moves, {
+                             {G0, {1, 21}, "approach"},
+                             {G0, {1, 17.5}, "pass", 1},
+                             {G1, {-20, 17.5}, "pass", 1},
+                             {G1, {-20, 20}, "pass", 1},
+                             {G0, {-19, 21}, "pass", 1},
+                             {G0, {1, 21}, "pass", 1},
+                             {G0, {1, 15}, "pass", 2},
+                             {G1, {-5, 15}, "pass", 2},
+                             {G1, {-5, 16}, "pass", 2},
+                             {G1, {-10, 16}, "pass", 2},
+                             {G0, {-9, 17}, "pass", 2},
+                             {G0, {1, 17}, "pass", 2},
+                             {G0, {1, 12.5}, "pass", 3},
+                             {G1, {-5, 12.5}, "pass", 3},
+                             {G1, {-5, 15}, "pass", 3},
+                             {G0, {-4, 16}, "pass", 3},
+                             {G0, {1, 16}, "pass", 3},
+                             {G0, {1, 10}, "pass", 4},
+                             {G1, {0, 10}, "pass", 4},
+                             {G1, {-5, 10}, "pass", 4},
+                             {G1, {-5, 12.5}, "pass", 4},
+                             {G0, {-4, 13.5}, "pass", 4},
+                             {G0, {-4, 21}, "pass", 5},
+                             {G0, {z1475, 21}, "pass", 5},
+                             {G1, {z1475, 14.75}, "pass", 5},
+                             {G1, {-15, 14.75}, "pass", 5},
+                             {G1, {-15, 16}, "pass", 5},
+                             {G1, {-20, 16}, "pass", 5},
+                             {G1, {-20, 17.5}, "pass", 5},
+                             {G0, {-19, 18.5}, "pass", 5},
+                             {G0, {-12, 18.5}, "pass", 6},
+                             {G1, {-12, 12}, "pass", 6},
+                             {G1, {-15, 12}, "pass", 6},
+                             {G1, {-15, 14.75}, "pass", 6},
+                             {G0, {-14, 15.75}, "pass", 6},
+                             {G0, {-14, 21}, "return"},
+                             {G0, {1, 21}, "return"},
+                         });
+}
+
+// --- A contour subprogram without elements (issue 16; LCYC95.ALARMS) ---
+//
+// A subprogram holding only RET, or only its first point, is a program the controller reads; the
+// cycle refuses the contour when called: alarm 10931 at the call's line (4 here), naming the contour.
+TEST(Cycle95Alarms, ASubprogramWithoutElementsIsAlarm10931) {
+  for (const char* text : {"RET\n", "G1 X20 Z0\nRET\n"}) {
+    SCOPED_TRACE(text);
+    SiemensModal modal;
+    modal.motion = 1;
+    const SiemensContour c = readSiemensContour("L6", parseSiemensSubprogram(text, "L6.spf"), modal);
+    EXPECT_TRUE(c.segments.empty());
+    try {
+      planCycle95(callAt({2, 25}, c), params(1));
+      ADD_FAILURE() << "no alarm";
+    } catch (const CycleAlarm& a) {
+      EXPECT_EQ(a.alarm().code, "10931");
+      EXPECT_EQ(a.alarm().line, 4);
+      EXPECT_NE(std::string(a.what()).find("L6"), std::string::npos) << a.what();
+    }
   }
 }
 

@@ -9,7 +9,9 @@
 #include <limits>
 
 #include "reference/model/alarms.h"
+#include "reference/siemens/siemens_contour.h"
 #include "reference/siemens/siemens_cycles.h"
+#include "reference/siemens/siemens_parser.h"
 #include "reference/siemens/siemens_roughing_contour.h"
 #include "reference/siemens/siemens_roughing_steps.h"
 #include "tests/siemens_contours.h"
@@ -557,6 +559,149 @@ TEST(Lcyc95Limits, UnsignedParametersAreTakenBySize) {
   p.retract = -1;
   const auto out = planLcyc95(shaftCall(shaft), p);
   EXPECT_EQ(out.moves[0].to, (Point{1.5, 10.5}));
+}
+
+}  // namespace
+}  // namespace cyclecert
+
+// --- Pieces of the profile without length (issue 16) ---
+
+namespace cyclecert {
+namespace {
+
+using namespace siemens_test;
+
+// Every arc move starts where the move before it ended; none ends where it starts (a controller
+// reads an arc whose ends coincide as a full circle).
+void expectNoArcWithoutLength(const std::vector<Move>& moves, Point position) {
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const Point from = i == 0 ? position : moves[i - 1].to;
+    if (moves[i].shape != SegmentKind::Line) {
+      EXPECT_GT(distance(from, moves[i].to), 1e-6) << "move " << i << " is an arc without length";
+    }
+  }
+}
+
+// Contour S1 (radius): (0, 0) → taper to (−4, 8) → (−10, 8); G2 to (−18, 0) CR=8 about (−18, 8): the
+// start lies 8 towards +z from the centre, so the arc leaves the flat straight down (tangent −x), a
+// quarter circle; → (−25, 0) → (−25, 12) → (−35, 12). R105=1, R106=0, R108=4, R110=1: start (1, 13);
+// depth 12, 3 steps of 4: levels 8, 4, 0. Pass 1 meets the profile at the taper's end (−4, 8) and
+// runs along the flat to (−10, 8), where the G2 turns down (an undercut, left to finishing): the pass
+// ends there with no move on the arc (LCYC95.ROUGH). Pass 2 meets the taper x = −2z at (−2, 4), up to
+// the previous level (−4, 8). Pass 3 starts at the contour's start (0, 0), up the taper to (−2, 4).
+SiemensContour shoulderArcDown() {
+  SiemensContour c{"S1", "S1.spf", {}};
+  c.segments.push_back(line({0, 0}, {-4, 8}, 2));
+  c.segments.push_back(line({-4, 8}, {-10, 8}, 3));
+  c.segments.push_back(arc(SegmentKind::ArcCW, {-10, 8}, {-18, 0}, {-18, 8}, 4));
+  c.segments.push_back(line({-18, 0}, {-25, 0}, 5));
+  c.segments.push_back(line({-25, 0}, {-25, 12}, 6));
+  c.segments.push_back(line({-25, 12}, {-35, 12}, 7));
+  return c;
+}
+
+TEST(Lcyc95Rough, APassStoppingAtAnArcThatLeavesDownwardsMakesNoMoveOnIt) {
+  const SiemensContour contour = shoulderArcDown();
+  const auto out = planLcyc95(callAt({2, 25}, contour), params(1));
+  expectNoArcWithoutLength(out.moves, {2, 25});
+  expectMoves(out.moves, {
+                             {G0, {1, 13}, "approach"},
+                             {G1, {1, 8}, "pass", 1},
+                             {G1, {-4, 8}, "pass", 1},
+                             {G1, {-10, 8}, "pass", 1},
+                             {G0, {-9, 9}, "pass", 1},
+                             {G0, {1, 9}, "pass", 1},
+                             {G1, {1, 4}, "pass", 2},
+                             {G1, {-2, 4}, "pass", 2},
+                             {G1, {-4, 8}, "pass", 2},
+                             {G0, {-3, 9}, "pass", 2},
+                             {G0, {1, 9}, "pass", 2},
+                             {G1, {1, 0}, "pass", 3},
+                             {G1, {0, 0}, "pass", 3},
+                             {G1, {-2, 4}, "pass", 3},
+                             {G0, {-1, 5}, "pass", 3},
+                             {G0, {1, 13}, "return"},
+                         });
+}
+
+// --- Undercuts beginning at an arc's top (issue 16; CYCLE95.UNDERCUT, LCYC95.ROUGH's undercut note) ---
+//
+// Contour D1 (radius): (0, 0); G3 to its apex (−10, 10) about (−10, 0), a quarter circle; G3 down to
+// (−20, 0) about the same centre (the dome split at its apex: the second arc starts at its top);
+// → (−25, 0) → (−25, 12) → (−35, 12). R105=1, R108=4, R110=1: start (1, 13); levels 8, 4, 0. The dome
+// meets level L at z = −10 + √(100 − L²). Pass 1 (8): meets the dome at z −4; G3 to the apex, where the
+// profile turns back down (an undercut, left to finishing): the pass ends there. Pass 2 (4): meets the
+// dome at −10 + √84; G3 up to the previous level (−4, 8). Pass 3 (0): from the contour's start along
+// the dome to (−10 + √84, 4). The pocket behind the apex is named in a warning (its line 3).
+TEST(Lcyc95Rough, ADomeSplitAtItsApexStopsThePassesAtTheApex) {
+  SiemensContour c{"D1", "D1.spf", {}};
+  c.segments.push_back(arc(SegmentKind::ArcCCW, {0, 0}, {-10, 10}, {-10, 0}, 2));
+  c.segments.push_back(arc(SegmentKind::ArcCCW, {-10, 10}, {-20, 0}, {-10, 0}, 3));
+  c.segments.push_back(line({-20, 0}, {-25, 0}, 4));
+  c.segments.push_back(line({-25, 0}, {-25, 12}, 5));
+  c.segments.push_back(line({-25, 12}, {-35, 12}, 6));
+  const double at4 = -10 + std::sqrt(84.0);
+  const auto out = planLcyc95(callAt({2, 25}, c), params(1));
+  expectMoves(out.moves, {
+                             {G0, {1, 13}, "approach"},
+                             {G1, {1, 8}, "pass", 1},
+                             {G1, {-4, 8}, "pass", 1},
+                             {G1, {-10, 10}, "pass", 1},
+                             {G0, {-9, 11}, "pass", 1},
+                             {G0, {1, 11}, "pass", 1},
+                             {G1, {1, 4}, "pass", 2},
+                             {G1, {at4, 4}, "pass", 2},
+                             {G1, {-4, 8}, "pass", 2},
+                             {G0, {-3, 9}, "pass", 2},
+                             {G0, {1, 9}, "pass", 2},
+                             {G1, {1, 0}, "pass", 3},
+                             {G1, {0, 0}, "pass", 3},
+                             {G1, {at4, 4}, "pass", 3},
+                             {G0, {at4 + 1, 5}, "pass", 3},
+                             {G0, {1, 13}, "return"},
+                         });
+  EXPECT_EQ(out.moves[3].shape, SegmentKind::ArcCCW);
+  ASSERT_EQ(out.warnings.size(), 1u);
+  EXPECT_NE(out.warnings[0].message.find("D1.spf line 3"), std::string::npos) << out.warnings[0].message;
+}
+
+// --- An I/K arc whose end lies slightly off its circle (issue 16; SIEMENS.ARC) ---
+//
+// Contour Q2: G1 X0 Z0; G3 X19.99 Z-10 K-10 I0: centre (−10, 0) as programmed, radius 10 at the
+// start; the end (−10, 9.995) lies 9.995 from it, 0.005 off (accepted: at most 0.01). The controller
+// keeps the end and moves the centre onto the chord's perpendicular bisector, 10 (the start's radius)
+// from both ends, on the programmed centre's side: z² + x² = 100 and (z + 10)² + (x − 9.995)² = 100
+// give 20z − 19.99x = −199.900025, so x = −0.005 and z = −√(100 − 0.005²) = −9.99999875. The arc
+// then turns 89.97° (the chord, 14.13860, is shorter than a quarter circle's 14.14214; an end 0.005
+// beyond the circle instead would turn it past 90°: alarm 10931). Then the taper G1 X24 Z-20 to
+// (−20, 12): a corner after the arc. R105=5 R106=0 finishes it (before: alarm 10931, the allowance 0
+// "not fitting" because the profile put the arc's end on the programmed circle, 0.005 from the
+// taper's start). Start (LCYC95.START): (0 + 1, 12 + 1) = (1, 13).
+TEST(Lcyc95Contour, AnIKArcEndingOffItsCircleIsOneCircle) {
+  SiemensModal modal;
+  modal.motion = 1;
+  const SiemensContour c =
+      readSiemensContour("Q2", parseSiemensSubprogram("G1 X0 Z0\nG3 X19.99 Z-10 K-10 I0\nG1 X24 Z-20\nRET\n", "Q2.spf"), modal);
+  ASSERT_EQ(c.segments.size(), 2u);
+  const Segment& a = c.segments[0];
+  EXPECT_NEAR(a.to.z, -10, 1e-12);
+  EXPECT_NEAR(a.to.x, 9.995, 1e-12);
+  EXPECT_NEAR(a.center.z, -9.99999875, 1e-8);
+  EXPECT_NEAR(a.center.x, -0.005, 1e-9);
+  EXPECT_NEAR(distance(a.from, a.center), 10, 1e-9);
+  EXPECT_NEAR(distance(a.to, a.center), 10, 1e-9);
+  const auto out = planLcyc95(callAt({2, 25}, c), params(5));
+  expectMoves(out.moves, {
+                             {G0, {2, 13}, "approach"},
+                             {G0, {1, 13}, "approach"},
+                             {G0, {0, 0}, "finish"},
+                             {G1, {-10, 9.995}, "finish"},
+                             {G1, {-20, 12}, "finish"},
+                             {G0, {1, 13}, "return"},
+                         });
+  ASSERT_TRUE(out.moves[3].center);
+  EXPECT_TRUE(nearlyEqual(*out.moves[3].center, a.center, 1e-12));
+  EXPECT_EQ(alarmCodeOf(callAt({2, 25}, c), params(9)), "no alarm");  // roughing the same contour too
 }
 
 }  // namespace

@@ -11,7 +11,6 @@
 #include "harness/rule_catalogue.h"
 #include "harness/spec_case.h"
 #include "reference/model/alarms.h"
-#include "reference/model/profile.h"
 
 namespace cyclecert {
 namespace {
@@ -20,9 +19,6 @@ class OraclesOnReference : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(OraclesOnReference, FindNothing) {
   const SpecCase c = loadSpecCase(GetParam());
-  if (const Profile* p = findProfile(c.profile); p && p->dialect == Dialect::Siemens) {
-    GTEST_SKIP() << c.id << ": the oracles do not judge SINUMERIK paths yet (issue 16)";
-  }
   const JudgeRequest request = judgeRequestFor(c);
   const JudgeInput in = judgeInputFor(request, planSpecCase(c));
   const std::vector<Finding> findings = judge(in);

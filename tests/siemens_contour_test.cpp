@@ -37,10 +37,14 @@ TEST(SiemensContour, SeedL42IsReadIntoItsElements) {
   const SiemensContour c = contourOf(
       "G1X0Z0\nG3X20.8Z-25.8K-15I0\nG2X31.6Z-39.5CR=8\nG1Z-45\nX35\nX38Z-46.5\nZ-58.5\nX35Z-60\nZ-65\nX39\nX42Z-66.5\nZ-75\nM02\n");
   ASSERT_EQ(c.segments.size(), 11u);
-  // G3: from (0, 0) to (Z -25.8, X 20.8/2 = 10.4); centre = start + (K -15, I 0) = (-15, 0).
+  // G3: from (0, 0) to (Z -25.8, X 20.8/2 = 10.4); programmed centre = start + (K -15, I 0) = (-15, 0),
+  // radius 15; the end lies √(10.8² + 10.4²) = 14.993332 from it, 0.0067
+  // off the circle: accepted, and the centre moved onto the chord's perpendicular bisector 15 from
+  // both ends (SIEMENS.ARC): z² + x² = 225 and (z + 25.8)² + (x − 10.4)² = 225 on the programmed side
+  // give (-14.999997, -0.009608).
   expectSegment(c.segments[0], SegmentKind::ArcCCW, {0, 0}, {-25.8, 10.4}, 2);
-  EXPECT_NEAR(c.segments[0].center.z, -15, 1e-12);
-  EXPECT_NEAR(c.segments[0].center.x, 0, 1e-12);
+  EXPECT_NEAR(c.segments[0].center.z, -14.999997, 1e-6);
+  EXPECT_NEAR(c.segments[0].center.x, -0.009608, 1e-6);
   // G2 CR=8 from (-25.8, 10.4) to (-39.5, 31.6/2 = 15.8): chord d = (-13.7, 5.4), |d| = √216.85 =
   // 14.725828; midpoint (-32.65, 13.1); the centre lies √(8² − 7.362914²) = 3.128498 off the chord,
   // to the right of it for a clockwise arc of at most 180°: along (5.4, 13.7)/|d| → (-31.502771,

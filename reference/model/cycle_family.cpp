@@ -6,7 +6,8 @@ namespace cyclecert {
 
 namespace {
 
-constexpr std::array kFamilies{CycleFamily::G71, CycleFamily::G72, CycleFamily::G73};
+constexpr std::array kFamilies{CycleFamily::G71, CycleFamily::G72, CycleFamily::G73, CycleFamily::Lcyc95,
+                               CycleFamily::Cycle95};
 
 }  // namespace
 
@@ -15,6 +16,8 @@ std::string_view cycleCode(CycleFamily family) {
     case CycleFamily::G71: return "G71";
     case CycleFamily::G72: return "G72";
     case CycleFamily::G73: return "G73";
+    case CycleFamily::Lcyc95: return "LCYC95";
+    case CycleFamily::Cycle95: return "CYCLE95";
   }
   return "G71";
 }
@@ -24,6 +27,17 @@ std::optional<CycleFamily> cycleFamilyOfCode(std::string_view code) {
     if (cycleCode(f) == code) return f;
   }
   return std::nullopt;
+}
+
+bool isSiemensFamily(CycleFamily family) {
+  switch (family) {
+    case CycleFamily::G71:
+    case CycleFamily::G72:
+    case CycleFamily::G73: return false;
+    case CycleFamily::Lcyc95:
+    case CycleFamily::Cycle95: return true;
+  }
+  return false;
 }
 
 }  // namespace cyclecert

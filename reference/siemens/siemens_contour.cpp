@@ -68,11 +68,9 @@ SiemensContour readSiemensContour(const std::string& name, const SiemensBlocks& 
     }
     if (b.endsProgram()) break;
   }
-  if (contour.segments.empty()) {
-    throw ParseError({blocks.file, blocks.blocks.empty() ? 1 : blocks.blocks.back().line, 1},
-                     "at least one element (G1/G2/G3) after the first point of the contour " + name,
-                     blocks.blocks.empty() ? "an empty subprogram" : "none");
-  }
+  // A subprogram without elements (only RET, or a first point and RET) is a program the controller
+  // reads; the cycle refuses the contour when it is called: alarm 10931 (LCYC95.ALARMS, checkContour).
+  if (contour.segments.empty()) return contour;
   // SIEMENS.CORNER: each chamfer or rounding goes between its block's element and the next one.
   std::vector<Segment> withCorners;
   for (std::size_t i = 0; i < contour.segments.size(); ++i) {

@@ -13,7 +13,8 @@
 namespace cyclecert {
 
 // Throws ParseError for a block a contour cannot hold (naming line and column), CycleAlarm 14040
-// for an impossible arc, NotSupported for what cyclecert does not read yet.
+// for an impossible arc, NotSupported for what cyclecert does not read yet. A subprogram without
+// elements gives a contour without segments: the cycle raises alarm 10931 for it (LCYC95.ALARMS).
 SiemensContour readSiemensContour(const std::string& name, const SiemensBlocks& blocks, SiemensModal modal);
 
 }  // namespace cyclecert

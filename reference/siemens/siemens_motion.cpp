@@ -1,5 +1,6 @@
 #include "reference/siemens/siemens_motion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -14,6 +15,26 @@ namespace {
 // The end point's distance from the centre may differ from the start's by this much (mm), as the
 // FANUC reader allows (reference/interpreter/block_motion.cpp).
 constexpr double kArcRadiusTolerance = 0.01;
+
+// SIEMENS.ARC (interpretation, as Siemens' circle end point monitoring describes it): an I/K end
+// point off the circle by no more than kArcRadiusTolerance is taken as programmed correctly, and the
+// centre is moved onto the chord's perpendicular bisector, at the start's radius from both ends, on
+// the programmed centre's side (the chord's midpoint when the chord is longer than the diameter).
+// The arc is then one circle: its end lies on it, so the roughing profile and the finishing path
+// that offset it meet the next element where the program does.
+Point centreWithBothEndsOnTheCircle(Point from, Point to, Point programmed) {
+  if (std::abs(distance(from, programmed) - distance(to, programmed)) <= kGeomEps) return programmed;
+  const double chord = distance(from, to);
+  const Point mid = 0.5 * (from + to);
+  const Point unit = (1.0 / chord) * (to - from);
+  const Point normal{-unit.x, unit.z};  // the chord's direction turned by 90°
+  const double half = chord / 2;
+  const double r = distance(from, programmed);
+  const double h = std::sqrt(std::max(0.0, r * r - half * half));
+  const Point towardsProgrammed = programmed - mid;
+  const double side = towardsProgrammed.z * normal.z + towardsProgrammed.x * normal.x >= 0 ? 1.0 : -1.0;
+  return mid + (side * h) * normal;
+}
 
 }  // namespace
 
@@ -78,6 +99,7 @@ std::optional<Segment> siemensMotionSegment(const SiemensBlock& b, Point from, c
                      "the end point is not on the circle (radius " + shortDecimalText(r0) + " mm at the start, " + shortDecimalText(r1) +
                          " mm at the end)");
   }
+  seg.center = centreWithBothEndsOnTheCircle(seg.from, seg.to, seg.center);
   return seg;
 }
 

@@ -93,13 +93,17 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
 // The contour-parallel cleanup (LCYC95.ROUGH "G1/G2/G3 along contour + allowance to its last
 // point"; CYCLE95.ROUGH "up to the last point of intersection"), interpretation: from the roughing
 // intersection forwards along the profile until it reaches the previous level (the last point the
-// previous pass cut), turns back towards the depth axis (an undercut), or ends.
+// previous pass cut), turns back towards the depth axis (an undercut), or ends. A level that meets
+// the profile at an element's end goes on along the next element; a stop at an element's start
+// leaves nothing on it (no piece without length: an arc's would read as a full circle).
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper) {
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
+    if (hasNoLength(s)) continue;  // the hit is this element's end
     if (const auto stop = cleanupStopOn(s, upper)) {
-      pieces.push_back(portionOf(s, s.from, *stop));
+      const Segment piece = portionOf(s, s.from, *stop);
+      if (!hasNoLength(piece)) pieces.push_back(piece);
       break;
     }
     pieces.push_back(s);
@@ -133,8 +137,10 @@ class StockRemovalPlanner {
     push(std::move(m));
   }
 
+  // A piece of the profile or of the finishing path; one without length is never emitted (an arc
+  // whose ends coincide would be read as a full circle by a controller).
   void emitAlong(const Segment& s, double feed, MovePhase phase, int pass, const std::string& rule) {
-    if (s.length() <= kGeomEps) return;
+    if (hasNoLength(s)) return;
     if (!s.isArc()) return emit(MoveKind::Feed, s.to, feed, phase, pass, {rule});
     Move m;
     m.kind = MoveKind::Feed;

@@ -10,15 +10,22 @@ namespace cyclecert {
 
 namespace {
 
+// Whether `p` on the arc `s` is its circle's top (the highest point: the circle falls on both sides).
+bool isTopOfCircle(const Segment& s, Point p) { return std::abs(p.z - s.center.z) <= 1e-7 && p.x > s.center.x; }
+
 // The top of an arc strictly inside it (where it stops rising and starts falling).
 std::optional<Point> arcTopInside(const Segment& s) {
   if (!s.isArc()) return std::nullopt;
   for (const Point& p : apexesAlong(s)) {
-    const bool top = std::abs(p.z - s.center.z) <= 1e-7 && p.x > s.center.x;
-    if (top && distance(p, s.from) > kGeomEps && distance(p, s.to) > kGeomEps) return p;
+    if (isTopOfCircle(s, p) && distance(p, s.from) > kGeomEps && distance(p, s.to) > kGeomEps) return p;
   }
   return std::nullopt;
 }
+
+// An arc that starts at its top (a dome split at its apex, a rounding leaving a flat downwards): its
+// start tangent runs along the cut axis, and from there on it falls (CYCLE95.UNDERCUT: "the top of
+// an arc").
+bool startsAtItsTop(const Segment& s) { return s.isArc() && isTopOfCircle(s, s.from); }
 
 // The lowest point of a segment (an arc's bottom when inside it).
 Point lowestPointOf(const Segment& s) {
@@ -61,7 +68,7 @@ PocketWalk walkPocket(const std::vector<Segment>& profile, std::size_t i, Point 
   Point end = profile.back().to;
   for (std::size_t j = i; j < profile.size(); ++j) {
     const Segment s = j == i ? portionOf(profile[j], rim, profile[j].to) : profile[j];
-    if (s.length() <= kGeomEps) continue;
+    if (hasNoLength(s)) continue;
     if (const auto back = reachesLevelOn(s, top)) {
       pieces.push_back(portionOf(s, s.from, *back));
       next = j;
@@ -109,9 +116,11 @@ double Undercut::bottom() const {
   return down.empty() ? top : down.back().to.x;
 }
 
+bool hasNoLength(const Segment& portion) { return distance(portion.from, portion.to) <= kGeomEps; }
+
 std::optional<Point> descentStartOn(const Segment& s) {
-  if (s.length() <= kGeomEps) return std::nullopt;
-  if (unitTangentAtStart(s).x < -1e-9) return s.from;
+  if (hasNoLength(s)) return std::nullopt;
+  if (unitTangentAtStart(s).x < -1e-9 || startsAtItsTop(s)) return s.from;
   return arcTopInside(s);
 }
 

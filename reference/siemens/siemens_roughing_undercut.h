@@ -19,8 +19,14 @@ struct Undercut {
 // The part of `s` between two of its points (an arc keeps its centre and direction).
 Segment portionOf(const Segment& s, Point from, Point to);
 
-// Where the profile starts to descend on `s` (towards its end): its start when it leaves downwards,
-// the top of an arc inside it, or nothing.
+// A portion of a profile element whose ends coincide: it has no length. (Segment::length reads an
+// arc whose ends coincide as a full circle; no element of a roughing profile is one, so a portion
+// of it with equal ends is a point: nothing to cut, nothing to emit.)
+bool hasNoLength(const Segment& portion);
+
+// Where the profile starts to descend on `s` (towards its end), CYCLE95.UNDERCUT's rim: its start
+// when it leaves downwards or when `s` is an arc starting at its top (its start tangent along the
+// cut axis, the circle falling away on both sides), the top of an arc inside it, or nothing.
 std::optional<Point> descentStartOn(const Segment& s);
 
 // The undercuts of `profile`, in order along it. `levels` are the roughing levels from the top down

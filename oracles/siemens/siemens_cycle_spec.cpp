@@ -1,0 +1,177 @@
+// The oracles' own derivation of what a SINUMERIK stock-removal call asks, from the values the front
+// end read: written apart from the reference planners (reference/siemens/siemens_roughing_*), so
+// that the two readings catch each other's mistakes.
+#include "oracles/siemens/siemens_cycle_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "reference/model/alarms.h"
+#include "reference/model/offset.h"
+
+namespace cyclecert {
+
+namespace {
+
+constexpr const char* kContourAlarm = "10931";  // LCYC95.ALARMS (interpretation)
+
+int reflections(const SiemensFrame& f) { return (f.transposed ? 1 : 0) + (f.mirrored ? 1 : 0); }
+
+// LCYC95.ROUGH note: the allowance R106 / FAL is contour-parallel on the stock side (offset.h), then
+// FALZ / FALX shift the profile towards the stock (+z, +x in the frame).
+std::vector<Segment> roughingProfileOf(const SiemensCycleSpec& c, const std::vector<Segment>& frameContour) {
+  std::vector<Segment> profile;
+  try {
+    profile = offsetPath(frameContour, std::abs(c.allowance), CompensationSide::Right);
+  } catch (const OffsetError& e) {
+    throw CycleAlarm(kContourAlarm, c.line,
+                     "the finishing allowance does not fit contour " + c.contourName + " at its line " +
+                         std::to_string(e.sourceLine));
+  }
+  const Point plane{std::abs(c.allowanceZ), std::abs(c.allowanceX)};
+  const Point shift = c.frame.transposed ? transposed(plane) : plane;
+  for (Segment& s : profile) s = s.shifted(shift);
+  return profile;
+}
+
+// LCYC95.FINISH note: the contour itself, or with a nose radius the control point's path on the
+// stock side (G42 longitudinal external; each reflection of the frame swaps the side).
+std::vector<Segment> finishPathOf(const SiemensCycleSpec& c) {
+  if (c.tool.noseRadius <= 0) return c.frame.toFrame(c.contour);
+  const CompensationSide side = reflections(c.frame) % 2 == 0 ? CompensationSide::Right : CompensationSide::Left;
+  try {
+    return c.frame.toFrame(compensatedPath(c.contour, c.tool, side));
+  } catch (const OffsetError& e) {
+    throw CycleAlarm(kContourAlarm, c.line,
+                     "the nose radius does not fit contour " + c.contourName + " at its line " + std::to_string(e.sourceLine));
+  }
+}
+
+Extent extentOf(const std::vector<Segment>& path) {
+  Extent all{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const Segment& s : path) {
+    const Extent e = extent(s);
+    all = {std::min(all.zMin, e.zMin), std::max(all.zMax, e.zMax), std::min(all.xMin, e.xMin), std::max(all.xMax, e.xMax)};
+  }
+  return all;
+}
+
+// The profile's points in order where its height can turn: each segment's ends and an arc's apexes.
+struct ProfileVertex {
+  Point at;
+  std::size_t segment = 0;
+};
+std::vector<ProfileVertex> verticesOf(const std::vector<Segment>& profile) {
+  std::vector<ProfileVertex> out;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    if (i == 0) out.push_back({profile[i].from, i});
+    for (Point p : apexesAlong(profile[i])) out.push_back({p, i});
+    out.push_back({profile[i].to, i});
+  }
+  return out;
+}
+
+// Where the profile, rising from vertex `m − 1` to `m`, reaches the height `top`.
+double zWhereRisingTo(const std::vector<Segment>& profile, const std::vector<ProfileVertex>& v, std::size_t m, double top) {
+  const Point a = v[m - 1].at, b = v[m].at;
+  for (Point p : intersectWithLevelX(profile[v[m].segment], top)) {
+    if (p.z <= std::max(a.z, b.z) + kGeomEps && p.z >= std::min(a.z, b.z) - kGeomEps) return p.z;
+  }
+  return b.z;
+}
+
+// CYCLE95.UNDERCUT note: a pocket begins where the profile turns back towards the depth axis (its
+// height falls) and ends where it is back at the lowest main level at or above that rim.
+std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, const SiemensLevels& levels) {
+  std::vector<SiemensUndercut> out;
+  const std::vector<ProfileVertex> v = verticesOf(profile);
+  std::size_t k = 0;
+  while (k + 1 < v.size()) {
+    if (v[k + 1].at.x >= v[k].at.x - kGeomEps) {
+      ++k;
+      continue;
+    }
+    SiemensUndercut u;
+    u.rimZ = v[k].at.z;
+    u.top = levels.levelAtOrAbove(v[k].at.x, kGeomEps);
+    u.bottom = v[k + 1].at.x;
+    std::size_t m = k + 1;
+    while (m < v.size() && v[m].at.x < u.top - kGeomEps) u.bottom = std::min(u.bottom, v[m++].at.x);
+    u.endZ = m < v.size() ? zWhereRisingTo(profile, v, m, u.top) : v.back().at.z;
+    out.push_back(u);
+    k = m;
+  }
+  return out;
+}
+
+}  // namespace
+
+Point SiemensFrame::toFrame(Point p) const {
+  if (transposed) p = cyclecert::transposed(p);
+  if (mirrored) p.x = -p.x;
+  return p;
+}
+
+Point SiemensFrame::toPlane(Point p) const {
+  if (mirrored) p.x = -p.x;
+  if (transposed) p = cyclecert::transposed(p);
+  return p;
+}
+
+std::vector<Segment> SiemensFrame::toFrame(const std::vector<Segment>& plane) const {
+  std::vector<Segment> out;
+  out.reserve(plane.size());
+  const bool turned = reflections(*this) % 2 == 1;
+  for (Segment s : plane) {
+    s.from = toFrame(s.from);
+    s.to = toFrame(s.to);
+    s.center = toFrame(s.center);
+    if (turned) s.kind = reversedKind(s.kind);
+    out.push_back(s);
+  }
+  return out;
+}
+
+SiemensLevels equalLevels(double top, double bottom, double maxInfeed) {
+  SiemensLevels l{top, bottom, 0, 0};
+  const double depth = top - bottom;
+  if (depth <= kGeomEps || !(maxInfeed > 0)) return l;
+  l.count = std::max(1.0, std::ceil(depth / maxInfeed - 1e-9));
+  l.step = depth / l.count;
+  return l;
+}
+
+double SiemensLevels::levelAtOrAbove(double x, double tol) const {
+  if (count <= 0 || x >= top - tol) return top;
+  const double k = std::floor((top - x) / step + tol / step);
+  return level(k);
+}
+
+bool SiemensLevels::isLevel(double x, double tol) const {
+  if (count <= 0 || x > top - step + tol || x < bottom - tol) return false;
+  const double k = std::round((top - x) / step);
+  return std::abs(level(k) - x) <= tol;
+}
+
+void describeSiemensCycle(SiemensCycleSpec& c) {
+  c.frame = {c.type.cut == SiemensCut::Face, c.type.side == SiemensSide::Internal};
+  const std::vector<Segment> frameContour = c.frame.toFrame(c.contour);
+  c.profile = roughingProfileOf(c, frameContour);
+  c.finishPath = finishPathOf(c);
+  const Extent e = extentOf(c.profile);
+  const double clearance = std::abs(c.retract);
+  c.start = {e.zMax + clearance, e.xMax + clearance};
+  c.levels = equalLevels(e.xMax, e.xMin, c.maxInfeed);
+  c.undercuts = undercutsOf(c.profile, c.levels);
+}
+
+bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol) {
+  const double zLow = std::min(from.z, to.z), zHigh = std::max(from.z, to.z), xLow = std::min(from.x, to.x);
+  return std::any_of(c.undercuts.begin(), c.undercuts.end(), [&](const SiemensUndercut& u) {
+    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && xLow < u.top - tol;
+  });
+}
+
+}  // namespace cyclecert

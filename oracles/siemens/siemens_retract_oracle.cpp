@@ -1,0 +1,50 @@
+// siemens-retract: after each roughing cut the tool retracts with G0 by R110 / _VRT in EACH axis,
+// away from the contour (LCYC95.ROUGH: "在每个坐标轴方向按参数 R110 … 退刀"; CYCLE95.ROUGH, and each
+// undercut pass, CYCLE95.UNDERCUT): in the frame the move after the cut's last feed is (+v, +v).
+// A 45° retract of length v (v/√2 per axis) or a retract along one axis is a finding.
+#include <cmath>
+
+#include "oracles/oracles.h"
+#include "oracles/siemens/siemens_moves.h"
+#include "reference/model/number_text.h"
+
+namespace cyclecert {
+
+namespace {
+
+class SiemensRetractOracle : public Oracle {
+ public:
+  std::string id() const override { return "siemens-retract"; }
+  std::vector<std::string> rules() const override { return {"LCYC95.ROUGH", "CYCLE95.ROUGH", "CYCLE95.UNDERCUT"}; }
+  bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
+
+  void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
+    const std::optional<SiemensCycleMoves> m = siemensCycleMoves(ctx.in);
+    if (!m) return;
+    const double v = std::abs(m->c.retract);
+    if (v <= m->tol) return;  // no retract to make (a zero-length move is no move)
+    const std::string name = m->c.isCycle95() ? "_VRT" : "R110";
+    for (const FeedRun& cut : m->roughing) {
+      const std::size_t i = cut.end;
+      if (i >= m->range.end) {
+        out.push_back(m->report(*this, cut.end - 1, "the roughing cut ending here is not followed by the retract by " +
+                                                        name + "=" + shortDecimalText(v) + " in each axis"));
+        continue;
+      }
+      const Point d = m->to(i) - m->from(i);
+      if (m->isRapid(i) && std::abs(d.z - v) <= m->tol && std::abs(d.x - v) <= m->tol) continue;
+      const Point plane = ctx.in.path.moves[i].to - ctx.in.path.from(i);
+      out.push_back(m->report(*this, i, std::string("after the roughing cut (moves ") + std::to_string(cut.begin) + "…" +
+                                            std::to_string(cut.end - 1) + ") the tool moves " +
+                                            (m->isRapid(i) ? "G0" : "in feed") + " by Z" + shortDecimalText(plane.z) +
+                                            " X(radius)" + shortDecimalText(plane.x) + "; the cycle retracts with G0 by " +
+                                            name + "=" + shortDecimalText(v) + " in each axis, away from the contour"));
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Oracle> makeSiemensRetractOracle() { return std::make_unique<SiemensRetractOracle>(); }
+
+}  // namespace cyclecert

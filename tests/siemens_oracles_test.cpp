@@ -1,0 +1,323 @@
+// The SINUMERIK oracles (oracles/siemens/) on hand-built paths: each passes a path that follows the
+// rules and reports a path that breaks its rule — a 45° retract, R108 as the step, an undercut at FF1,
+// a missing return, a straight LCYC95 infeed, a G1 CYCLE95 infeed, an uninterrupted cut with DAM —
+// and the alarm oracle expects the alarm the rules demand. Every expected move is written here by
+// hand from the rules (x radius; the contour L1 is (z0,x10) → (−10,10) → (−10,16) → (−20,16) →
+// (−20,20), so the start is (z1,x21) and the depth 10 divides into 4 steps of 2.5 for R108 = 3).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "harness/judging.h"
+#include "harness/reference_plan.h"
+#include "harness/rule_catalogue.h"
+#include "harness/spec_case.h"
+#include "oracles/judgement.h"
+
+namespace cyclecert {
+namespace {
+
+const char* kL1 = "G1 X20 Z0\nZ-10\nX32\nZ-20\nX40\nRET\n";
+
+std::string lcyc95Program(const std::string& r105, const std::string& r109 = "0") {
+  return "G0 X50 Z2\n_CNAME=\"L1\"\nR105=" + r105 + " R106=0 R108=3 R109=" + r109 + "\nR110=1 R111=0.3 R112=0.1\nLCYC95\nM02\n";
+}
+
+std::string cycle95Program(const std::string& vari, const std::string& dam = "0") {
+  return "G0 X50 Z2\nCYCLE95(\"L1\", 3, 0, 0, 0, 0.3, 0.15, 0.1, " + vari + ", 0, " + dam + ", 1)\nM02\n";
+}
+
+// A toolpath written move by move (plane coordinates z, x radius).
+struct PathBuilder {
+  Toolpath path;
+  explicit PathBuilder(Point start) { path.start = start; }
+  PathBuilder& rapid(double z, double x) {
+    Move m;
+    m.kind = MoveKind::Rapid;
+    m.to = {z, x};
+    path.moves.push_back(m);
+    return *this;
+  }
+  PathBuilder& feed(double z, double x, double f) {
+    Move m;
+    m.kind = MoveKind::Feed;
+    m.to = {z, x};
+    m.feed = f;
+    path.moves.push_back(m);
+    return *this;
+  }
+};
+
+std::vector<Finding> judged(const std::string& program, const std::string& profile, const Toolpath& path,
+                            const std::string& subprogram = kL1, const std::string& name = "L1") {
+  JudgeRequest request;
+  request.program.programText = program;
+  request.program.file = "test.mpf";
+  request.program.profile = profile;
+  request.program.subprograms.push_back({name, subprogram, "test#/subprograms/" + name});
+  return judge(judgeInputFor(request, path));
+}
+
+std::vector<Finding> of(const std::vector<Finding>& all, const std::string& oracle) {
+  std::vector<Finding> out;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(out), [&](const Finding& f) { return f.oracle == oracle; });
+  return out;
+}
+
+// LCYC95 R105=1, R109=0: G0 to S; per level a G1 infeed at R111 from the retract height, the cut to
+// the roughing intersection, along the profile up to the previous level, G0 retract (+1, +1), G0 back
+// to z1; after the last pass G0 to S in both axes.
+PathBuilder lcyc95Roughing() {
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.feed(1, 17.5, 0.3).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
+  p.feed(1, 15, 0.3).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
+  p.feed(1, 12.5, 0.3).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
+  p.feed(1, 10, 0.3).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
+  p.rapid(1, 21);
+  return p;
+}
+
+TEST(SiemensOracles, Lcyc95RoughingByTheRulesPasses) {
+  const std::vector<Finding> f = judged(lcyc95Program("1"), "sinumerik-802s", lcyc95Roughing().path);
+  EXPECT_TRUE(f.empty()) << findingsText(f);
+}
+
+TEST(SiemensOracles, RetractAt45DegreesIsReported) {
+  // Pass 1 retracts 1 mm at 45° (0.707107 per axis) instead of 1 mm in each axis.
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.feed(1, 17.5, 0.3).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-20 + std::sqrt(0.5), 20 + std::sqrt(0.5)).rapid(1, 21);
+  p.feed(1, 15, 0.3).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
+  p.feed(1, 12.5, 0.3).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
+  p.feed(1, 10, 0.3).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
+  p.rapid(1, 21);
+  const std::vector<Finding> f = of(judged(lcyc95Program("1"), "sinumerik-802s", p.path), "siemens-retract");
+  ASSERT_EQ(f.size(), 1u) << findingsText(f);
+  EXPECT_EQ(f[0].move, 4u);
+  EXPECT_TRUE(f[0].witness.segment.has_value());
+  EXPECT_NE(f[0].message.find("R110=1"), std::string::npos) << f[0].message;
+}
+
+TEST(SiemensOracles, StepOfR108WithAShortLastStepIsReported) {
+  // Levels 17, 14, 11 and a last step of 1 to 10, instead of four equal steps of 2.5.
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.feed(1, 17, 0.3).feed(-20, 17, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
+  p.feed(1, 14, 0.3).feed(-10, 14, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17, 0.3).rapid(-19, 18).rapid(1, 18);
+  p.feed(1, 11, 0.3).feed(-10, 11, 0.3).feed(-10, 14, 0.3).rapid(-9, 15).rapid(1, 15);
+  p.feed(1, 10, 0.3).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 11, 0.3).rapid(-9, 12);
+  p.rapid(1, 21);
+  const std::vector<Finding> all = judged(lcyc95Program("1"), "sinumerik-802s", p.path);
+  const std::vector<Finding> f = of(all, "siemens-infeed-steps");
+  ASSERT_EQ(f.size(), 3u) << findingsText(all);
+  EXPECT_EQ(f[0].move, 2u);   // the cut at 17
+  EXPECT_EQ(f[1].move, 7u);   // at 14
+  EXPECT_EQ(f[2].move, 14u);  // at 11
+  EXPECT_NE(f[0].message.find("4 equal steps of 2.5"), std::string::npos) << f[0].message;
+  EXPECT_TRUE(of(all, "siemens-retract").empty()) << findingsText(all);
+}
+
+TEST(SiemensOracles, Lcyc95MissingReturnToTheStartIsReported) {
+  PathBuilder p = lcyc95Roughing();
+  p.path.moves.pop_back();  // the G0 to S after the last retract
+  EXPECT_EQ(of(judged(lcyc95Program("1"), "sinumerik-802s", p.path), "siemens-returns").size(), 1u);
+}
+
+TEST(SiemensOracles, Lcyc95ReturnAxisByAxisIsReported) {
+  PathBuilder p = lcyc95Roughing();
+  p.path.moves.pop_back();
+  p.rapid(-9, 21).rapid(1, 21);  // LCYC95 returns in both axes together
+  EXPECT_EQ(of(judged(lcyc95Program("1"), "sinumerik-802s", p.path), "siemens-returns").size(), 1u);
+}
+
+TEST(SiemensOracles, Lcyc95RoughingFeedOtherThanR111IsReported) {
+  PathBuilder p = lcyc95Roughing();
+  p.path.moves[2].feed = 0.1;  // the cut of pass 1 at R112
+  const std::vector<Finding> f = of(judged(lcyc95Program("1"), "sinumerik-802s", p.path), "siemens-feeds");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].move, 2u);
+}
+
+TEST(SiemensOracles, Lcyc95InfeedAngle) {
+  // R109=7: an infeed of depth d runs d·tan 7° along −z: from (1,21) to 17.5 ends at z 1 − 3.5·tan 7°.
+  const double t = std::tan(7 * 3.14159265358979323846 / 180);
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.feed(1 - 3.5 * t, 17.5, 0.3).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
+  p.feed(1 - 6 * t, 15, 0.3).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
+  p.feed(1 - 6 * t, 12.5, 0.3).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
+  p.feed(1 - 6 * t, 10, 0.3).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
+  p.rapid(1, 21);
+  const std::vector<Finding> good = judged(lcyc95Program("1", "7"), "sinumerik-802s", p.path);
+  EXPECT_TRUE(good.empty()) << findingsText(good);
+  // The same path for R109=0 infeeds at an angle; the straight path for R109=7 does not.
+  EXPECT_EQ(of(judged(lcyc95Program("1", "0"), "sinumerik-802s", p.path), "siemens-infeed").size(), 4u);
+  EXPECT_EQ(of(judged(lcyc95Program("1", "7"), "sinumerik-802s", lcyc95Roughing().path), "siemens-infeed").size(), 4u);
+}
+
+// LCYC95 R105=9 (complete): the passes, no return after the last retract; the finishing approach
+// axis by axis (x first), G0 to the contour start (0,10), the contour at R112, G0 back to S.
+PathBuilder lcyc95Complete() {
+  PathBuilder p = lcyc95Roughing();
+  p.path.moves.pop_back();
+  p.rapid(-9, 21).rapid(1, 21).rapid(0, 10);
+  p.feed(-10, 10, 0.1).feed(-10, 16, 0.1).feed(-20, 16, 0.1).feed(-20, 20, 0.1);
+  p.rapid(1, 21);
+  return p;
+}
+
+TEST(SiemensOracles, Lcyc95CompleteByTheRulesPasses) {
+  const std::vector<Finding> f = judged(lcyc95Program("9"), "sinumerik-802s", lcyc95Complete().path);
+  EXPECT_TRUE(f.empty()) << findingsText(f);
+}
+
+TEST(SiemensOracles, CompleteMachiningReturningAfterRoughingIsReported) {
+  // The roughing-only return (both axes to S) before the finishing approach.
+  PathBuilder p = lcyc95Roughing();
+  p.rapid(0, 10).feed(-10, 10, 0.1).feed(-10, 16, 0.1).feed(-20, 16, 0.1).feed(-20, 20, 0.1).rapid(1, 21);
+  EXPECT_EQ(of(judged(lcyc95Program("9"), "sinumerik-802s", p.path), "siemens-returns").size(), 1u);
+}
+
+TEST(SiemensOracles, FinishingAtR111AndWithoutTheReturnIsReported) {
+  PathBuilder p = lcyc95Complete();
+  p.path.moves[p.path.moves.size() - 3].feed = 0.3;
+  p.path.moves.pop_back();
+  const std::vector<Finding> all = judged(lcyc95Program("9"), "sinumerik-802s", p.path);
+  EXPECT_EQ(of(all, "siemens-feeds").size(), 1u) << findingsText(all);
+  EXPECT_EQ(of(all, "siemens-returns").size(), 1u) << findingsText(all);
+}
+
+// CYCLE95 VARI 1: G0 infeeds, the axes return one after the other (x first).
+PathBuilder cycle95Roughing() {
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.rapid(1, 17.5).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
+  p.rapid(1, 15).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
+  p.rapid(1, 12.5).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
+  p.rapid(1, 10).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
+  p.rapid(-9, 21).rapid(1, 21);
+  return p;
+}
+
+TEST(SiemensOracles, Cycle95RoughingByTheRulesPasses) {
+  const std::vector<Finding> f = judged(cycle95Program("1"), "sinumerik-802d", cycle95Roughing().path);
+  EXPECT_TRUE(f.empty()) << findingsText(f);
+}
+
+TEST(SiemensOracles, Cycle95FeedInfeedAndBothAxesReturnAreReported) {
+  PathBuilder p = cycle95Roughing();
+  p.path.moves[1].kind = MoveKind::Feed;  // the first infeed with G1
+  p.path.moves[1].feed = 0.3;
+  p.path.moves.pop_back();
+  p.path.moves.pop_back();
+  p.rapid(1, 21);  // both axes at once
+  const std::vector<Finding> all = judged(cycle95Program("1"), "sinumerik-802d", p.path);
+  EXPECT_EQ(of(all, "siemens-infeed").size(), 1u) << findingsText(all);
+  EXPECT_EQ(of(all, "siemens-returns").size(), 1u) << findingsText(all);
+}
+
+TEST(SiemensOracles, Cycle95DamInterruptsTheCutsAlongTheLevels) {
+  // DAM 8: pass 1's cut from z1 to z−20 in pieces of 8 (z−7, −15, −20); pass 2's (11 long) at z−7.
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.rapid(1, 17.5).feed(-7, 17.5, 0.3).feed(-15, 17.5, 0.3).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
+  p.rapid(1, 15).feed(-7, 15, 0.3).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
+  p.rapid(1, 12.5).feed(-7, 12.5, 0.3).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
+  p.rapid(1, 10).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
+  p.rapid(-9, 21).rapid(1, 21);
+  const std::vector<Finding> good = judged(cycle95Program("1", "8"), "sinumerik-802d", p.path);
+  EXPECT_TRUE(good.empty()) << findingsText(good);
+  // Without interruptions: pass 1 (21 long), 2 and 3 (11 long) are reported.
+  EXPECT_EQ(of(judged(cycle95Program("1", "8"), "sinumerik-802d", cycle95Roughing().path), "siemens-chip-breaking").size(), 3u);
+}
+
+// CYCLE95 with a groove (z−10…−15, down to x12), MID 3, FF1 0.3, FF2 0.15: the axis-parallel passes
+// stop at the rim (−10,16); the pocket below the level 17.5 in its own two steps (14.75, 12) at FF2.
+const char* kGroove = "G1 X20 Z0\nZ-5\nX32\nZ-10\nX24\nZ-15\nX32\nZ-20\nX40\nRET\n";
+
+PathBuilder grooveRoughing(double undercutFeed) {
+  const double u = undercutFeed;
+  PathBuilder p({2, 25});
+  p.rapid(1, 21);
+  p.rapid(1, 17.5).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
+  p.rapid(1, 15).feed(-5, 15, 0.3).feed(-5, 16, 0.3).feed(-10, 16, 0.3).rapid(-9, 17).rapid(1, 17);
+  p.rapid(1, 12.5).feed(-5, 12.5, 0.3).feed(-5, 15, 0.3).rapid(-4, 16).rapid(1, 16);
+  p.rapid(1, 10).feed(0, 10, 0.3).feed(-5, 10, 0.3).feed(-5, 12.5, 0.3).rapid(-4, 13.5);
+  p.rapid(-4, 21);
+  p.rapid(-10, 21).feed(-10, 14.75, u).feed(-15, 14.75, u).feed(-15, 16, u).feed(-20, 16, u).feed(-20, 17.5, u).rapid(-19, 18.5);
+  p.rapid(-10, 18.5).feed(-10, 12, u).feed(-15, 12, u).feed(-15, 14.75, u).rapid(-14, 15.75);
+  p.rapid(-14, 21).rapid(1, 21);
+  return p;
+}
+
+std::string grooveProgram() { return "G0 X50 Z2\nCYCLE95(\"L3\", 3, 0, 0, 0, 0.3, 0.15, 0.1, 1, 0, 0, 1)\nM02\n"; }
+
+TEST(SiemensOracles, Cycle95UndercutAtFF2Passes) {
+  const std::vector<Finding> f = judged(grooveProgram(), "sinumerik-802d", grooveRoughing(0.15).path, kGroove, "L3");
+  EXPECT_TRUE(f.empty()) << findingsText(f);
+}
+
+TEST(SiemensOracles, Cycle95UndercutAtFF1IsReported) {
+  const std::vector<Finding> all = judged(grooveProgram(), "sinumerik-802d", grooveRoughing(0.3).path, kGroove, "L3");
+  const std::vector<Finding> f = of(all, "siemens-feeds");
+  ASSERT_EQ(f.size(), 8u) << findingsText(all);  // the 8 feeds in the pocket
+  EXPECT_EQ(f[0].move, 24u);
+  EXPECT_NE(f[0].message.find("FF2=0.15"), std::string::npos) << f[0].message;
+}
+
+TEST(SiemensOracles, AlarmsTheRulesDemandAreExpected) {
+  // 61002: R105 outside 1…12; 61610: R108 = 0 when roughing; 10931: the contour against the
+  // finishing direction. An engine that plans instead is reported, naming the code.
+  const struct {
+    std::string program, subprogram, code;
+  } cases[] = {
+      {lcyc95Program("13"), kL1, "61002"},
+      {"G0 X50 Z2\n_CNAME=\"L1\"\nR105=1 R106=0 R108=0 R109=0\nR110=1 R111=0.3 R112=0.1\nLCYC95\nM02\n", kL1, "61610"},
+      {lcyc95Program("1"), "G1 X40 Z-20\nX32\nZ-10\nX20\nZ0\nRET\n", "10931"},
+  };
+  for (const auto& c : cases) {
+    const std::vector<Finding> f = of(judged(c.program, "sinumerik-802s", Toolpath{}, c.subprogram), "siemens-alarm");
+    ASSERT_EQ(f.size(), 1u) << c.code;
+    EXPECT_NE(f[0].message.find(c.code), std::string::npos) << f[0].message;
+  }
+  // … and the good program alarmed is reported too.
+  Toolpath alarmed;
+  alarmed.alarm = Alarm{"61610", "no infeed", 5, ""};
+  EXPECT_EQ(of(judged(lcyc95Program("1"), "sinumerik-802s", alarmed), "siemens-alarm").size(), 1u);
+}
+
+// The frame: in every machining type's spec case, the first retract shortened to a 45° retract of
+// R110 / _VRT (its vector scaled by 1/√2) is reported — longitudinal, face and internal, LCYC95 and
+// CYCLE95.
+TEST(SiemensOracles, RetractAt45DegreesIsReportedInEveryFrame) {
+  for (const std::string id : {"sinumerik-802s/lcyc95/r105-1-rough-step-shaft", "sinumerik-802s/lcyc95/r105-2-face-rough",
+                               "sinumerik-802s/lcyc95/r105-3-internal-rough", "sinumerik-802d/cycle95/vari-1-falz-falx"}) {
+    const SpecCase c = loadSpecCase(defaultSpecsDir() + "/cases/" + id + ".json");
+    Toolpath path = planSpecCase(c);
+    std::size_t retract = 1;
+    while (retract < path.moves.size() &&
+           !(path.moves[retract - 1].kind == MoveKind::Feed && path.moves[retract].kind == MoveKind::Rapid)) {
+      ++retract;
+    }
+    ASSERT_LT(retract, path.moves.size()) << id;
+    const Point from = path.from(retract);
+    path.moves[retract].to = from + std::sqrt(0.5) * (path.moves[retract].to - from);
+    const std::vector<Finding> f = of(judge(judgeInputFor(judgeRequestFor(c), path)), "siemens-retract");
+    ASSERT_EQ(f.size(), 1u) << id;
+    EXPECT_EQ(f[0].move, retract) << id;
+  }
+}
+
+TEST(SiemensOracles, FanucOraclesDoNotJudgeSiemensPrograms) {
+  // Only the SINUMERIK oracles run on a SINUMERIK program.
+  const std::vector<Finding> f = judged(lcyc95Program("1"), "sinumerik-802s", PathBuilder({2, 25}).path);
+  ASSERT_FALSE(f.empty());
+  for (const Finding& x : f) EXPECT_EQ(x.oracle.rfind("siemens-", 0), 0u) << x.oracle;
+}
+
+}  // namespace
+}  // namespace cyclecert
