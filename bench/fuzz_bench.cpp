@@ -118,6 +118,29 @@ BENCHMARK(BM_FuzzG73CaseReference)->Unit(benchmark::kMicrosecond);
 void BM_FuzzG71CaseReferenceGenerated(benchmark::State& state) { judgeGeneratedCases(state, kDefaultFuzzCycles); }
 BENCHMARK(BM_FuzzG71CaseReferenceGenerated)->Unit(benchmark::kMicrosecond);
 
+// `fuzz --engine reference --cycles siemens` end to end: each SINUMERIK case (LCYC95 or CYCLE95, a
+// main program and its contour subprogram) generated, planned and judged — judgeFuzzCase, so once the
+// Siemens oracles judge these cases they are in this figure with nothing changed here (until then the
+// judge refuses the case after the reference planned it). Report it as a ratio to
+// BM_FuzzG71CaseReferenceGenerated of the same run; target ≥ 10,000/s (bench/README.md).
+void BM_FuzzSiemensCaseReference(benchmark::State& state) {
+  judgeGeneratedCases(state, {FuzzCycle::Lcyc95, FuzzCycle::Cycle95});
+}
+BENCHMARK(BM_FuzzSiemensCaseReference)->Unit(benchmark::kMicrosecond);
+
+// The SINUMERIK cases generated and planned only (no judging): what the reference's part costs.
+void BM_FuzzSiemensCasePlanOnly(benchmark::State& state) {
+  const auto engine = makeEngine("reference");
+  long i = 0;
+  for (auto _ : state) {
+    const std::uint64_t seed = fuzzCaseSeed(kSeed, i++);
+    const SpecCase c = fuzzSpecCase(generateFuzzCase(seed, kDefaultCycleFormats, {FuzzCycle::Lcyc95, FuzzCycle::Cycle95}), "bench");
+    benchmark::DoNotOptimize(engine->run(c));
+  }
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzSiemensCasePlanOnly)->Unit(benchmark::kMicrosecond);
+
 // LinuxCNC's rs274 on the same cases, one process per case and batched (when rs274 was fetched:
 // `make rs274`; otherwise the benchmark says so and is skipped).
 void linuxCncPlans(benchmark::State& state, bool batched) {

@@ -68,8 +68,17 @@ Options:
   --cycles LIST       the cycles drawn, comma-separated (default g71,g72, which keeps the cases of a
                       seed as they were): g71, g72, g73 (pattern repeating: shapes that need not be
                       monotone, d, Δi, Δk, the four quadrants, G70 after it, and one at a time R0,
-                      R2.5, no Q or block ns in G02 with the alarm expected; two-block format), or
-                      all. With g73 and g71/g72, one case in three (two) is G73
+                      R2.5, no Q or block ns in G02 with the alarm expected; two-block format),
+                      lcyc95 (SINUMERIK 802S/C: _CNAME, R105…R112, LCYC95) and cycle95 (802D:
+                      CYCLE95(NPP, MID, FALZ, FALX, FAL, FF1, FF2, FF3, VARI, DT, DAM, _VRT)) — a main
+                      program and its contour subprogram L1 (lines, quarter and shallow arcs with CR=
+                      or I/K, CHF=/CHR=/RND= corners, for cycle95 undercuts), machining types 1…12,
+                      and one at a time a type outside 1…12, no infeed depth, the contour against the
+                      finishing direction or a half circle with the alarm expected —; all (every
+                      FANUC family: g71,g72,g73, as before the Siemens cycles, so a seed keeps its
+                      cases) and siemens (lcyc95,cycle95); all,siemens for every cycle. With g73 and
+                      g71/g72, one case in three (two) is G73; each family is drawn in proportion
+                      to the cycles asked of it
 Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,
 another campaign in OUT, or a result not written.
 )HELP";

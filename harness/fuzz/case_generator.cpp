@@ -7,7 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "harness/fuzz/generator_parts.h"
 #include "harness/fuzz/named_choices.h"
+#include "harness/fuzz/siemens_case_generator.h"
 #include "oracles/metamorphic/g_code_writing.h"
 #include "reference/interpreter/g_codes.h"
 
@@ -24,7 +26,23 @@ constexpr Named<CycleFormat> kFormatNames[] = {
     {CycleFormat::FanucTwoBlocks, "two-block"}, {CycleFormat::Series10OneBlock, "fs10"},
     {CycleFormat::HuazhongOneBlock, "hnc"},     {CycleFormat::HaasOneBlock, "haas"},
     {CycleFormat::SystemB, "gsys-b"},           {CycleFormat::SystemC, "gsys-c"}};
-constexpr Named<FuzzCycle> kCycleNames[] = {{FuzzCycle::G71, "g71"}, {FuzzCycle::G72, "g72"}, {FuzzCycle::G73, "g73"}};
+constexpr Named<FuzzCycle> kCycleNames[] = {{FuzzCycle::G71, "g71"},
+                                            {FuzzCycle::G72, "g72"},
+                                            {FuzzCycle::G73, "g73"},
+                                            {FuzzCycle::Lcyc95, "lcyc95"},
+                                            {FuzzCycle::Cycle95, "cycle95"}};
+// The group names --cycles takes besides the cycles' own: "all" is every FANUC family (what it
+// meant before the Siemens cycles were drawn, so that `--cycles all` keeps a seed's cases),
+// "siemens" both SINUMERIK cycles.
+struct CycleGroup {
+  std::string_view name;
+  std::vector<FuzzCycle> cycles;
+};
+const std::vector<CycleGroup>& cycleGroups() {
+  static const std::vector<CycleGroup> groups = {{"all", {FuzzCycle::G71, FuzzCycle::G72, FuzzCycle::G73}},
+                                                 {"siemens", {FuzzCycle::Lcyc95, FuzzCycle::Cycle95}}};
+  return groups;
+}
 
 template <typename T, std::size_t N>
 std::string knownNames(const Named<T> (&names)[N]) {
@@ -78,7 +96,32 @@ CycleFormats parseCycleFormats(std::string_view text) { return parseNames(kForma
 std::string cycleFormatsText(const CycleFormats& formats) { return namesText(kFormatNames, formats); }
 
 std::string_view fuzzCycleName(FuzzCycle c) { return nameOf(kCycleNames, c); }
-FuzzCycles parseFuzzCycles(std::string_view text) { return parseNames(kCycleNames, text, "cycle"); }
+FuzzCycles parseFuzzCycles(std::string_view text) {
+  FuzzCycles cycles;
+  const auto add = [&](FuzzCycle c) {
+    if (std::find(cycles.begin(), cycles.end(), c) == cycles.end()) cycles.push_back(c);
+  };
+  std::size_t from = 0;
+  while (from <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    const std::string_view word = text.substr(from, comma - from);
+    const auto group = std::find_if(cycleGroups().begin(), cycleGroups().end(), [&](const CycleGroup& g) { return g.name == word; });
+    if (group != cycleGroups().end()) {
+      for (FuzzCycle c : group->cycles) add(c);
+    } else {
+      // One name: the names' parser says what it knows when it does not know the word.
+      try {
+        add(parseNames(kCycleNames, word, "cycle").front());
+      } catch (const std::invalid_argument&) {
+        throw std::invalid_argument("unknown cycle '" + std::string(word) + "' in '" + std::string(text) +
+                                    "': give a comma-separated list of lcyc95, cycle95 or siemens (both SINUMERIK "
+                                    "cycles), g71, g72, g73 or all (every FANUC family)");
+      }
+    }
+    from = comma + 1;
+  }
+  return cycles;
+}
 std::string fuzzCyclesText(const FuzzCycles& cycles) { return namesText(kCycleNames, cycles); }
 
 namespace {
@@ -114,32 +157,6 @@ rc::Gen<FuzzSegment> genSegment() {
       },
       rc::gen::weightedElement<int>({{6, 0}, {3, 1}, {3, 2}, {3, 3}, {3, 4}, {3, 5}, {1, 6}}),
       rc::gen::inRange(10, 600), rc::gen::inRange(10, 300));
-}
-
-// RapidCheck's container of `element`s (as many as it draws, 0 … size, and the same elements) cut
-// to the first `most`: a case uses no more, and drawing the rest (up to 100) was a third of the time
-// spent generating. Shrinks as RapidCheck's containers do: elements removed, then each shrunk.
-template <typename T>
-rc::Gen<std::vector<T>> firstOf(std::size_t most, rc::Gen<T> element) {
-  using Elements = std::vector<rc::Shrinkable<T>>;
-  return [=](const rc::Random& random, int size) {
-    rc::Random r = random;
-    const std::size_t drawn = static_cast<std::size_t>(r.split().next() % static_cast<std::uint64_t>(size + 1));
-    Elements elements;
-    for (std::size_t i = 0; i < std::min(drawn, most); ++i) elements.push_back(element(r.split(), size));
-    return rc::shrinkable::map(
-        rc::shrinkable::shrinkRecur(std::move(elements),
-                                    [](const Elements& e) {
-                                      return rc::seq::concat(
-                                          rc::shrink::removeChunks(e),
-                                          rc::shrink::eachElement(e, [](const rc::Shrinkable<T>& s) { return s.shrinks(); }));
-                                    }),
-        [](const Elements& e) {
-          std::vector<T> values;
-          for (const rc::Shrinkable<T>& s : e) values.push_back(s.value());
-          return values;
-        });
-  };
 }
 
 // Splits one line into two collinear halves (an engine must not treat the join as a corner).
@@ -403,6 +420,10 @@ rc::Gen<FuzzCase> genRoughingCase(const CycleFormats& formats, const FuzzCycles&
 // The G73 cases (g73_case_generator.cpp): the formats apply to G71/G72 only.
 rc::Gen<FuzzCase> genPatternRepeatingCase(const CycleFormats&, const FuzzCycles&) { return genG73Case(); }
 
+// The SINUMERIK cases (siemens_case_generator.cpp): LCYC95 and CYCLE95 share one generator (the
+// cycle is one of its choices); the formats apply to G71/G72 only.
+rc::Gen<FuzzCase> genSinumerikCase(const CycleFormats&, const FuzzCycles& cycles) { return genSiemensCase(cycles); }
+
 // Which generator draws each cycle family's cases: G71 and G72 share one (the cycle is one of its
 // choices), G73 has its own. A run that asks for families of more than one picks the generator
 // with RapidCheck's weightedOneOf, in this table's order, each weighted by how many of the asked
@@ -415,6 +436,7 @@ const std::vector<FamilyGenerator>& familyGenerators() {
   static const std::vector<FamilyGenerator> generators = {
       {{FuzzCycle::G71, FuzzCycle::G72}, genRoughingCase},
       {{FuzzCycle::G73}, genPatternRepeatingCase},
+      {{FuzzCycle::Lcyc95, FuzzCycle::Cycle95}, genSinumerikCase},
   };
   return generators;
 }
@@ -651,6 +673,7 @@ std::string g73Program(const FuzzCase& c) {
 }  // namespace
 
 std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c) {
+  if (isSiemensCase(c)) return siemensExpectedAlarm(c);
   if (c.cycle != 73) return std::nullopt;
   // The lines of g73Program(): 1 A, 2 the first G73 block, 3 the second, 4 block ns.
   switch (c.g73Fault) {
@@ -665,6 +688,7 @@ std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c) {
 
 std::string fuzzProgram(const FuzzCase& c) {
   if (c.cycle == 73) return g73Program(c);
+  if (isSiemensCase(c)) return siemensMainProgram(c) + kSiemensContourName + ".spf\n" + siemensContourProgram(c);
   // The frame's points: B, then each segment's end; C is the highest.
   // Block ns moves the depth axis only (W0 / U0 in type II), so B stands at A's cut coordinate.
   const ShapeWalk walk = walkShape(c);
@@ -761,7 +785,13 @@ std::string describeG73Case(const FuzzCase& c) {
 }
 }  // namespace
 
+std::string fuzzCaseFolder(const FuzzCase& c) {
+  if (isSiemensCase(c)) return c.profile + (c.siemens.cycle95 ? "/cycle95" : "/lcyc95");
+  return c.profile + "/g" + std::to_string(c.cycle);
+}
+
 SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
+  if (isSiemensCase(c)) return specCaseFrom(siemensSpecJson(c, tag), "fuzz:" + tag);
   nlohmann::json params = nlohmann::json::object();
   if (c.rf1) params["RF1"] = 1;
   if (c.dtp) params["DTP"] = 1;
@@ -788,7 +818,7 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
                                                                  : "G72.FMT";
   if (c.cycle == 73) rule = g73Rule(c.g73Fault);
   nlohmann::json j{
-      {"id", c.profile + "/g" + std::to_string(c.cycle) + "/fuzz-" + tag},
+      {"id", fuzzCaseFolder(c) + "/fuzz-" + tag},
       {"title", "fuzz case " + tag + ": " + describeFuzzCase(c)},
       {"rules", {rule}},
       {"profile", c.profile},
@@ -806,6 +836,7 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
 
 std::string describeFuzzCase(const FuzzCase& c) {
   if (c.cycle == 73) return describeG73Case(c);
+  if (isSiemensCase(c)) return describeSiemensCase(c);
   std::ostringstream s;
   s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
     << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;

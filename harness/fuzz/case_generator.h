@@ -34,6 +34,8 @@
 //
 // G73 cases (pattern repeating) are drawn when the run asks for them (FuzzCycles, `fuzz --cycles`):
 // g73_case_generator.cpp says what is drawn; fuzzProgram() writes them in the two-block format.
+// SINUMERIK LCYC95 / CYCLE95 cases (a main program and its contour subprogram) likewise:
+// siemens_case_generator.h says what is drawn and how it is written.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -70,13 +72,16 @@ std::string cycleFormatsText(const CycleFormats& formats);
 inline const CycleFormats kDefaultCycleFormats = {CycleFormat::FanucTwoBlocks};
 
 // The cycles the fuzzer draws (`cyclecert fuzz --cycles`): G71 and G72 (axis-parallel roughing,
-// drawn as they always were) and G73 (pattern repeating, g73_case_generator.cpp).
-enum class FuzzCycle { G71, G72, G73 };
+// drawn as they always were), G73 (pattern repeating, g73_case_generator.cpp), and SINUMERIK
+// LCYC95 (802S/C) and CYCLE95 (802D) (siemens_case_generator.cpp).
+enum class FuzzCycle { G71, G72, G73, Lcyc95, Cycle95 };
 using FuzzCycles = std::vector<FuzzCycle>;
-// "g71", "g72", "g73": the names `cyclecert fuzz --cycles` takes.
+// "g71", "g72", "g73", "lcyc95", "cycle95": the names `cyclecert fuzz --cycles` takes.
 std::string_view fuzzCycleName(FuzzCycle c);
-// A comma-separated list of those names, or "all". Throws std::invalid_argument naming the word it
-// did not know and the names it knows.
+// A comma-separated list of those names and of two group names: "all" (every FANUC family: g71,
+// g72, g73 — as it meant before the Siemens cycles were drawn, so that a run keeps its cases) and
+// "siemens" (lcyc95, cycle95); "all,siemens" is every cycle. Throws std::invalid_argument naming
+// the word it did not know and the names it knows.
 FuzzCycles parseFuzzCycles(std::string_view text);
 // The names joined by commas, as --cycles takes them.
 std::string fuzzCyclesText(const FuzzCycles& cycles);
@@ -90,6 +95,52 @@ enum class G73Fault {
   FractionalDivisions,  // R2.5: PS0003 there (G73.D.RANGE)
   MissingQ,             // the second block without Q: PS0061 there (G73.FMT)
   ArcHead,              // block ns in G02: PS0065 at block ns (G73.ALARMS)
+};
+
+// A SINUMERIK case's one invalid parameter (at most one per case), with the alarm it must raise at
+// the cycle's call (LCYC95.ALARMS).
+enum class SiemensFault {
+  None,
+  MachiningType,     // R105 / VARI 0 or 13: 61002
+  NoInfeedDepth,     // R108 / MID 0 with a type that roughs: 61610
+  AgainstDirection,  // the contour programmed against the finishing direction: 10931
+  ArcOverQuarter,    // a half circle appended to the contour: 10931
+};
+
+// One piece of a SINUMERIK contour in the stock-removal frame (reference/siemens/
+// siemens_roughing_frame.h: cut towards −z, the stock above, +x): `along` hundredths towards −z
+// (≥ 0), `up` hundredths towards +x (negative: down, into an undercut). Arcs: a quarter circle
+// (along = |up| = the radius; convex bulges towards the stock), a shallow arc over the chord
+// (along, up) of radius 2·along (41.4°, written with CR=), or — the fault only — a half circle
+// over the chord (2·along, 0).
+struct SiemensSegment {
+  enum Kind { Line, ConvexQuarter, ConcaveQuarter, ConvexShallow, ConcaveShallow, HalfCircle } kind = Line;
+  int along = 0;
+  int up = 0;
+  // A chamfer or rounding the controller inserts at this line's end, before the next line (CHF=
+  // chamfer length, CHR= leg length, RND= radius), `cornerSize` hundredths.
+  enum Corner { NoCorner, Chamfer, ChamferLeg, Rounding } corner = NoCorner;
+  int cornerSize = 0;
+  bool centreWords = false;  // a quarter arc written with I/K (else CR=)
+};
+
+// The SINUMERIK part of a case (FuzzCase::cycle 95).
+struct SiemensFuzzCase {
+  bool cycle95 = false;   // CYCLE95 on profile sinumerik-802d, else LCYC95 on sinumerik-802s
+  int type = 1;           // R105 / VARI as written: 1…12 (0 or 13 with SiemensFault::MachiningType)
+  std::vector<SiemensSegment> segments;  // from the contour's first point, in the frame
+  int base = 100;         // hundredths between the part and the axis (or the bore's edge and the start)
+  int allowance = 0;      // R106 / FAL, hundredths
+  int allowanceZ = 0, allowanceX = 0;  // FALZ, FALX (CYCLE95), hundredths (X a radius)
+  int maxInfeed = 100;    // R108 / MID, hundredths (0 with SiemensFault::NoInfeedDepth)
+  int infeedAngle = 0;    // R109, degrees (LCYC95)
+  int retract = 100;      // R110 / _VRT, hundredths
+  int roughingFeed = 30, undercutFeed = 15, finishingFeed = 10;  // R111/FF1, FF2, R112/FF3: hundredths of mm/rev
+  int dwell = 0;          // DT, tenths of a second (CYCLE95)
+  int interruptLength = 0;  // DAM, hundredths (CYCLE95; 0: never)
+  int startClear = 200;   // the program's G0 start beyond the cycle's start, hundredths in each axis
+  bool compact = false;   // the contour's blocks written without spaces (G1X20Z-5)
+  SiemensFault fault = SiemensFault::None;
 };
 
 struct FuzzSegment {
@@ -127,7 +178,16 @@ struct FuzzCase {
   int divisions = 1;
   int startAhead = 0;
   G73Fault g73Fault = G73Fault::None;
+  // SINUMERIK cases (cycle 95) only; profile sinumerik-802s (LCYC95) or sinumerik-802d (CYCLE95).
+  SiemensFuzzCase siemens;
 };
+
+// A SINUMERIK case (LCYC95 or CYCLE95).
+inline bool isSiemensCase(const FuzzCase& c) { return c.cycle == 95; }
+
+// Where a case's spec case and regressions go: "<profile>/g71", …, "sinumerik-802s/lcyc95",
+// "sinumerik-802d/cycle95".
+std::string fuzzCaseFolder(const FuzzCase& c);
 
 // G41 or G42: the side of the shape the tool stands on in the case's quadrant (the frame's G42,
 // turned over once by each mirror and by G72's exchange of the axes).
@@ -145,20 +205,27 @@ rc::Gen<FuzzCase> genFuzzCase(const CycleFormats& formats = kDefaultCycleFormats
                               const FuzzCycles& cycles = kDefaultFuzzCycles);
 // The G73 cases alone (g73_case_generator.cpp).
 rc::Gen<FuzzCase> genG73Case();
+// The SINUMERIK cases alone (siemens_case_generator.cpp): LCYC95 or CYCLE95 as `cycles` asks (both:
+// either, one time in two).
+rc::Gen<FuzzCase> genSiemensCase(const FuzzCycles& cycles);
 
-// The alarm a case must raise, as its code and program line, or none (only G73 cases say; the
-// oracles judge the G71/G72 cases' alarms from the program).
+// The alarm a case must raise, as its code and program line, or none (only G73 and SINUMERIK cases
+// say; the oracles judge the G71/G72 cases' alarms from the program).
 struct FuzzExpectedAlarm {
   std::string code;
   int line = 0;
 };
 std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c);
 
-// The case's program text (in its format, one block per line).
+// The case's program text (in its format, one block per line). A SINUMERIK case's: the main
+// program with its contour printed after it (a line `L1.spf`, then its blocks), as seed 004 prints
+// them — one text the reference plans as it is.
 std::string fuzzProgram(const FuzzCase& c);
 
-// The case as a spec case: id "<profile>/g7x/fuzz-<tag>", the program, profile, parameters, and
-// an expectation of "oracles" only (specs/README.md). `tag` names it (e.g. the case seed).
+// The case as a spec case: id "<fuzzCaseFolder>/fuzz-<tag>", the program, profile, parameters (a
+// SINUMERIK case: the main program and its contour in "subprograms"), and an expectation of
+// "oracles" only, or the alarm of its one invalid parameter (specs/README.md). `tag` names it (e.g.
+// the case seed).
 SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag);
 
 // The case for a person, one line: cycle, quadrant, type, segments, parameters.

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 
+#include "harness/fuzz/generator_parts.h"
 #include "harness/fuzz/named_choices.h"
 
 namespace cyclecert {
@@ -38,8 +39,6 @@ FuzzSegment g73Segment(int shape, int along, int up, bool down) {
   if (down) s.up = -s.up;
   return s;
 }
-
-rc::Gen<int> wholeRange(int from, int to) { return rc::gen::resize(100, rc::gen::inRange(from, to)); }
 
 rc::Gen<FuzzSegment> genG73Segment() {
   return rc::gen::apply(g73Segment,

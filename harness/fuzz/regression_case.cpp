@@ -23,7 +23,7 @@ std::string writeRegressionCase(const std::string& dir, const FuzzFailure& failu
   const std::string seed = caseSeedTag(failure.caseSeed);
   const SpecCase c = fuzzSpecCase(failure.shrunk, seed);
   nlohmann::json j = c.raw;
-  const std::string folder = failure.shrunk.profile + "/g" + std::to_string(failure.shrunk.cycle);
+  const std::string folder = fuzzCaseFolder(failure.shrunk);
   const std::string name = "fuzz-" + slug(engineName) + "-" + seed;
   j["id"] = folder + "/" + name;
   j["title"] = "shrunk fuzz failure (" + failure.kind + ") of " + engineName + ": " + describeFuzzCase(failure.shrunk);

@@ -10,7 +10,8 @@
 
 namespace cyclecert {
 
-// Writes DIR/<profile>/g<cycle>/fuzz-<engine>-<seed>.json and returns its path.
+// Writes DIR/<fuzzCaseFolder>/fuzz-<engine>-<seed>.json (e.g. fanuc-0i-f/g71, sinumerik-802d/cycle95; a
+// SINUMERIK case with its contour in "subprograms") and returns its path.
 std::string writeRegressionCase(const std::string& dir, const FuzzFailure& failure, const std::string& engineName,
                                 const std::string& vsName, const std::vector<std::string>& rules,
                                 const std::string& reproduce);
