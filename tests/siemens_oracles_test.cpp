@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -317,6 +318,41 @@ TEST(SiemensOracles, FanucOraclesDoNotJudgeSiemensPrograms) {
   const std::vector<Finding> f = judged(lcyc95Program("1"), "sinumerik-802s", PathBuilder({2, 25}).path);
   ASSERT_FALSE(f.empty());
   for (const Finding& x : f) EXPECT_EQ(x.oracle.rfind("siemens-", 0), 0u) << x.oracle;
+}
+
+
+// A contour that begins by falling towards the axis (CYCLE95.UNDERCUT, interpretation): L1 runs
+// (z 0, x 1.5) down the front wall to (0, 1), along to (−1, 1), up to (−1, 1.5). Nothing of the
+// profile stands before the fall, so it is no undercut: the main passes reach it from the start
+// side. MID 0.5 over the height 1.5 − 1 gives one step; S = (0 + _VRT, 1.5 + _VRT) = (0.1, 1.6).
+// By hand (the program's G0 X4.2 Z0.6 gives the first position, no move): G0 to S; G0 down to the level (0.1, 1); G1 at FF1 0.1 to (0, 1), (−1, 1), up the wall to
+// (−1, 1.5); G0 retract by _VRT in each axis to (−0.9, 1.6); G0 back to S (X is there already).
+// Before: both the reference and the oracles took the fall for an undercut; the reference roughed
+// it again at FF2 after its main pass, and the oracles found the main pass's FF1 in it.
+TEST(SiemensOracles, AFallFromTheContoursFrontIsNoUndercut) {
+  const std::string program = "T1 D1\nG0 X4.2 Z0.6\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
+  const std::string contour = "G1X3Z0\nG1X2Z0\nG1X2Z-1\nG1X3Z-1\nRET\n";
+  PlanRequest request{program, "front.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  const std::vector<std::pair<Point, std::optional<double>>> expected = {
+      {{0.1, 1.6}, std::nullopt}, {{0.1, 1}, std::nullopt}, {{0, 1}, 0.1},
+      {{-1, 1}, 0.1},           {{-1, 1.5}, 0.1},           {{-0.9, 1.6}, std::nullopt}, {{0.1, 1.6}, std::nullopt}};
+  std::vector<std::pair<Point, std::optional<double>>> got;
+  for (const Move& m : path.moves) {
+    got.push_back({m.to, m.kind == MoveKind::Feed ? std::optional<double>(m.feed) : std::nullopt});
+    EXPECT_TRUE(std::find(m.rules.begin(), m.rules.end(), "CYCLE95.UNDERCUT") == m.rules.end());
+  }
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_NEAR(got[i].first.z, expected[i].first.z, 1e-9) << i;
+    EXPECT_NEAR(got[i].first.x, expected[i].first.x, 1e-9) << i;
+    EXPECT_EQ(got[i].second.has_value(), expected[i].second.has_value()) << i;
+    if (got[i].second && expected[i].second) {
+      EXPECT_NEAR(*got[i].second, *expected[i].second, 1e-12) << i;
+    }
+  }
+  EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
 }
 
 }  // namespace

@@ -83,7 +83,8 @@ double zWhereRisingTo(const std::vector<Segment>& profile, const std::vector<Pro
 }
 
 // CYCLE95.UNDERCUT note: a pocket begins where the profile turns back towards the depth axis (its
-// height falls) and ends where it is back at the lowest main level at or above that rim.
+// height falls) and ends where it is back at the lowest main level at or above that rim; a descent
+// from the profile's front (its first point's z) turns back from nothing and is none.
 std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, const SiemensLevels& levels) {
   std::vector<SiemensUndercut> out;
   const std::vector<ProfileVertex> v = verticesOf(profile);
@@ -100,7 +101,10 @@ std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, co
     std::size_t m = k + 1;
     while (m < v.size() && v[m].at.x < u.top - kGeomEps) u.bottom = std::min(u.bottom, v[m++].at.x);
     u.endZ = m < v.size() ? zWhereRisingTo(profile, v, m, u.top) : v.back().at.z;
-    out.push_back(u);
+    // A descent from the contour's front (the first point's z) is no undercut: nothing stands
+    // before it, and the main passes reach it along their levels from the start side
+    // (interpretation).
+    if (v[k].at.z < v.front().at.z - kGeomEps) out.push_back(u);
     k = m;
   }
   return out;

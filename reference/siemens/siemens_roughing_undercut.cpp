@@ -124,6 +124,18 @@ std::optional<Point> descentStartOn(const Segment& s) {
   return arcTopInside(s);
 }
 
+namespace {
+
+// CYCLE95.UNDERCUT (interpretation): a descent whose rim stands on the contour's front (the first
+// point's z: the contour begins there, perhaps with a wall) is no undercut — nothing of the profile
+// stands before it, so the main passes reach it from the start side along their levels, as they
+// reach a shoulder.
+bool fallsFromTheContoursStart(const std::vector<Segment>& profile, Point rim) {
+  return rim.z >= profile.front().from.z - kGeomEps;
+}
+
+}  // namespace
+
 std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const std::vector<double>& levels) {
   std::vector<Undercut> found;
   std::size_t i = 0;
@@ -142,7 +154,9 @@ std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const s
       ++i;
       continue;
     }
-    if (walk.undercut.bottom() < top - kGeomEps) found.push_back(std::move(walk.undercut));
+    if (walk.undercut.bottom() < top - kGeomEps && !fallsFromTheContoursStart(profile, *rim)) {
+      found.push_back(std::move(walk.undercut));
+    }
     if (walk.nextSegment >= profile.size()) break;
     i = walk.nextSegment;
     resumeFrom = walk.end;
