@@ -126,19 +126,6 @@ std::string fuzzCyclesText(const FuzzCycles& cycles) { return namesText(kCycleNa
 
 namespace {
 
-// Hundredths of a millimetre as a program writes them: "12.5", "-0.05", "3" (no trailing zeros,
-// as an ostream of precision 12 writes the value).
-std::string mm(long hundredths) {
-  std::string text = hundredths < 0 ? "-" : "";
-  const unsigned long h = static_cast<unsigned long>(std::labs(hundredths));
-  text += std::to_string(h / 100);
-  if (const unsigned long fraction = h % 100) {
-    text += '.';
-    text += static_cast<char>('0' + fraction / 10);
-    if (fraction % 10) text += static_cast<char>('0' + fraction % 10);
-  }
-  return text;
-}
 
 // A segment of the shape: a line of any slope (a 45° chamfer one time in four), or a quarter arc;
 // a zero-length line now and then (degenerate input an engine must survive).

@@ -3,11 +3,27 @@
 // siemens_case_generator.cpp).
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include <rapidcheck.h>
 
 namespace cyclecert {
+
+// Hundredths of a millimetre as a program writes them: "12.5", "-0.05", "3" (no trailing zeros,
+// as an ostream of precision 12 writes the value).
+inline std::string mm(long hundredths) {
+  std::string text = hundredths < 0 ? "-" : "";
+  const unsigned long h = static_cast<unsigned long>(std::labs(hundredths));
+  text += std::to_string(h / 100);
+  if (const unsigned long fraction = h % 100) {
+    text += '.';
+    text += static_cast<char>('0' + fraction / 10);
+    if (fraction % 10) text += static_cast<char>('0' + fraction % 10);
+  }
+  return text;
+}
 
 // A whole number in [from, to) drawn over the whole range at every size (RapidCheck scales inRange
 // by the case's size); it still shrinks towards `from`.

@@ -22,18 +22,6 @@ namespace cyclecert {
 
 namespace {
 
-// Hundredths of a millimetre as a program writes them: "12.5", "-0.05", "3".
-std::string mm(long hundredths) {
-  std::string text = hundredths < 0 ? "-" : "";
-  const unsigned long h = static_cast<unsigned long>(std::labs(hundredths));
-  text += std::to_string(h / 100);
-  if (const unsigned long fraction = h % 100) {
-    text += '.';
-    text += static_cast<char>('0' + fraction / 10);
-    if (fraction % 10) text += static_cast<char>('0' + fraction % 10);
-  }
-  return text;
-}
 
 // --- what is drawn ---
 
