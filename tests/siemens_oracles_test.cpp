@@ -355,5 +355,34 @@ TEST(SiemensOracles, AFallFromTheContoursFrontIsNoUndercut) {
   EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
 }
 
+
+// A groove behind a raised contour start (LCYC95.ROUGH / CYCLE95.UNDERCUT, interpretation): L1
+// begins at (z 0, x 1.4), rounds up to (−0.1, 1.5), falls to (−0.1, 1), runs to (−1.1, 1) and rises
+// to (−1.1, 1.5). Below the contour's first point the part's face stands at z 0, up to x 1.4; the
+// one level (1.5 − MID 0.5 = 1) lies below that top, so its main pass meets the face at z 0 and
+// stops there, and the groove behind is an undercut roughed at FF2. Before: the main pass ran on
+// at x 1 through the part's front (z 0 … −0.1, below the rounding) and along the groove at FF1.
+TEST(SiemensOracles, ALevelBelowARaisedContourStartStopsAtThePartsFace) {
+  const std::string program = "T1 D1\nG0 X4.2 Z0.6\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
+  const std::string contour = "G1X2.8Z0\nG3X3Z-0.1CR=0.2\nG1X2Z-0.1\nG1X2Z-1.1\nG1X3Z-1.1\nRET\n";
+  PlanRequest request{program, "face.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  bool grooveCutAtFf2 = false;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    const Move& m = path.moves[i];
+    const bool undercut = std::find(m.rules.begin(), m.rules.end(), "CYCLE95.UNDERCUT") != m.rules.end();
+    if (m.kind != MoveKind::Feed) continue;
+    if (!undercut) {
+      EXPECT_GE(std::min(path.from(i).z, m.to.z), -1e-9) << "main-pass feed " << i << " behind the face";
+    }
+    if (undercut && std::abs(m.to.x - 1) < 1e-9 && m.to.z < -1 && m.feed && std::abs(*m.feed - 0.05) < 1e-12) {
+      grooveCutAtFf2 = true;
+    }
+  }
+  EXPECT_TRUE(grooveCutAtFf2);
+  EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
+}
+
 }  // namespace
 }  // namespace cyclecert

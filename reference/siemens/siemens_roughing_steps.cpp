@@ -196,9 +196,24 @@ class StockRemovalPlanner {
     emit(MoveKind::Rapid, start_, 0, MovePhase::Approach, 0, {c_.rules.rough, c_.rules.start});
   }
 
+  // The part's front (LCYC95.ROUGH, interpretation): below the contour's first point the part's face
+  // stands at that point's z, up to the lowest point of the walls the contour begins with there. A
+  // level below that top meets the part at the face: the pass stops there (what lies behind the
+  // face, below the contour's start, is an undercut, CYCLE95.UNDERCUT).
+  double frontFaceTop() const {
+    const double frontZ = c_.profile.front().from.z;
+    double top = c_.profile.front().from.x;
+    for (const Segment& s : c_.profile) {
+      if (s.isArc() || std::abs(s.to.z - frontZ) > kGeomEps) break;
+      top = std::min(top, s.to.x);
+    }
+    return top;
+  }
+
   void roughingPass(int k, double level, double previous) {
-    const auto hit = roughingIntersection(c_.profile, level, start_.z);
-    const double hitZ = hit ? hit->at.z : c_.profile.back().to.z;
+    const bool meetsTheFace = level < frontFaceTop() - kGeomEps;
+    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z);
+    const double hitZ = meetsTheFace ? c_.profile.front().from.z : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
     if (hit) {
