@@ -182,6 +182,35 @@ BgRegion cutBand(const DepthFrame& frame, double lo, double hi, double width) {
       {frame.point(lo, width), frame.point(hi, width), frame.point(hi, -width), frame.point(lo, -width)});
 }
 
+// The part of `region` whose cut coordinates in `frame` lie within [lo, hi], intersected in the
+// frame's own coordinates (cut, depth) — a rotation, so the rings keep their orientation. There
+// the band's edges are axis-parallel: an edge of the region running along one, collinear only to
+// rounding in the plane when the frame is slanted (a G73 shape segment parallel to the relief),
+// becomes exactly collinear at the booleans' resolution (region.h), which Boost.Geometry resolves;
+// a slanted band in the plane it may return whole.
+BgRegion withinCutBand(const BgRegion& region, const DepthFrame& frame, double lo, double hi) {
+  if (region.empty()) return {};
+  const auto mapped = [&](const BgRegion& from, auto map) {
+    BgRegion to = from;
+    for (BgPolygon& polygon : to) {
+      for (BgPoint& p : polygon.outer()) p = map(p);
+      for (auto& inner : polygon.inners()) {
+        for (BgPoint& p : inner) p = map(p);
+      }
+    }
+    return to;
+  };
+  const BgRegion inFrame = mapped(region, [&](const BgPoint& p) {
+    const Point q = fromBg(p);
+    return BgPoint(frame.cut(q), frame.depth(q));
+  });
+  const auto box = boost::geometry::return_envelope<boost::geometry::model::box<BgPoint>>(inFrame);
+  const double d0 = box.min_corner().y() - 1, d1 = box.max_corner().y() + 1;
+  const BgRegion band = regionFromSimpleOutline({{lo, d1}, {hi, d1}, {hi, d0}, {lo, d0}});
+  return mapped(checkedIntersection(inFrame, band),
+                [&](const BgPoint& p) { return toBg(frame.point(p.x(), p.y())); });
+}
+
 }  // namespace
 
 // G73: the near-net blank (a casting or forging), everything behind the shape after block ns grown
@@ -202,9 +231,9 @@ BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance)
   if (!(hi > lo) || !(reliefHi > reliefLo)) return {};
   // A relief along the part side's axis gives the same band twice: no boolean needed.
   const bool sameBands = std::abs(partSide.away().z * relief.away().x - partSide.away().x * relief.away().z) < 1e-12;
-  const BgRegion band = cutBand(partSide, lo, hi, 4 * reach);
-  const BgRegion known = sameBands ? band : checkedIntersection(band, cutBand(relief, reliefLo, reliefHi, 4 * reach));
-  return checkedIntersection(known, partRegionOf(blank, partSide.away(), reach, chordTolerance));
+  const BgRegion alongPartSide =
+      checkedIntersection(cutBand(partSide, lo, hi, 4 * reach), partRegionOf(blank, partSide.away(), reach, chordTolerance));
+  return sameBands ? alongPartSide : withinCutBand(alongPartSide, relief, reliefLo, reliefHi);
 }
 
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
