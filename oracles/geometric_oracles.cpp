@@ -17,6 +17,30 @@ namespace {
 
 double tolerance(const JudgeInput& in) { return in.settings.tolerance(); }
 
+// The rules the material oracles serve for SINUMERIK calls: the roughing (to contour + allowance,
+// the contour-parallel cut, G0 back), the finishing along the contour, CYCLE95's undercuts.
+const std::vector<std::string> kSiemensMaterialSteps = {"ROUGH", "FINISH"};
+
+// The oracle's rules, FANUC's and each SINUMERIK cycle's `steps`.
+std::vector<std::string> withSiemensRules(std::vector<std::string> fanuc, const std::vector<std::string>& steps) {
+  for (const char* cycle : {"LCYC95.", "CYCLE95."}) {
+    for (const std::string& step : steps) fanuc.push_back(cycle + step);
+  }
+  return fanuc;
+}
+
+// A finding of a material oracle: for a SINUMERIK call it cites the call's own cycle's `steps`
+// (LCYC95.ROUGH…), not FANUC's rules.
+Finding materialFinding(const Oracle& o, const MaterialReplay& r, std::optional<std::size_t> move, std::string message,
+                        const std::vector<std::string>& steps) {
+  Finding f = finding(o, move, std::move(message));
+  if (r.siemens) {
+    f.rules.clear();
+    for (const std::string& step : steps) f.rules.push_back(r.siemens->rule(step));
+  }
+  return f;
+}
+
 // The target's span along the cut axis, less the tolerance at each end (the cycle does not cut
 // beyond its shape's ends); nothing when no more is left.
 std::optional<std::pair<double, double>> targetSpan(const MaterialReplay& r, double tolerance) {
@@ -34,7 +58,8 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
   const DepthFrame frame(r.away);
   const BgRegion band = regionFrom({frame.point(span->first, -r.reach), frame.point(span->second, -r.reach),
                                     frame.point(span->second, r.reach), frame.point(span->first, r.reach)});
-  return checkedIntersection(without(r.remaining(), r.part), band);
+  const BgRegion beyondPart = without(r.remaining(), r.part);
+  return checkedIntersection(r.leftAlone.empty() ? beyondPart : without(beyondPart, r.leftAlone), band);
 }
 
 // Whether the material left may stand thicker than `allowed` above the target. Where the target is
@@ -60,8 +85,9 @@ class NoGougeOracle : public Oracle {
  public:
   std::string id() const override { return "no-gouge"; }
   std::vector<std::string> rules() const override {
-    return {"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD", "G73.PASS.SHIFT"};
+    return withSiemensRules({"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD", "G73.PASS.SHIFT"}, kSiemensMaterialSteps);
   }
+  bool judges(CycleFamily) const override { return true; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
@@ -71,7 +97,7 @@ class NoGougeOracle : public Oracle {
       if (c.length <= 0) continue;
       std::ostringstream m;
       m << "move " << i << " enters the part grown by the allowances over " << c.length << " mm";
-      Finding f = finding(*this, i, m.str());
+      Finding f = materialFinding(*this, *r, i, m.str(), kSiemensMaterialSteps);
       for (const Segment& piece : c.pieces) f.witness.regions.push_back({piece.from, piece.to});
       f.witness.segment = in.path.segment(i);
       out.push_back(f);
@@ -87,26 +113,34 @@ class RapidsInAirOracle : public Oracle {
  public:
   std::string id() const override { return "rapids-in-air"; }
   std::vector<std::string> rules() const override {
-    return {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN", "G73.APPROACH", "G73.RETURN"};
+    return withSiemensRules(
+        {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN", "G73.APPROACH", "G73.RETURN"},
+        kSiemensMaterialSteps);
   }
+  bool judges(CycleFamily) const override { return true; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
-    const bool programmedRapidHead = r->cycle->patternRepeating() && r->cycle->headIsRapid;
+    const bool programmedRapidHead = r->cycle && r->cycle->patternRepeating() && r->cycle->headIsRapid;
     for (std::size_t i = 0; i < r->rapidCrossings.size(); ++i) {
       const Crossing& c = r->rapidCrossings[i];
       if (c.length <= 0) continue;
       if (programmedRapidHead && isShiftedG73Head(in, *r->cycle, i, tolerance(in))) continue;
       std::ostringstream m;
       m << "rapid move " << i << " crosses " << c.length << " mm of material still standing";
-      Finding f = finding(*this, i, m.str());
+      Finding f = materialFinding(*this, *r, i, m.str(), kSiemensMaterialSteps);
       for (const Segment& piece : c.pieces) f.witness.regions.push_back({piece.from, piece.to});
       f.witness.segment = in.path.segment(i);
       out.push_back(f);
     }
   }
 };
+
+std::string targetName(const JudgeInput& in, const MaterialReplay& r) {
+  if (r.siemens) return r.siemens->finishes() ? "finishing path" : "roughing profile (contour + allowance)";
+  return in.program.hasFinishingCycle ? "finish shape" : "rough profile";
+}
 
 // complete: what remains beyond the target after the last move is no thicker than the rules allow:
 // Δd without the semi-finish pass, the tolerance with it (or after G70). G73: the tolerance — its
@@ -115,13 +149,20 @@ class CompleteOracle : public Oracle {
  public:
   std::string id() const override { return "complete"; }
   std::vector<std::string> rules() const override {
-    return {"G71.T1.SEMIFIN", "G72.STEP7", "G71.T2.RETURN", "G71.T2.VALLEY", "G73.PASS.SHIFT", "G73.D1"};
+    std::vector<std::string> rules = withSiemensRules(
+        {"G71.T1.SEMIFIN", "G72.STEP7", "G71.T2.RETURN", "G71.T2.VALLEY", "G73.PASS.SHIFT", "G73.D1"}, kSiemensMaterialSteps);
+    rules.push_back("CYCLE95.UNDERCUT");
+    return rules;
   }
+  bool judges(CycleFamily) const override { return true; }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
-    const bool finished = r->cycle->semiFinish || r->cycle->patternRepeating() || in.program.hasFinishingCycle;
+    // A SINUMERIK call's roughing ends with the contour-parallel cut at the allowance (LCYC95.ROUGH,
+    // CYCLE95.ROUGH) and its undercuts roughed (CYCLE95.UNDERCUT), its finishing on the contour.
+    const bool finished =
+        !r->cycle || r->cycle->semiFinish || r->cycle->patternRepeating() || in.program.hasFinishingCycle;
     const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
     if (!leftoverMayExceed(*r, allowed, tolerance(in))) return;
     const BgRegion left = leftover(*r, tolerance(in));
@@ -133,10 +174,10 @@ class CompleteOracle : public Oracle {
     if (!solid || solid->thickness <= allowed) return;
     thickest = solid;
     std::ostringstream m;
-    m << "after the last move " << thickest->thickness << " mm of material stand above the "
-      << (in.program.hasFinishingCycle ? "finish shape" : "rough profile") << " at (z " << thickest->where.z << ", x "
-      << thickest->where.x << "); at most " << allowed << " may remain";
-    Finding f = finding(*this, std::nullopt, m.str());
+    m << "after the last move " << thickest->thickness << " mm of material stand above the " << targetName(in, *r)
+      << " at (z " << thickest->where.z << ", x " << thickest->where.x << "); at most " << allowed << " may remain";
+    Finding f = materialFinding(*this, *r, std::nullopt, m.str(), kSiemensMaterialSteps);
+    if (r->siemens && r->siemens->isCycle95()) f.rules.push_back("CYCLE95.UNDERCUT");
     f.witness.regions = outlinesOf(left);
     f.witness.point = thickest->where;
     out.push_back(f);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <span>
 #include <unordered_map>
 
@@ -260,24 +261,28 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
 
 namespace {
 
-BgRegion stockFor(const JudgeInput& in, const CycleSpec& c, Point away, double reach) {
+// The stock the case gives (a bar, a polygon), or nothing when the cycle implies it.
+std::optional<BgRegion> givenStock(const JudgeInput& in) {
   switch (in.stock.kind) {
     case Stock::Bar: return barStock(in.stock.diameter, in.stock.length, in.stock.frontZ);
     case Stock::Polygon: return polygonStock(in.stock.outline);
     case Stock::Implied: break;
   }
-  return impliedStockOf(c, away, reach, in.settings.chordTolerance);
+  return std::nullopt;
 }
 
-// A length that takes a shadow out of everything in the picture.
-double reachFor(const JudgeInput& in, const CycleSpec& c) {
+// A length that takes a shadow out of everything in the picture: the shapes, the path, the stock,
+// and how far a blank stands out beyond its shape (`standOut`: G73's relief).
+double reachFor(const JudgeInput& in, std::initializer_list<const std::vector<Segment>*> shapes, double standOut) {
   double size = 10;
   const auto grow = [&](Point p) { size = std::max({size, std::abs(p.z), std::abs(p.x)}); };
-  for (const Segment& s : c.shape) {
-    grow(s.from);
-    grow(s.to);
+  for (const std::vector<Segment>* shape : shapes) {
+    for (const Segment& s : *shape) {
+      grow(s.from);
+      grow(s.to);
+    }
   }
-  size += std::hypot(c.relief.z, c.relief.x);  // G73's blank stands out by the relief
+  size += standOut;
   for (const Move& m : in.path.moves) grow(m.to);
   for (Point p : in.stock.outline) grow(p);
   grow({in.stock.frontZ, 0});
@@ -424,35 +429,21 @@ bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move
 
 }  // namespace
 
-std::optional<std::vector<std::vector<Point>>> materialAfter(const JudgeInput& in, std::size_t k) {
-  const CycleSpec* c = in.program.singleRoughingCycle();
-  if (!c || in.path.alarm) return std::nullopt;
-  const Point away = awayFrom(*c);
-  const double reach = reachFor(in, *c);
-  MaterialModel model(stockFor(in, *c, away, reach), away, reach, in.settings.chordTolerance);
-  const std::size_t judged = movesJudgedAgainstThePart(in);
-  for (std::size_t i = 0; i < judged && i <= k; ++i) model.apply(in.path.segment(i), in.path.moves[i].kind);
-  return outlinesOf(model.remaining());
-}
+namespace {
 
-Crossing MaterialReplay::partCrossing(const Segment& move, double epsilon, double chordTolerance) const {
-  return partBelowProfile ? crossingOf(*partBelowProfile, move, epsilon, chordTolerance)
-                          : crossingOf(partForCrossing, move, epsilon, chordTolerance);
-}
-
-std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
-  const CycleSpec* c = in.program.singleRoughingCycle();
-  if (!c || in.path.alarm) return std::nullopt;
+// The replay's frame, stock and part for a FANUC roughing cycle (no move replayed yet).
+MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
   MaterialReplay r;
-  r.cycle = c;
+  r.cycle = &c;
   r.judgedMoves = movesJudgedAgainstThePart(in);
-  r.away = awayFrom(*c);
-  r.reach = reachFor(in, *c);
-  r.stock = stockFor(in, *c, r.away, r.reach);
-  r.target = in.program.hasFinishingCycle ? c->shape : c->roughProfile();
+  r.away = awayFrom(c);
+  r.reach = reachFor(in, {&c.shape}, std::hypot(c.relief.z, c.relief.x));
+  const std::optional<BgRegion> given = givenStock(in);
+  r.stock = given ? *given : impliedStockOf(c, r.away, r.reach, in.settings.chordTolerance);
+  r.target = in.program.hasFinishingCycle ? c.shape : c.roughProfile();
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
-  const std::vector<Segment> profile(r.target.begin() + (c->typeII ? 0 : 1), r.target.end());
-  const DepthFrame frame(partSideOf(*c));
+  const std::vector<Segment> profile(r.target.begin() + (c.typeII ? 0 : 1), r.target.end());
+  const DepthFrame frame(partSideOf(c));
   if (!profile.empty()) {
     const PartOutline part = partOutlineOf(profile, frame, r.reach, in.settings.chordTolerance);
     r.part = partRegionFrom(part, profile, frame, r.reach, in.settings.chordTolerance);
@@ -468,22 +459,170 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     }
   }
   if (!r.partBelowProfile) r.partForCrossing = CrossingRegion(r.part);
+  return r;
+}
 
+// SINUMERIK: the stock-removal frame's depth axis (+x, from the profile towards the stock,
+// siemens_cycle_spec.h) in the plane.
+Point siemensAway(const SiemensCycleSpec& s) { return s.frame.toPlane(Point{0, 1}); }
+
+// The stock a SINUMERIK call implies (interpretation, LCYC95.ROUGH note): a call that roughs takes
+// the bar its first level is cut from — everything between the roughing profile (contour +
+// allowances) and the level of the profile's highest point (LCYC95.DEPTH), over the profile's span
+// along the cut axis; a call that only finishes (types 5…8) takes the allowance left by an earlier
+// roughing — between the roughing profile and the finishing path.
+BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
+                             const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
+  const BgRegion belowProfile = partRegionOf(profile, away, reach, chordTolerance);
+  if (!s.roughs()) return without(belowProfile, partRegionOf(finish, away, reach, chordTolerance));
+  const DepthFrame frame(away);
+  const auto [lo, hi] = cutSpanOf(profile, frame);
+  if (!(hi > lo)) return {};
+  const double top = s.levels.top;  // the frame's x is the plane's depth along `away`
+  const BgRegion band = regionFrom({frame.point(lo, top), frame.point(hi, top), frame.point(hi, top - reach),
+                                    frame.point(lo, top - reach)});
+  return without(band, belowProfile);
+}
+
+// What a SINUMERIK call leaves standing by its rules: LCYC95 roughs no undercut (CYCLE95.UNDERCUT
+// note), so a roughing-only LCYC95 call leaves each pocket below the level that passed over it.
+BgRegion siemensLeftAlone(const SiemensCycleSpec& s, double reach) {
+  BgRegion pockets;
+  if (s.isCycle95() || s.finishes()) return pockets;
+  for (const SiemensUndercut& u : s.undercuts) {
+    std::vector<Point> corners;
+    for (Point p : {Point{u.endZ, u.top}, Point{u.rimZ, u.top}, Point{u.rimZ, u.top - reach}, Point{u.endZ, u.top - reach}}) {
+      corners.push_back(s.frame.toPlane(p));
+    }
+    const BgRegion pocket = regionFrom(corners);
+    pockets.insert(pockets.end(), pocket.begin(), pocket.end());
+  }
+  return pockets;
+}
+
+// The replay's frame, stock and part for a SINUMERIK call: its moves stand in the plane, the
+// frame's geometry is mapped back. No move may go below the roughing profile where roughing runs,
+// nor below the finishing path where finishing runs: the part is what lies below both
+// (interpretation: a nose radius puts the finishing path's control point off the contour, above or
+// below the profile). Completeness measures what is left above the finishing path when the call
+// finishes, else above the roughing profile.
+MaterialReplay siemensReplayOf(const JudgeInput& in, const SiemensCycleSpec& s) {
+  MaterialReplay r;
+  r.siemens = &s;
+  r.judgedMoves = in.path.moves.size();
+  r.away = siemensAway(s);
+  const std::vector<Segment> profile = s.frame.toPlane(s.profile);
+  const std::vector<Segment> finish = s.frame.toPlane(s.finishPath);
+  r.reach = reachFor(in, {&profile, &finish}, 0);
+  const double chord = in.settings.chordTolerance;
+  const std::optional<BgRegion> given = givenStock(in);
+  r.stock = given ? *given : siemensImpliedStock(s, profile, finish, r.away, r.reach, chord);
+  r.target = s.finishes() ? finish : profile;
+  const BgRegion belowProfile = partRegionOf(profile, r.away, r.reach, chord);
+  r.part = s.finishes() ? checkedIntersection(belowProfile, partRegionOf(finish, r.away, r.reach, chord)) : belowProfile;
+  r.partForCrossing = CrossingRegion(r.part);
+  r.leftAlone = siemensLeftAlone(s, r.reach);
+  if (s.finishes()) r.allowanceLayer = without(belowProfile, partRegionOf(finish, r.away, r.reach, chord));
+  return r;
+}
+
+// SINUMERIK: the material its documented rapids meet, which rapids-in-air does not count
+// (interpretation, LCYC95.ROUGH and LCYC95.FINISH notes): the chip an infeed at R109 > 0 leaves in
+// front of its level — the triangle between the slanted infeed and its level, which the G0 back
+// along the cut axis at the retract height crosses — and, for finishing's G0 to the contour start
+// (the rapid that ends there), the allowance in front of that start.
+class SiemensDocumentedCrossings {
+ public:
+  SiemensDocumentedCrossings(const MaterialReplay& r, const SiemensCycleSpec& s, double tol) : r_(r), s_(s), tol_(tol) {}
+
+  // A feed of the path: a slanted infeed ending on a main level leaves its chip.
+  void noteFeed(const Segment& feed) {
+    if (s_.infeedAngle <= 0 || feed.isArc()) return;
+    const Point a = s_.frame.toFrame(feed.from), b = s_.frame.toFrame(feed.to);
+    if (b.z - a.z >= -tol_ || b.x - a.x >= -tol_ || !s_.levels.isLevel(b.x, tol_)) return;
+    const BgRegion chip =
+        regionFrom({s_.frame.toPlane(a), s_.frame.toPlane(b), s_.frame.toPlane(Point{a.z, b.x})});
+    chips_.insert(chips_.end(), chip.begin(), chip.end());
+  }
+
+  // The crossing of a rapid without its pieces inside the material the sequence meets.
+  Crossing without(const Crossing& c, const Segment& rapid) const {
+    const bool toContourStart =
+        !s_.finishPath.empty() && distance(rapid.to, s_.frame.toPlane(s_.finishPath.front().from)) <= tol_;
+    Crossing kept;
+    for (const Segment& piece : c.pieces) {
+      if (inside(chips_, piece) || (toContourStart && inside(r_.allowanceLayer, piece))) continue;
+      kept.pieces.push_back(piece);
+      kept.length += piece.length();
+    }
+    return kept;
+  }
+
+ private:
+  bool inside(const BgRegion& region, const Segment& piece) const {
+    if (region.empty()) return false;
+    for (Point p : {piece.from, pointAt(piece, 0.5), piece.to}) {
+      if (boost::geometry::distance(toBg(p), region) > tol_) return false;
+    }
+    return true;
+  }
+
+  const MaterialReplay& r_;
+  const SiemensCycleSpec& s_;
+  double tol_;
+  BgRegion chips_;
+};
+
+// The replay before its moves, for the program's one roughing cycle or SINUMERIK call.
+std::optional<MaterialReplay> replayOf(const JudgeInput& in) {
+  if (in.path.alarm) return std::nullopt;
+  if (const SiemensCycleSpec* s = in.program.singleSiemensCycle()) return siemensReplayOf(in, *s);
+  if (const CycleSpec* c = in.program.singleRoughingCycle()) return fanucReplayOf(in, *c);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::vector<std::vector<Point>>> materialAfter(const JudgeInput& in, std::size_t k) {
+  const std::optional<MaterialReplay> r = replayOf(in);
+  if (!r) return std::nullopt;
+  MaterialModel model(r->stock, r->away, r->reach, in.settings.chordTolerance);
+  for (std::size_t i = 0; i < r->judgedMoves && i <= k; ++i) model.apply(in.path.segment(i), in.path.moves[i].kind);
+  return outlinesOf(model.remaining());
+}
+
+Crossing MaterialReplay::partCrossing(const Segment& move, double epsilon, double chordTolerance) const {
+  return partBelowProfile ? crossingOf(*partBelowProfile, move, epsilon, chordTolerance)
+                          : crossingOf(partForCrossing, move, epsilon, chordTolerance);
+}
+
+std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
+  std::optional<MaterialReplay> replay = replayOf(in);
+  if (!replay) return std::nullopt;
+  MaterialReplay& r = *replay;
+  // A SINUMERIK call's layers are its infeed steps' business (siemens-infeed-steps), and it has no
+  // pocket entries of type II: only its rapids are measured.
+  const CycleSpec* c = r.cycle;
   MaterialModel model(r.stock, r.away, r.reach, in.settings.chordTolerance);
   const double tolerance = in.settings.tolerance();
   r.rapidCrossings.resize(in.path.moves.size());
-  const bool judgesEntries = judgesPocketEntries(*c, in.settings);
+  const bool judgesEntries = c && judgesPocketEntries(*c, in.settings);
   if (judgesEntries) r.pocketEntryCrossings.resize(in.path.moves.size());
   r.removedThickness.resize(in.path.moves.size());
   // The moves before the first cycle (PROG.WHOLE: the approach, a facing cut) remove material and
   // are judged for rapids, but they are no roughing pass: their layers are not Δd's business.
-  const std::size_t firstPass = firstMoveOfTheCycles(in);
+  const std::size_t firstPass = c ? firstMoveOfTheCycles(in) : r.judgedMoves;
   EarlierFeeds earlierFeeds(r.away);
+  std::optional<SiemensDocumentedCrossings> documented;
+  if (r.siemens) documented.emplace(r, *r.siemens, tolerance);
   for (std::size_t i = 0; i < r.judgedMoves; ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       r.rapidCrossings[i] = withoutOwnSlot(model.crossing(move, tolerance), in.path, i, tolerance);
+      if (documented) r.rapidCrossings[i] = documented->without(r.rapidCrossings[i], move);
       if (judgesEntries) r.pocketEntryCrossings[i] = pocketEntryCrossing(r, model, in, i);
+    } else if (documented) {
+      documented->noteFeed(move);
     } else {
       if (i >= firstPass && !onFinishShape(in, *c, move)) {
         r.removedThickness[i] = layerBeyondDepthOfCut(model, earlierFeeds, move, *c, in.settings);

@@ -17,7 +17,11 @@ namespace cyclecert {
 inline constexpr double kMeasuringChord = 1e-6;
 
 struct MaterialReplay {
-  const CycleSpec* cycle = nullptr;  // the one roughing cycle judged
+  // The one roughing cycle judged — or, for a SINUMERIK program, its one stock-removal call
+  // (`cycle` null): its moves are judged against the material in the plane, the part below the
+  // roughing profile or the finishing path (replayMaterial says how).
+  const CycleSpec* cycle = nullptr;
+  const SiemensCycleSpec* siemens = nullptr;
   // The moves replayed and judged: all, or up to the end of a Huazhong finishing run
   // (movesJudgedAgainstThePart, run_after_cycle.h).
   std::size_t judgedMoves = 0;
@@ -27,6 +31,12 @@ struct MaterialReplay {
   std::vector<Segment> target;       // the surface roughing must leave: the rough profile, or the
                                      // finish shape when a G70 follows
   BgRegion part;                     // everything beyond `target`: no move may enter it
+  // Material the cycle leaves standing by its rules, which completeness does not ask for: LCYC95's
+  // undercuts when the call only roughs (no undercut roughing, CYCLE95.UNDERCUT note).
+  BgRegion leftAlone;
+  // SINUMERIK: the allowance layer between the roughing profile and the finishing path, which the
+  // finishing pass's G0 to the contour start may meet in front of that start (LCYC95.FINISH note).
+  BgRegion allowanceLayer;
   // The same, prepared for no-gouge's crossing tests: the region below the profile when it is a
   // graph over the cut axis, else the part's rings.
   std::optional<RegionBelowGraph> partBelowProfile;

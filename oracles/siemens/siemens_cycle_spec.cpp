@@ -83,7 +83,7 @@ double zWhereRisingTo(const std::vector<Segment>& profile, const std::vector<Pro
 }
 
 // CYCLE95.UNDERCUT note: a pocket begins where the profile turns back towards the depth axis (its
-// height falls) and ends where it is back at the lowest main level at or above that rim; a descent
+// height falls) and ends where it is back at the lowest main level strictly above that rim; a descent
 // from the profile's front (its first point's z) turns back from nothing and is none.
 std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, const SiemensLevels& levels) {
   std::vector<SiemensUndercut> out;
@@ -96,7 +96,7 @@ std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, co
     }
     SiemensUndercut u;
     u.rimZ = v[k].at.z;
-    u.top = levels.levelAtOrAbove(v[k].at.x, kGeomEps);
+    u.top = levels.levelAbove(v[k].at.x, kGeomEps);
     u.bottom = v[k + 1].at.x;
     std::size_t m = k + 1;
     while (m < v.size() && v[m].at.x < u.top - kGeomEps) u.bottom = std::min(u.bottom, v[m++].at.x);
@@ -124,18 +124,32 @@ Point SiemensFrame::toPlane(Point p) const {
   return p;
 }
 
-std::vector<Segment> SiemensFrame::toFrame(const std::vector<Segment>& plane) const {
+namespace {
+
+// A path mapped point by point; an odd number of reflections turns an arc's sense.
+template <typename Map>
+std::vector<Segment> mappedPath(const SiemensFrame& f, const std::vector<Segment>& path, Map map) {
   std::vector<Segment> out;
-  out.reserve(plane.size());
-  const bool turned = reflections(*this) % 2 == 1;
-  for (Segment s : plane) {
-    s.from = toFrame(s.from);
-    s.to = toFrame(s.to);
-    s.center = toFrame(s.center);
+  out.reserve(path.size());
+  const bool turned = reflections(f) % 2 == 1;
+  for (Segment s : path) {
+    s.from = map(s.from);
+    s.to = map(s.to);
+    s.center = map(s.center);
     if (turned) s.kind = reversedKind(s.kind);
     out.push_back(s);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<Segment> SiemensFrame::toFrame(const std::vector<Segment>& plane) const {
+  return mappedPath(*this, plane, [&](Point p) { return toFrame(p); });
+}
+
+std::vector<Segment> SiemensFrame::toPlane(const std::vector<Segment>& frame) const {
+  return mappedPath(*this, frame, [&](Point p) { return toPlane(p); });
 }
 
 SiemensLevels equalLevels(double top, double bottom, double maxInfeed) {
@@ -147,10 +161,11 @@ SiemensLevels equalLevels(double top, double bottom, double maxInfeed) {
   return l;
 }
 
-double SiemensLevels::levelAtOrAbove(double x, double tol) const {
+double SiemensLevels::levelAbove(double x, double tol) const {
   if (count <= 0 || x >= top - tol) return top;
-  const double k = std::floor((top - x) / step + tol / step);
-  return level(k);
+  // level(k) = top − k·step > x + tol for k < (top − x − tol) / step.
+  const double k = std::ceil((top - x - tol) / step) - 1;
+  return level(std::max(0.0, k));
 }
 
 bool SiemensLevels::isLevel(double x, double tol) const {
@@ -173,8 +188,11 @@ void describeSiemensCycle(SiemensCycleSpec& c) {
 
 bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol) {
   const double zLow = std::min(from.z, to.z), zHigh = std::max(from.z, to.z), xLow = std::min(from.x, to.x);
+  // The plunge along the depth axis down to the falling side's top starts the pocket's pass: it
+  // belongs to the pocket even where that top is its top level (a rim at the profile's top).
+  const bool plunge = zHigh - zLow <= tol && from.x > to.x;
   return std::any_of(c.undercuts.begin(), c.undercuts.end(), [&](const SiemensUndercut& u) {
-    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && xLow < u.top - tol;
+    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && xLow < u.top + (plunge ? tol : -tol);
   });
 }
 

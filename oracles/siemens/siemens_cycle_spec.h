@@ -25,11 +25,13 @@ struct SiemensFrame {
   Point toFrame(Point plane) const;
   Point toPlane(Point frame) const;
   std::vector<Segment> toFrame(const std::vector<Segment>& plane) const;
+  std::vector<Segment> toPlane(const std::vector<Segment>& frame) const;
 };
 
 // An undercut of the roughing profile (CYCLE95.UNDERCUT), in the frame: from the rim, where the
-// profile turns back towards the depth axis, to where it is back at `top` — the lowest main level at
-// or above the rim — (or to the profile's end). Its moves run at FF2.
+// profile turns back towards the depth axis, to where it is back at `top` — the lowest main level
+// strictly above the rim (the level through a rim stops there) — (or to the profile's end). Its
+// moves run at FF2.
 struct SiemensUndercut {
   double rimZ = 0;  // the rim (the larger z)
   double endZ = 0;  // where the pocket ends (the smaller z)
@@ -44,8 +46,8 @@ struct SiemensLevels {
   double top = 0, bottom = 0, step = 0;
   double count = 0;  // the number of steps (0: a flat profile)
   double level(double k) const { return k >= count ? bottom : top - k * step; }
-  // The lowest level at or above x (within tol).
-  double levelAtOrAbove(double x, double tol) const;
+  // The lowest level strictly above x (by more than tol); the top when none is.
+  double levelAbove(double x, double tol) const;
   // Whether x is one of levels 1…count (within tol).
   bool isLevel(double x, double tol) const;
 };
@@ -92,7 +94,8 @@ struct SiemensCycleSpec {
 void describeSiemensCycle(SiemensCycleSpec& c);
 
 // Whether the feed from `from` to `to` (frame) runs in one of the cycle's undercuts: within its span
-// along the cut axis and below the level that passed over it (CYCLE95.UNDERCUT: these run at FF2).
+// along the cut axis and below the level that passed over it, or plunging along the depth axis down
+// to that level (CYCLE95.UNDERCUT: these run at FF2).
 bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol);
 
 }  // namespace cyclecert

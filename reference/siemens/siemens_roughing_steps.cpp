@@ -112,6 +112,37 @@ std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, co
   return pieces;
 }
 
+// The first point of `path` (in its direction) at or below `level`: its start when that stands no
+// higher, else where it first comes down to the level; nothing when it never does.
+std::optional<ProfilePoint> firstAtOrBelow(const std::vector<Segment>& path, double level) {
+  if (path.empty()) return std::nullopt;
+  if (path.front().from.x <= level + kGeomEps) return ProfilePoint{0, path.front().from};
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    std::optional<Point> first;
+    for (const Point& p : intersectWithLevelX(path[i], level)) {
+      if (!first || positionAlong(path[i], p) < positionAlong(path[i], *first)) first = p;
+    }
+    if (first) return ProfilePoint{i, *first};
+  }
+  return std::nullopt;
+}
+
+// The part of `path` from `a` to `b` (points on it, in its order), without pieces of no length.
+std::vector<Segment> pathBetween(const std::vector<Segment>& path, const ProfilePoint& a, const ProfilePoint& b) {
+  std::vector<Segment> pieces;
+  for (std::size_t i = a.segment; i <= b.segment && i < path.size(); ++i) {
+    const Segment piece = portionOf(path[i], i == a.segment ? a.at : path[i].from, i == b.segment ? b.at : path[i].to);
+    if (!hasNoLength(piece)) pieces.push_back(piece);
+  }
+  return pieces;
+}
+
+// Whether the pieces run straight along the depth axis (a wall): a plunge down them is one G1.
+bool isWall(const std::vector<Segment>& pieces) {
+  return std::all_of(pieces.begin(), pieces.end(),
+                     [](const Segment& s) { return !s.isArc() && std::abs(s.to.z - s.from.z) <= kGeomEps; });
+}
+
 class StockRemovalPlanner {
  public:
   StockRemovalPlanner(const StockRemoval& c, Point position)
@@ -225,10 +256,13 @@ class StockRemovalPlanner {
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
-  // its own equal steps from the level that passed over it down to its lowest point, at FF2: G0 up to
-  // the start's height (the first pocket pass) or along the cut axis at the retract height, G1
-  // straight down where the level meets the pocket's falling side, G1 across to its rising side, along
-  // the profile up to the previous level, retract in each axis.
+  // its own equal steps from the lowest level above its rim down to its lowest point, at FF2: G0 up
+  // to the start's height (the first pocket pass) or along the cut axis at the retract height to
+  // above where the previous level meets the pocket's falling side (the rim, for the first pass),
+  // G1 straight down to it, along the falling side down to the level ("a cut parallel to the
+  // contour to remove the remaining ridges": a plunge beside a sloping side would leave a ridge
+  // above it), G1 across to the rising side, along the profile up to the previous level, retract in
+  // each axis.
 
   void roughUndercut(const Undercut& u, int& pass) {
     emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, pass + 1, {c_.rules.undercut});
@@ -236,15 +270,32 @@ class StockRemovalPlanner {
     for (std::size_t m = 1; m < levels.size(); ++m) undercutPass(u, ++pass, levels[m], levels[m - 1], m + 1 == levels.size());
   }
 
+  // The pocket's falling side between the previous level and this one (empty without one).
+  static std::vector<Segment> fallingSideBetween(const Undercut& u, double previous, double level, bool lowest) {
+    if (u.down.empty()) return {};
+    const auto upper = firstAtOrBelow(u.down, previous);
+    const auto lower = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size() - 1, u.down.back().to}}
+                              : firstAtOrBelow(u.down, level);
+    if (!upper || !lower) return {};
+    return pathBetween(u.down, *upper, *lower);
+  }
+
   void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
     const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
     const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
     const auto out = lowest ? std::optional<ProfilePoint>{ProfilePoint{0, lowPoint}}
                             : roughingIntersection(u.up, level, std::numeric_limits<double>::infinity());
-    const double inZ = in ? in->at.z : lowPoint.z;
     const std::vector<std::string> rules{c_.rules.undercut};
-    emit(MoveKind::Rapid, {inZ, current().x}, 0, MovePhase::Pass, k, rules);
-    emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+    const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
+    if (side.empty() || isWall(side)) {
+      const double inZ = in ? in->at.z : lowPoint.z;
+      emit(MoveKind::Rapid, {inZ, current().x}, 0, MovePhase::Pass, k, rules);
+      emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+    } else {
+      emit(MoveKind::Rapid, {side.front().from.z, current().x}, 0, MovePhase::Pass, k, rules);
+      emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
+      for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
+    }
     if (out && !u.up.empty()) {
       emit(MoveKind::Feed, out->at, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : cleanupAlongProfile(u.up, *out, previous)) {

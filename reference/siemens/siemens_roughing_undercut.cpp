@@ -46,10 +46,12 @@ std::optional<Point> reachesLevelOn(const Segment& s, double level) {
   return std::nullopt;
 }
 
-double lowestLevelAtOrAbove(const std::vector<double>& levels, double x) {
+// The lowest level strictly above the rim (the top when none is): the level through a rim stops
+// there (its cleanup turns back with the profile), so only the levels above it pass over the pocket.
+double lowestLevelAbove(const std::vector<double>& levels, double x) {
   double best = levels.front();
   for (double l : levels) {
-    if (l >= x - kGeomEps) best = std::min(best, l);
+    if (l > x + kGeomEps) best = std::min(best, l);
   }
   return best;
 }
@@ -148,7 +150,7 @@ std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const s
       ++i;
       continue;
     }
-    const double top = lowestLevelAtOrAbove(levels, rim->x);
+    const double top = lowestLevelAbove(levels, rim->x);
     PocketWalk walk = walkPocket(profile, i, *rim, top);
     if (walk.nextSegment == i && distance(walk.end, *rim) <= kGeomEps) {
       ++i;

@@ -10,7 +10,7 @@
 namespace cyclecert {
 
 struct Undercut {
-  double top = 0;              // the lowest roughing level that passed over the pocket: its stock lies below
+  double top = 0;              // the lowest roughing level that passed over the pocket (strictly above its rim): its stock lies below
   std::vector<Segment> down;   // the profile from where it turns back down to the pocket's lowest point
   std::vector<Segment> up;     // from the lowest point until the profile is back at `top` (or ends)
   double bottom() const;       // the lowest point's x
@@ -30,7 +30,8 @@ bool hasNoLength(const Segment& portion);
 std::optional<Point> descentStartOn(const Segment& s);
 
 // The undercuts of `profile`, in order along it. `levels` are the roughing levels from the top down
-// (the top of the profile first): a pocket's stock lies below the lowest level at or above its rim.
+// (the top of the profile first): a pocket's stock lies below the lowest level strictly above its rim
+// (the level through a rim stops there).
 std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const std::vector<double>& levels);
 
 }  // namespace cyclecert
