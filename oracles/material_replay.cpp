@@ -466,11 +466,32 @@ MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
 // siemens_cycle_spec.h) in the plane.
 Point siemensAway(const SiemensCycleSpec& s) { return s.frame.toPlane(Point{0, 1}); }
 
+// SINUMERIK (LCYC95.ROUGH note, interpretation): below the contour's first point the part's face
+// stands at that point's z, up to the lowest point of the walls the contour begins with there; a
+// level below that meets the part at the face. What lies behind the face and above the profile (a
+// recess the contour draws beyond a raised start) is out of the levels' reach: no stock of theirs.
+BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
+  if (s.profile.empty()) return {};
+  const double frontZ = s.profile.front().from.z;
+  double faceTop = s.profile.front().from.x;
+  for (const Segment& seg : s.profile) {
+    if (seg.isArc() || std::abs(seg.to.z - frontZ) > kGeomEps) break;
+    faceTop = std::min(faceTop, seg.to.x);
+  }
+  std::vector<Point> corners;
+  for (Point p : {Point{frontZ - reach, faceTop}, Point{frontZ, faceTop}, Point{frontZ, faceTop - reach},
+                  Point{frontZ - reach, faceTop - reach}}) {
+    corners.push_back(s.frame.toPlane(p));
+  }
+  return regionFrom(corners);
+}
+
 // The stock a SINUMERIK call implies (interpretation, LCYC95.ROUGH note): a call that roughs takes
 // the bar its first level is cut from — everything between the roughing profile (contour +
 // allowances) and the level of the profile's highest point (LCYC95.DEPTH), over the profile's span
-// along the cut axis; a call that only finishes (types 5…8) takes the allowance left by an earlier
-// roughing — between the roughing profile and the finishing path.
+// along the cut axis, less what stands behind the part's face (siemensFrontFace); a call that only
+// finishes (types 5…8) takes the allowance left by an earlier roughing — between the roughing
+// profile and the finishing path.
 BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
                              const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
   const BgRegion belowProfile = partRegionOf(profile, away, reach, chordTolerance);
@@ -481,7 +502,7 @@ BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segmen
   const double top = s.levels.top;  // the frame's x is the plane's depth along `away`
   const BgRegion band = regionFrom({frame.point(lo, top), frame.point(hi, top), frame.point(hi, top - reach),
                                     frame.point(lo, top - reach)});
-  return without(band, belowProfile);
+  return without(without(band, belowProfile), siemensFrontFace(s, reach));
 }
 
 // What a SINUMERIK call leaves standing by its rules: LCYC95 roughs no undercut (CYCLE95.UNDERCUT

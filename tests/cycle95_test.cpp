@@ -90,14 +90,16 @@ TEST(Cycle95Rough, DamInterruptsTheCut) {
 //  pass 1 (level 4): G0 in to (1, 4); G1 to the face z 0; along it to (0, 6) and the flat to (−5, 6),
 //    where the profile turns down (the pocket): stop; retract (−4, 7); G0 back (1, 7).
 //  pass 2 (level 0): G0 (1, 0); G1 (0, 0); up the face to the previous level (0, 4); retract (1, 5).
-//  The pocket: its rim (−5, 6) is below level 8 (the top: the lowest level at or above it), so its stock
-//  lies under 8, down to its lowest point x 2: depth 6, MID 4: 2 steps of 3, levels 5 and 2, at FF2.
-//  G0 up to the start's height: (1, 9).
-//  pass 3 (level 5): the falling side (−5, 6)→(−10, 2) is at x 5 at z −6.25: G0 (−6.25, 9), G1 down
-//    (−6.25, 5); across to the rising side (−10, 2)→(−15, 6) at x 5: z −13.75; along it to (−15, 6) and
-//    up the face to the previous level 8: (−15, 8); retract (−14, 9).
-//  pass 4 (level 2, the lowest point (−10, 2)): G0 (−10, 9); G1 (−10, 2); along the rising side to the
-//    previous level 5: (−13.75, 5); retract (−12.75, 6).
+//  The pocket: its rim (−5, 6) is below level 8 (the top: the lowest level strictly above it), so its
+//  stock lies under 8, down to its lowest point x 2: depth 6, MID 4: 2 steps of 3, levels 5 and 2, at
+//  FF2. G0 up to the start's height: (1, 9).
+//  pass 3 (level 5): the previous level 8 stands above the rim, so the descent starts at the rim:
+//    G0 (−5, 9), G1 down to (−5, 6), along the falling side (−5, 6)→(−10, 2) to x 5 at z −6.25;
+//    across to the rising side (−10, 2)→(−15, 6) at x 5: z −13.75; along it to (−15, 6) and up the
+//    face to the previous level 8: (−15, 8); retract (−14, 9).
+//  pass 4 (level 2, the lowest point (−10, 2)): G0 along at x 9 to above where level 5 met the
+//    falling side, (−6.25, 9); G1 down to (−6.25, 5); along the falling side to (−10, 2); along the
+//    rising side to the previous level 5: (−13.75, 5); retract (−12.75, 6).
 //  The axes return one after the other, X first: (−12.75, 9), then (1, 9).
 TEST(Cycle95Undercut, AVPocketIsRoughedAtFF2) {
   const SiemensContour v = polyline("V", {{0, 0}, {0, 6}, {-5, 6}, {-10, 2}, {-15, 6}, {-15, 8}, {-25, 8}});
@@ -116,20 +118,22 @@ TEST(Cycle95Undercut, AVPocketIsRoughedAtFF2) {
                              {G1, {0, 4}, "pass", 2},
                              {G0, {1, 5}, "pass", 2},
                              {G0, {1, 9}, "pass", 3},
-                             {G0, {-6.25, 9}, "pass", 3},
+                             {G0, {-5, 9}, "pass", 3},
+                             {G1, {-5, 6}, "pass", 3},
                              {G1, {-6.25, 5}, "pass", 3},
                              {G1, {-13.75, 5}, "pass", 3},
                              {G1, {-15, 6}, "pass", 3},
                              {G1, {-15, 8}, "pass", 3},
                              {G0, {-14, 9}, "pass", 3},
-                             {G0, {-10, 9}, "pass", 4},
+                             {G0, {-6.25, 9}, "pass", 4},
+                             {G1, {-6.25, 5}, "pass", 4},
                              {G1, {-10, 2}, "pass", 4},
                              {G1, {-13.75, 5}, "pass", 4},
                              {G0, {-12.75, 6}, "pass", 4},
                              {G0, {-12.75, 9}, "return"},
                              {G0, {1, 9}, "return"},
                          });
-  for (std::size_t i = 11; i < 22; ++i) {
+  for (std::size_t i = 11; i < 24; ++i) {
     EXPECT_EQ(out.moves[i].rules, (std::vector<std::string>{"CYCLE95.UNDERCUT"})) << i;
     if (out.moves[i].kind == MoveKind::Feed) {
       EXPECT_EQ(out.moves[i].feed, 0.05) << i;
@@ -205,12 +209,13 @@ TEST(Cycle95Seed, L18SeventeenPassesThenTwoInTheUndercutThenFinishing) {
     k = m.pass;  // the infeed of an axis-parallel pass ends on its level
     EXPECT_NEAR(m.to.x, k == 17 ? 0.3 : 25.5 - k * 25.2 / 17, 1e-9) << "pass " << k;
   }
-  // The undercut's two levels: 21.052941 − 1.913261/2 = 20.096311 and its lowest point 19.13968.
+  // The undercut's two levels: 21.052941 − 1.913261/2 = 20.096311 and its lowest point 19.13968 —
+  // each pocket pass's lowest feed (it runs down the falling side to its level, across, and back up).
   std::vector<double> undercutLevels;
   for (const Move& m : out.moves) {
-    if (m.pass > 17 && m.kind == MoveKind::Feed && undercutLevels.size() < std::size_t(m.pass - 17)) {
-      undercutLevels.push_back(m.to.x);  // the plunge comes first
-    }
+    if (m.pass <= 17 || m.kind != MoveKind::Feed) continue;
+    if (undercutLevels.size() < std::size_t(m.pass - 17)) undercutLevels.push_back(m.to.x);
+    undercutLevels[m.pass - 18] = std::min(undercutLevels[m.pass - 18], m.to.x);
   }
   ASSERT_EQ(undercutLevels.size(), 2u);
   EXPECT_NEAR(undercutLevels[0], 20.096311, 1e-5);
@@ -409,7 +414,10 @@ TEST(Cycle95Rough, ALevelThroughAnArcsEndGoesOnAlongTheNextElement) {
 // an arc"): pass 2 stops there, not after the falling arc. The pocket: from the level above the rim,
 // 17.5, met again at (−20, 17.5), down to x 12: 5.5 in 2 steps of 2.75 (levels 14.75, 12) at FF2. Level
 // 14.75 meets the arc at z = −10 − √(4 − 0.75²) = −11.854050 and the rising side at (−15, 14.75);
-// level 12 is the pocket's lowest point, (−12, 12) where the falling side ends.
+// level 12 is the pocket's lowest point, (−12, 12) where the falling side ends. Each pocket level runs
+// down the falling side from where the previous one met it: pass 5 from the rim (below 17.5), G1
+// down to (−10, 16), then G3 along the arc (centre (−10, 14)) to (−11.854050, 14.75); pass 6 G1 down
+// to (−11.854050, 14.75), G3 on along the arc to its end (−12, 14), G1 down the line to (−12, 12).
 TEST(Cycle95Undercut, ARimAtAnArcsTopStopsThePasses) {
   SiemensContour c = polyline("L7", {{0, 10}, {-5, 10}, {-5, 16}, {-10, 16}});
   c.segments.push_back(arc(SegmentKind::ArcCCW, {-10, 16}, {-12, 14}, {-10, 14}, 5));
@@ -443,14 +451,17 @@ TEST(Cycle95Undercut, ARimAtAnArcsTopStopsThePasses) {
                              {G1, {-5, 12.5}, "pass", 4},
                              {G0, {-4, 13.5}, "pass", 4},
                              {G0, {-4, 21}, "pass", 5},
-                             {G0, {z1475, 21}, "pass", 5},
+                             {G0, {-10, 21}, "pass", 5},
+                             {G1, {-10, 16}, "pass", 5},
                              {G1, {z1475, 14.75}, "pass", 5},
                              {G1, {-15, 14.75}, "pass", 5},
                              {G1, {-15, 16}, "pass", 5},
                              {G1, {-20, 16}, "pass", 5},
                              {G1, {-20, 17.5}, "pass", 5},
                              {G0, {-19, 18.5}, "pass", 5},
-                             {G0, {-12, 18.5}, "pass", 6},
+                             {G0, {z1475, 18.5}, "pass", 6},
+                             {G1, {z1475, 14.75}, "pass", 6},
+                             {G1, {-12, 14}, "pass", 6},
                              {G1, {-12, 12}, "pass", 6},
                              {G1, {-15, 12}, "pass", 6},
                              {G1, {-15, 14.75}, "pass", 6},
@@ -458,6 +469,11 @@ TEST(Cycle95Undercut, ARimAtAnArcsTopStopsThePasses) {
                              {G0, {-14, 21}, "return"},
                              {G0, {1, 21}, "return"},
                          });
+  // The two pieces along the falling arc keep its centre and sense (G3).
+  for (std::size_t i : {25u, 33u}) {
+    EXPECT_EQ(out.moves[i].shape, SegmentKind::ArcCCW) << i;
+    EXPECT_EQ(out.moves[i].center, (std::optional<Point>{Point{-10, 14}})) << i;
+  }
 }
 
 // --- A contour subprogram without elements (issue 16; LCYC95.ALARMS) ---

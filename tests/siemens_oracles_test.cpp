@@ -314,10 +314,21 @@ TEST(SiemensOracles, RetractAt45DegreesIsReportedInEveryFrame) {
 }
 
 TEST(SiemensOracles, FanucOraclesDoNotJudgeSiemensPrograms) {
-  // Only the SINUMERIK oracles run on a SINUMERIK program.
+  // On a SINUMERIK program only the SINUMERIK oracles and the material ones (no-gouge, rapids-in-air,
+  // complete) run, and the material ones cite the call's own cycle's rules. An empty path leaves
+  // the whole stock: complete reports it.
   const std::vector<Finding> f = judged(lcyc95Program("1"), "sinumerik-802s", PathBuilder({2, 25}).path);
   ASSERT_FALSE(f.empty());
-  for (const Finding& x : f) EXPECT_EQ(x.oracle.rfind("siemens-", 0), 0u) << x.oracle;
+  bool complete = false;
+  for (const Finding& x : f) {
+    const bool material = x.oracle == "no-gouge" || x.oracle == "rapids-in-air" || x.oracle == "complete";
+    EXPECT_TRUE(material || x.oracle.rfind("siemens-", 0) == 0) << x.oracle;
+    if (material) {
+      for (const std::string& rule : x.rules) EXPECT_EQ(rule.rfind("LCYC95.", 0), 0u) << x.oracle << " " << rule;
+    }
+    complete = complete || x.oracle == "complete";
+  }
+  EXPECT_TRUE(complete);
 }
 
 
@@ -356,12 +367,63 @@ TEST(SiemensOracles, AFallFromTheContoursFrontIsNoUndercut) {
 }
 
 
+// A V pocket (CYCLE95.UNDERCUT): L1 (radius) (0, 0) → (0, 6) → (−5, 6) → (−10, 2) → (−15, 6) →
+// (−15, 8) → (−25, 8), MID 4, _VRT 1: main levels 4, 0; the pocket from level 8 (strictly above the
+// rim (−5, 6)) down to x 2 in two steps of 3 (levels 5, 2). Its first level runs down the falling side
+// from the rim to (−6.25, 5) (tests/cycle95_test.cpp derives the whole path by hand). Before, it
+// plunged straight down at z −6.25: the ridge between the falling side and the plunge, z −5 … −6.25
+// above the side up to 8, stayed standing, which `complete` now finds on such a path.
+TEST(SiemensOracles, APocketLevelRunsDownItsFallingSide) {
+  const std::string program = "T1 D1\nG0 X30 Z5\nCYCLE95(\"L1\", 4, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 1)\nM02\n";
+  const std::string contour = "G1 X0 Z0\nX12\nZ-5\nX4 Z-10\nX12 Z-15\nX16\nZ-25\nRET\n";
+  PlanRequest request{program, "v.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
+  // The plunge of before: G0 (−6.25, 9), G1 (−6.25, 5) instead of G0 (−5, 9), G1 (−5, 6), G1 (−6.25, 5).
+  Toolpath plunge = path;
+  std::size_t rim = 0;
+  while (rim < plunge.moves.size() &&
+         !(nearlyEqual(plunge.from(rim), {-5, 9}, 1e-9) && nearlyEqual(plunge.moves[rim].to, {-5, 6}, 1e-9))) {
+    ++rim;
+  }
+  ASSERT_LT(rim + 1, plunge.moves.size());
+  ASSERT_TRUE(nearlyEqual(plunge.moves[rim + 1].to, {-6.25, 5}, 1e-9));
+  plunge.moves[rim - 1].to = {-6.25, 9};
+  plunge.moves.erase(plunge.moves.begin() + static_cast<std::ptrdiff_t>(rim));
+  EXPECT_FALSE(of(judged(program, "sinumerik-802d", plunge, contour), "complete").empty());
+}
+
+// A rim on a main level (CYCLE95.UNDERCUT): L1 (radius) (0, 0) → (0, 4) → (−5, 4) → (−10, 2) →
+// (−15, 2) → (−15, 8) → (−25, 8), MID 4: main levels 4 and 0; level 4 runs along the flat to the rim
+// (−5, 4) and stops there. The pocket's top is the level strictly above the rim, 8: from 8 down to 2,
+// two steps of 3 (levels 5 and 2). Level 5 stands above the rim: it crosses from the rim's z −5 to
+// the rising wall at z −15. Before, the top was the rim's own level 4, and the band between 4 and 8
+// over z −5 … −15 stayed standing (`complete` found it).
+TEST(SiemensOracles, ARimOnALevelIsRoughedFromTheLevelAbove) {
+  const std::string program = "T1 D1\nG0 X30 Z5\nCYCLE95(\"L1\", 4, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 1)\nM02\n";
+  const std::string contour = "G1 X0 Z0\nX8\nZ-5\nX4 Z-10\nZ-15\nX16\nZ-25\nRET\n";
+  PlanRequest request{program, "rim.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
+  bool crossesAtFive = false;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    const Move& m = path.moves[i];
+    crossesAtFive = crossesAtFive || (m.kind == MoveKind::Feed && nearlyEqual(path.from(i), {-5, 5}, 1e-9) &&
+                                      nearlyEqual(m.to, {-15, 5}, 1e-9) && m.feed && std::abs(*m.feed - 0.05) < 1e-12);
+  }
+  EXPECT_TRUE(crossesAtFive);
+}
+
 // A groove behind a raised contour start (LCYC95.ROUGH / CYCLE95.UNDERCUT, interpretation): L1
 // begins at (z 0, x 1.4), rounds up to (−0.1, 1.5), falls to (−0.1, 1), runs to (−1.1, 1) and rises
 // to (−1.1, 1.5). Below the contour's first point the part's face stands at z 0, up to x 1.4; the
 // one level (1.5 − MID 0.5 = 1) lies below that top, so its main pass meets the face at z 0 and
 // stops there, and the groove behind is an undercut roughed at FF2. Before: the main pass ran on
 // at x 1 through the part's front (z 0 … −0.1, below the rounding) and along the groove at FF1.
+// Having met the face, the pass goes up it to the contour's start (0, 1.4) and along the rounding
+// to the previous level 1.5 (the contour-parallel cleanup): feeds on the profile, not along the level.
 TEST(SiemensOracles, ALevelBelowARaisedContourStartStopsAtThePartsFace) {
   const std::string program = "T1 D1\nG0 X4.2 Z0.6\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
   const std::string contour = "G1X2.8Z0\nG3X3Z-0.1CR=0.2\nG1X2Z-0.1\nG1X2Z-1.1\nG1X3Z-1.1\nRET\n";
@@ -373,7 +435,8 @@ TEST(SiemensOracles, ALevelBelowARaisedContourStartStopsAtThePartsFace) {
     const Move& m = path.moves[i];
     const bool undercut = std::find(m.rules.begin(), m.rules.end(), "CYCLE95.UNDERCUT") != m.rules.end();
     if (m.kind != MoveKind::Feed) continue;
-    if (!undercut) {
+    const bool alongTheLevel = std::abs(path.from(i).x - 1) < 1e-9 && std::abs(m.to.x - 1) < 1e-9;
+    if (!undercut && alongTheLevel) {
       EXPECT_GE(std::min(path.from(i).z, m.to.z), -1e-9) << "main-pass feed " << i << " behind the face";
     }
     if (undercut && std::abs(m.to.x - 1) < 1e-9 && m.to.z < -1 && m.feed && std::abs(*m.feed - 0.05) < 1e-12) {

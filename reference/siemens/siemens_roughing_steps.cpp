@@ -241,18 +241,45 @@ class StockRemovalPlanner {
     return top;
   }
 
+  // Where the profile leaves the part's face: the end of the walls the contour begins with at its
+  // first point's z (the first point itself without them), and the element that starts there.
+  ProfilePoint faceFoot() const {
+    const double frontZ = c_.profile.front().from.z;
+    ProfilePoint foot{0, c_.profile.front().from};
+    while (foot.segment < c_.profile.size()) {
+      const Segment& s = c_.profile[foot.segment];
+      if (s.isArc() || std::abs(s.to.z - frontZ) > kGeomEps) break;
+      foot = {foot.segment + 1, s.to};
+    }
+    return foot;
+  }
+
   void roughingPass(int k, double level, double previous) {
     const bool meetsTheFace = level < frontFaceTop() - kGeomEps;
     const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z);
     const double hitZ = meetsTheFace ? c_.profile.front().from.z : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
-    if (hit) {
-      for (const Segment& s : cleanupAlongProfile(c_.profile, *hit, previous)) {
-        emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
-      }
-    }
+    if (hit) cleanUpAlongProfile(k, *hit, previous);
+    if (meetsTheFace) cleanUpFromTheFace(k, previous);
     retract(k);
+  }
+
+  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous) {
+    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous)) {
+      emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
+    }
+  }
+
+  // A level that met the part's face (interpretation, LCYC95.ROUGH): where the profile leaves the
+  // face below the previous level, the pass goes on up the face (G1) to that foot and along the
+  // profile up to the previous level, as a level that meets the profile does — else the band
+  // between the two levels above the profile beyond the face stays standing.
+  void cleanUpFromTheFace(int k, double previous) {
+    const ProfilePoint foot = faceFoot();
+    if (foot.segment >= c_.profile.size() || foot.at.x >= previous - kGeomEps) return;
+    emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
+    cleanUpAlongProfile(k, foot, previous);
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
@@ -288,7 +315,9 @@ class StockRemovalPlanner {
     const std::vector<std::string> rules{c_.rules.undercut};
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
-      const double inZ = in ? in->at.z : lowPoint.z;
+      // A level at or above the rim (the pocket's top stands above it) crosses over from the rim.
+      const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
+      const double inZ = in ? in->at.z : level >= rim.x - kGeomEps ? rim.z : lowPoint.z;
       emit(MoveKind::Rapid, {inZ, current().x}, 0, MovePhase::Pass, k, rules);
       emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     } else {
