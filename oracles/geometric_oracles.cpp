@@ -10,6 +10,7 @@
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
 #include "oracles/run_after_cycle.h"
+#include "reference/model/offset.h"
 
 namespace cyclecert {
 
@@ -58,8 +59,31 @@ BgRegion leftover(const MaterialReplay& r, double tolerance) {
   const DepthFrame frame(r.away);
   const BgRegion band = regionFrom({frame.point(span->first, -r.reach), frame.point(span->second, -r.reach),
                                     frame.point(span->second, r.reach), frame.point(span->first, r.reach)});
-  const BgRegion beyondPart = without(r.remaining(), r.part);
-  return checkedIntersection(r.leftAlone.empty() ? beyondPart : without(beyondPart, r.leftAlone), band);
+  BgRegion beyondPart = without(r.remaining(), r.part);
+  if (!r.leftAlone.empty()) beyondPart = without(beyondPart, r.leftAlone);
+  return checkedIntersection(beyondPart, band);
+}
+
+// G73 with a G70 after it (G73.G70): the finishing pass runs along the finish shape and removes
+// everything beyond it on the tool's side — along the side the part stands on (partSideOf), not
+// only along the relief the model's shadows follow: a shape segment parallel to the relief leaves, in
+// the model, the strip between it and the blank (as thin as the allowance's share across the relief)
+// that its own pass's shadow runs along. Only what `complete` measures is mended.
+BgRegion withoutWhatG70Removes(const JudgeInput& in, const MaterialReplay& r, BgRegion left) {
+  const CycleSpec* c = r.cycle;
+  if (left.empty() || !c || !c->patternRepeating() || !in.program.hasFinishingCycle) return left;
+  const Point side = partSideOf(*c);
+  const double tol = tolerance(in);
+  for (std::size_t i = 0; i < r.judgedMoves && !left.empty(); ++i) {
+    if (in.path.moves[i].kind != MoveKind::Feed) continue;
+    const Segment move = in.path.segment(i);
+    if (!nearPath(move.from, c->shape, tol) || !nearPath(pointAt(move, 0.5), c->shape, tol) ||
+        !nearPath(move.to, c->shape, tol)) {
+      continue;
+    }
+    left = without(left, shadowOf(move, side, r.reach, in.settings.chordTolerance));
+  }
+  return left;
 }
 
 // Whether the material left may stand thicker than `allowed` above the target. Where the target is
@@ -180,7 +204,7 @@ class CompleteOracle : public Oracle {
         !r->cycle || r->cycle->semiFinish || r->cycle->patternRepeating() || in.program.hasFinishingCycle;
     const double allowed = (finished ? 0 : r->cycle->depthOfCut) + tolerance(in);
     if (!leftoverMayExceed(*r, allowed, tolerance(in))) return;
-    const BgRegion left = leftover(*r, tolerance(in));
+    const BgRegion left = withoutWhatG70Removes(in, *r, leftover(*r, tolerance(in)));
     // Measured against a finely flattened profile (kMeasuringChord, material_replay.h).
     auto thickest = thickestAbove(left, r->target, r->away, kMeasuringChord);
     if (!thickest || thickest->thickness <= allowed) return;

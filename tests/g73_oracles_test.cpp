@@ -281,6 +281,20 @@ TEST(G73Judging, AShapeSegmentAlongTheAllowanceLeavesNoBlankAboveIt) {
   EXPECT_TRUE(findings.empty()) << findingsText(findings);
 }
 
+// The cone X12.12 Z1.84 → X2 Z-3.22 (5.06 by 5.06: 45°) runs along the relief (1.15, 1.15); the
+// allowance (W0.01, U0.1) stands 0.028 mm across it, so the blank holds a strip that thin along the
+// cone. Every pass's and G70's feed along the cone shadows it along itself (the relief): in the model
+// nothing removed the strip, and `complete` read 7.2 mm along the relief after G70 (found by `fuzz
+// --cycles g73 --seed 1000`, 1 of 400,000, once the blank's band was cut exactly). G70 removes what
+// stands beyond the shape on the part's side.
+TEST(G73Judging, G70RemovesTheStripAlongAShapeSegmentParallelToTheRelief) {
+  const std::string program =
+      "G00 X20.84 Z4.03;\nG73 U1.15 W1.15 R2;\nG73 P10 Q20 U0.1 W0.01 F0.2;\nN10 G01 X12.12 Z1.84;\n"
+      "G01 X2 Z-3.22;\nG01 X2 Z-3.48;\nG01 X4.1 Z-3.76;\nN20 G01 X13.12 Z-3.76;\nG70 P10 Q20;\nM30;\n";
+  const std::vector<Finding> findings = judged(program, planned(program));
+  EXPECT_TRUE(findings.empty()) << findingsText(findings);
+}
+
 TEST(G73Judging, EachOracleDeclaresWhetherItJudgesG73) {
   for (const auto& oracle : allOracles()) {
     if (oracle->id().rfind("siemens-", 0) == 0) continue;  // the SINUMERIK oracles judge LCYC95/CYCLE95 only
