@@ -431,6 +431,24 @@ bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move
 
 namespace {
 
+// The part: everything below `profile` in `frame` (nothing for an empty profile), and no-gouge's
+// crossing test for it — below a profile that is a graph over the cut axis the part's edges are
+// found by their cut coordinates (nothing to build); any other part's rings are indexed.
+void setPartBelow(MaterialReplay& r, const std::vector<Segment>& profile, const DepthFrame& frame, double chordTolerance) {
+  if (!profile.empty()) {
+    const PartOutline part = partOutlineOf(profile, frame, r.reach, chordTolerance);
+    r.part = partRegionFrom(part, profile, frame, r.reach, chordTolerance);
+    if (part.graph) {
+      std::vector<std::pair<double, double>> top;
+      top.reserve(part.profile.size());
+      for (Point p : part.profile) top.push_back({frame.cut(p), frame.depth(p)});
+      if (top.front().first > top.back().first) std::reverse(top.begin(), top.end());
+      r.partBelowProfile.emplace(frame, std::move(top), part.bottom);
+    }
+  }
+  if (!r.partBelowProfile) r.partForCrossing = CrossingRegion(r.part);
+}
+
 // The replay's frame, stock and part for a FANUC roughing cycle (no move replayed yet).
 MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
   MaterialReplay r;
@@ -443,22 +461,7 @@ MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
   r.target = in.program.hasFinishingCycle ? c.shape : c.roughProfile();
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
   const std::vector<Segment> profile(r.target.begin() + (c.typeII ? 0 : 1), r.target.end());
-  const DepthFrame frame(partSideOf(c));
-  if (!profile.empty()) {
-    const PartOutline part = partOutlineOf(profile, frame, r.reach, in.settings.chordTolerance);
-    r.part = partRegionFrom(part, profile, frame, r.reach, in.settings.chordTolerance);
-    // No-gouge's crossing tests: below a profile that is a graph over the cut axis the part's
-    // edges are found by their cut coordinates (nothing to build); any other part's rings are
-    // indexed.
-    if (part.graph) {
-      std::vector<std::pair<double, double>> top;
-      top.reserve(part.profile.size());
-      for (Point p : part.profile) top.push_back({frame.cut(p), frame.depth(p)});
-      if (top.front().first > top.back().first) std::reverse(top.begin(), top.end());
-      r.partBelowProfile.emplace(frame, std::move(top), part.bottom);
-    }
-  }
-  if (!r.partBelowProfile) r.partForCrossing = CrossingRegion(r.part);
+  setPartBelow(r, profile, DepthFrame(partSideOf(c)), in.settings.chordTolerance);
   return r;
 }
 
@@ -470,14 +473,22 @@ Point siemensAway(const SiemensCycleSpec& s) { return s.frame.toPlane(Point{0, 1
 // stands at that point's z, up to the lowest point of the walls the contour begins with there; a
 // level below that meets the part at the face. What lies behind the face and above the profile (a
 // recess the contour draws beyond a raised start) is out of the levels' reach: no stock of theirs.
-BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
-  if (s.profile.empty()) return {};
+double siemensFaceTop(const SiemensCycleSpec& s) {
   const double frontZ = s.profile.front().from.z;
   double faceTop = s.profile.front().from.x;
   for (const Segment& seg : s.profile) {
     if (seg.isArc() || std::abs(seg.to.z - frontZ) > kGeomEps) break;
     faceTop = std::min(faceTop, seg.to.x);
   }
+  return faceTop;
+}
+
+BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
+  if (s.profile.empty() || s.contour.empty()) return {};
+  // The profile's first point's z, or the contour's where the allowance moved the profile's start
+  // behind it.
+  const double frontZ = std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+  const double faceTop = siemensFaceTop(s);
   std::vector<Point> corners;
   for (Point p : {Point{frontZ - reach, faceTop}, Point{frontZ, faceTop}, Point{frontZ, faceTop - reach},
                   Point{frontZ - reach, faceTop - reach}}) {
@@ -494,15 +505,29 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
 // profile and the finishing path.
 BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
                              const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
-  const BgRegion belowProfile = partRegionOf(profile, away, reach, chordTolerance);
-  if (!s.roughs()) return without(belowProfile, partRegionOf(finish, away, reach, chordTolerance));
+  if (!s.roughs()) {
+    return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
+  }
   const DepthFrame frame(away);
   const auto [lo, hi] = cutSpanOf(profile, frame);
   if (!(hi > lo)) return {};
   const double top = s.levels.top;  // the frame's x is the plane's depth along `away`
-  const BgRegion band = regionFrom({frame.point(lo, top), frame.point(hi, top), frame.point(hi, top - reach),
-                                    frame.point(lo, top - reach)});
-  return without(without(band, belowProfile), siemensFrontFace(s, reach));
+  BgRegion stock;
+  // A profile that is a graph over the cut axis and stands below the top between its ends bounds the
+  // stock itself: the profile, up to the top at its end and back along it — no boolean.
+  if (isGraphOverCutAxis(profile, frame) && highestBetweenEnds(profile, frame) < top - kTidyDistance) {
+    std::vector<Point> outline;
+    for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
+    outline.push_back(frame.atDepth(profile.back().to, top));
+    outline.push_back(frame.atDepth(profile.front().from, top));
+    stock = regionFromSimpleOutline(outline);
+  } else {
+    const BgRegion band = regionFrom({frame.point(lo, top), frame.point(hi, top), frame.point(hi, top - reach),
+                                      frame.point(lo, top - reach)});
+    stock = without(band, partRegionOf(profile, away, reach, chordTolerance));
+  }
+  // Only a profile that comes down below the face's top has stock behind the face.
+  return s.levels.bottom < siemensFaceTop(s) - kTidyDistance ? without(stock, siemensFrontFace(s, reach)) : stock;
 }
 
 // What a SINUMERIK call leaves standing by its rules: LCYC95 roughs no undercut (CYCLE95.UNDERCUT
@@ -539,11 +564,16 @@ MaterialReplay siemensReplayOf(const JudgeInput& in, const SiemensCycleSpec& s) 
   const std::optional<BgRegion> given = givenStock(in);
   r.stock = given ? *given : siemensImpliedStock(s, profile, finish, r.away, r.reach, chord);
   r.target = s.finishes() ? finish : profile;
-  const BgRegion belowProfile = partRegionOf(profile, r.away, r.reach, chord);
-  r.part = s.finishes() ? checkedIntersection(belowProfile, partRegionOf(finish, r.away, r.reach, chord)) : belowProfile;
-  r.partForCrossing = CrossingRegion(r.part);
+  const DepthFrame frame(r.away);
+  if (!s.finishes()) {
+    setPartBelow(r, profile, frame, chord);
+  } else if (s.tool.noseRadius <= 0) {
+    setPartBelow(r, finish, frame, chord);  // the contour: the profile stands above it
+  } else {
+    r.part = checkedIntersection(partRegionOf(profile, r.away, r.reach, chord), partRegionOf(finish, r.away, r.reach, chord));
+    r.partForCrossing = CrossingRegion(r.part);
+  }
   r.leftAlone = siemensLeftAlone(s, r.reach);
-  if (s.finishes()) r.allowanceLayer = without(belowProfile, partRegionOf(finish, r.away, r.reach, chord));
   return r;
 }
 
@@ -554,7 +584,8 @@ MaterialReplay siemensReplayOf(const JudgeInput& in, const SiemensCycleSpec& s) 
 // (the rapid that ends there), the allowance in front of that start.
 class SiemensDocumentedCrossings {
  public:
-  SiemensDocumentedCrossings(const MaterialReplay& r, const SiemensCycleSpec& s, double tol) : r_(r), s_(s), tol_(tol) {}
+  SiemensDocumentedCrossings(const MaterialReplay& r, const SiemensCycleSpec& s, double tol, double chordTolerance)
+      : r_(r), s_(s), tol_(tol), chord_(chordTolerance) {}
 
   // A feed of the path: a slanted infeed ending on a main level leaves its chip.
   void noteFeed(const Segment& feed) {
@@ -570,9 +601,10 @@ class SiemensDocumentedCrossings {
   Crossing without(const Crossing& c, const Segment& rapid) const {
     const bool toContourStart =
         !s_.finishPath.empty() && distance(rapid.to, s_.frame.toPlane(s_.finishPath.front().from)) <= tol_;
+    if (c.pieces.empty()) return c;
     Crossing kept;
     for (const Segment& piece : c.pieces) {
-      if (inside(chips_, piece) || (toContourStart && inside(r_.allowanceLayer, piece))) continue;
+      if (inside(chips_, piece) || (toContourStart && inside(allowanceLayer(), piece))) continue;
       kept.pieces.push_back(piece);
       kept.length += piece.length();
     }
@@ -588,10 +620,22 @@ class SiemensDocumentedCrossings {
     return true;
   }
 
+  // Between the roughing profile and the finishing path: made when a rapid to the contour start
+  // first crosses material.
+  const BgRegion& allowanceLayer() const {
+    if (!layer_) {
+      const BgRegion belowProfile = partRegionOf(s_.frame.toPlane(s_.profile), r_.away, r_.reach, chord_);
+      layer_ = cyclecert::without(belowProfile, partRegionOf(s_.frame.toPlane(s_.finishPath), r_.away, r_.reach, chord_));
+    }
+    return *layer_;
+  }
+
   const MaterialReplay& r_;
   const SiemensCycleSpec& s_;
   double tol_;
+  double chord_;
   BgRegion chips_;
+  mutable std::optional<BgRegion> layer_;
 };
 
 // The replay before its moves, for the program's one roughing cycle or SINUMERIK call.
@@ -635,7 +679,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
   const std::size_t firstPass = c ? firstMoveOfTheCycles(in) : r.judgedMoves;
   EarlierFeeds earlierFeeds(r.away);
   std::optional<SiemensDocumentedCrossings> documented;
-  if (r.siemens) documented.emplace(r, *r.siemens, tolerance);
+  if (r.siemens) documented.emplace(r, *r.siemens, tolerance, in.settings.chordTolerance);
   for (std::size_t i = 0; i < r.judgedMoves; ++i) {
     const Segment move = in.path.segment(i);
     if (in.path.moves[i].kind == MoveKind::Rapid) {

@@ -34,9 +34,6 @@ struct MaterialReplay {
   // Material the cycle leaves standing by its rules, which completeness does not ask for: LCYC95's
   // undercuts when the call only roughs (no undercut roughing, CYCLE95.UNDERCUT note).
   BgRegion leftAlone;
-  // SINUMERIK: the allowance layer between the roughing profile and the finishing path, which the
-  // finishing pass's G0 to the contour start may meet in front of that start (LCYC95.FINISH note).
-  BgRegion allowanceLayer;
   // The same, prepared for no-gouge's crossing tests: the region below the profile when it is a
   // graph over the cut axis, else the part's rings.
   std::optional<RegionBelowGraph> partBelowProfile;

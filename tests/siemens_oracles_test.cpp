@@ -416,6 +416,29 @@ TEST(SiemensOracles, ARimOnALevelIsRoughedFromTheLevelAbove) {
   EXPECT_TRUE(crossesAtFive);
 }
 
+// A contour that begins by falling (L1, radius: (0, 8) → (−2, 6) → (−6, 6) → (−8, 10) → (−12, 10)),
+// FAL 0.5, MID 2, VARI 9. The allowance moves the profile's start along the first element's normal,
+// (−0.7071, +0.7071)·0.5, to (−0.354, 8.354): behind the contour's front z 0. Levels: top 10.5, bottom
+// 6.5, two steps of 2: 8.5 and 6.5; level 6.5 lies below the face's top 8.354 and meets the part's
+// face — at the contour's z 0 (LCYC95.ROUGH note), where before it ran on to the profile's z −0.354,
+// 0.354 mm into the part below the falling chamfer (no-gouge against the finished contour).
+TEST(SiemensOracles, ALevelMeetsTheFaceAtTheContoursFrontNotBehindIt) {
+  const std::string program = "T1 D1\nG0 X30 Z5\nCYCLE95(\"L1\", 2, 0, 0, 0.5, 0.1, 0.05, 0.05, 9, 0, 0, 1)\nM02\n";
+  const std::string contour = "G1 X16 Z0\nX12 Z-2\nZ-6\nX20 Z-8\nZ-12\nRET\n";
+  PlanRequest request{program, "fall.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
+  bool stopsAtTheFace = false;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    const Move& m = path.moves[i];
+    if (m.kind != MoveKind::Feed || std::abs(m.to.x - 6.5) > 1e-9 || std::abs(path.from(i).x - 6.5) > 1e-9) continue;
+    EXPECT_GE(m.to.z, -1e-9) << "level 6.5 runs behind the face at move " << i;
+    stopsAtTheFace = stopsAtTheFace || std::abs(m.to.z) < 1e-9;
+  }
+  EXPECT_TRUE(stopsAtTheFace);
+}
+
 // A groove behind a raised contour start (LCYC95.ROUGH / CYCLE95.UNDERCUT, interpretation): L1
 // begins at (z 0, x 1.4), rounds up to (−0.1, 1.5), falls to (−0.1, 1), runs to (−1.1, 1) and rises
 // to (−1.1, 1.5). Below the contour's first point the part's face stands at z 0, up to x 1.4; the

@@ -18,10 +18,8 @@
 #include "reference/model/cycle_family.h"
 #include "reference/profiles/default_profile.h"
 #include "reference/model/offset.h"
-#include "reference/siemens/siemens_roughing_contour.h"
-#include "reference/siemens/siemens_roughing_frame.h"
+#include "reference/siemens/siemens_roughing_cycle.h"
 #include "reference/siemens/siemens_roughing_steps.h"
-#include "reference/siemens/siemens_roughing_undercut.h"
 #include "reference/siemens/siemens_runner.h"
 
 namespace cyclecert {
@@ -307,192 +305,28 @@ const SiemensPlanners& undercutAtFf1Planners() {
   return planners;
 }
 
-// "siemens-max-infeed": the roughing levels stepped down by R108 / MID from the top, the last step
-// smaller (to the profile's lowest point), instead of the fewest equal steps not above it
-// (LCYC95.DEPTH). The passes at those levels are planned as the reference plans a pass
-// (LCYC95.ROUGH: infeed, G1 to the roughing intersection, along the profile up to the previous
-// level or where it turns back down, retract in each axis, back along the cut axis), in the
-// stock-removal frame; everything else — approach, undercuts, return, finishing — is the
-// reference's (a G0 along one axis after the passes stays on its axis: keepingItsAxis).
-struct LevelFaultSettings {
-  MachiningType type;
-  FinishingAllowance allowance;
-  double clearance = 0, maxInfeed = 0, infeedAngle = 0, roughingFeed = 0, interruptLength = 0;
-  MoveKind infeedKind = MoveKind::Feed;
-  std::string rough, depth, interrupt;  // the rule IDs the reference's pass moves cite
-};
-
-struct ProfilePoint {
-  std::size_t segment = 0;
-  Point at;
-};
-
-// The first point where `level`, run towards −z from `fromZ`, meets the profile.
-std::optional<ProfilePoint> levelMeetsProfile(const std::vector<Segment>& profile, double level, double fromZ) {
-  std::optional<ProfilePoint> best;
-  for (std::size_t i = 0; i < profile.size(); ++i) {
-    for (const Point& p : intersectWithLevelX(profile[i], level)) {
-      if (p.z > fromZ + kGeomEps) continue;
-      if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
-    }
-  }
-  return best;
-}
-
-double positionAlong(const Segment& s, Point p) {
-  if (!s.isArc()) return distance(s.from, p);
-  return offsetAlongArc(s, std::atan2(p.x - s.center.x, p.z - s.center.z)).value_or(std::abs(sweep(s)));
-}
-
-// The profile from `hit` up to the level `upper`, or to where it turns back down, or to its end.
-std::vector<Segment> profileUpToLevel(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper) {
-  std::vector<Segment> pieces;
-  for (std::size_t i = hit.segment; i < profile.size(); ++i) {
-    const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
-    std::vector<Point> stops;
-    for (const Point& p : intersectWithLevelX(s, upper)) {
-      if (distance(p, s.from) > kGeomEps) stops.push_back(p);
-    }
-    if (const auto descent = descentStartOn(s)) stops.push_back(*descent);
-    if (!stops.empty()) {
-      const Point stop = *std::min_element(stops.begin(), stops.end(),
-                                           [&](Point a, Point b) { return positionAlong(s, a) < positionAlong(s, b); });
-      pieces.push_back(portionOf(s, s.from, stop));
-      break;
-    }
-    pieces.push_back(s);
-    if (s.to.x >= upper - kGeomEps) break;
-  }
-  return pieces;
-}
-
-class PassesAtMaxInfeed {
- public:
-  PassesAtMaxInfeed(const std::vector<Segment>& profile, Point start, const LevelFaultSettings& s, Point position)
-      : profile_(profile), start_(start), s_(s), at_(position) {}
-
-  std::vector<Move> plan(const std::vector<double>& levels) {
-    const int count = static_cast<int>(levels.size()) - 1;
-    for (int k = 1; k <= count; ++k) {
-      pass(k, levels[static_cast<std::size_t>(k)], levels[static_cast<std::size_t>(k - 1)]);
-      if (k < count) emit(MoveKind::Rapid, {start_.z, at_.x}, k, {s_.rough});
-    }
-    return std::move(moves_);
-  }
-
- private:
-  void pass(int k, double level, double previous) {
-    const auto hit = levelMeetsProfile(profile_, level, start_.z);
-    const double hitZ = hit ? hit->at.z : profile_.back().to.z;
-    const double run = (at_.x - level) * std::tan(s_.infeedAngle * std::acos(-1.0) / 180);
-    emit(s_.infeedKind, {std::max(at_.z - run, hitZ), level}, k, {s_.rough, s_.depth});
-    while (s_.interruptLength > 0 && at_.z - hitZ > s_.interruptLength + kGeomEps) {
-      emit(MoveKind::Feed, {at_.z - s_.interruptLength, level}, k, {s_.rough, s_.interrupt});
-    }
-    emit(MoveKind::Feed, {hitZ, level}, k, {s_.rough});
-    if (hit) {
-      for (const Segment& seg : profileUpToLevel(profile_, *hit, previous)) along(seg, k);
-    }
-    emit(MoveKind::Rapid, at_ + Point{s_.clearance, s_.clearance}, k, {s_.rough});
-  }
-
-  void emit(MoveKind kind, Point to, int k, std::vector<std::string> rules) {
-    if (distance(at_, to) <= kGeomEps) return;
-    Move m;
-    m.kind = kind;
-    m.to = to;
-    if (kind == MoveKind::Feed) m.feed = s_.roughingFeed;
-    stampPhase(m, MovePhase::Pass, k);
-    m.rules = std::move(rules);
-    push(std::move(m));
-  }
-
-  void along(const Segment& seg, int k) {
-    if (seg.length() <= kGeomEps) return;
-    if (!seg.isArc()) return emit(MoveKind::Feed, seg.to, k, {s_.rough});
-    Move m;
-    m.kind = MoveKind::Feed;
-    m.shape = seg.kind;
-    m.to = seg.to;
-    m.center = seg.center;
-    m.feed = s_.roughingFeed;
-    stampPhase(m, MovePhase::Pass, k);
-    m.rules = {s_.rough};
-    push(std::move(m));
-  }
-
-  void push(Move m) {
-    at_ = m.to;
-    moves_.push_back(std::move(m));
-  }
-
-  const std::vector<Segment>& profile_;
-  Point start_;
-  const LevelFaultSettings& s_;
-  Point at_;
-  std::vector<Move> moves_;
-};
-
-// The levels from `top` down by `step`, the last one `bottom` (a smaller last step).
-std::vector<double> levelsByMaxInfeed(double top, double bottom, double step, int count) {
+// "siemens-max-infeed": the main roughing levels stepped down by R108 / MID from the top, the last
+// step smaller (to the profile's lowest point), instead of the fewest equal steps not above it
+// (LCYC95.DEPTH). Everything else is the reference's: its planner with this levels rule.
+std::vector<double> levelsByMaxInfeed(double top, double bottom, double maxInfeed, int line) {
+  const int count = equalInfeedSteps(top - bottom, maxInfeed, line).count;
   std::vector<double> levels{top};
-  for (int k = 1; k < count; ++k) levels.push_back(top - k * step);
-  levels.push_back(bottom);
+  for (int k = 1; k < count; ++k) levels.push_back(top - k * maxInfeed);
+  if (count > 0) levels.push_back(bottom);
   return levels;
-}
-
-SiemensCycleOutcome withLevelsByMaxInfeed(SiemensCycleOutcome out, const SiemensCycleCall& call, const LevelFaultSettings& s) {
-  if (s.type.technology == SiemensTechnology::Finishing || !call.contour || out.moves.empty()) return out;
-  const StockRemovalFrame frame = frameOf(s.type);
-  const std::vector<Segment> profile = roughingProfile(frame.toFrame(call.contour->segments), s.allowance, frame, call.line);
-  const Point start = computedStart(profile, {s.clearance, s.clearance});
-  const double top = start.x - s.clearance;
-  double bottom = top;
-  for (const Segment& seg : profile) bottom = std::min(bottom, extent(seg).xMin);
-  const int count = equalInfeedSteps(top - bottom, s.maxInfeed, call.line).count;
-  // The reference's passes 1…count along the levels (its undercut passes come after them).
-  const auto isLevelPass = [&](const Move& m) {
-    return m.phase == MovePhase::Pass && m.pass >= 1 && m.pass <= count && cites(m, s.rough) &&
-           std::find(m.rules.begin(), m.rules.end(), "CYCLE95.UNDERCUT") == m.rules.end();
-  };
-  const auto first = std::find_if(out.moves.begin(), out.moves.end(), isLevelPass);
-  if (count < 2 || first == out.moves.end()) return out;
-  const auto last = std::find_if(first, out.moves.end(), [&](const Move& m) { return !isLevelPass(m); });
-  const Point position = first == out.moves.begin() ? call.position : std::prev(first)->to;
-  const Point referenceEnd = std::prev(last)->to;
-  std::vector<Move> passes = PassesAtMaxInfeed(profile, start, s, frame.toFrame(position))
-                                 .plan(levelsByMaxInfeed(top, bottom, s.maxInfeed, count));
-  for (Move& m : passes) m = frame.toPlane(std::move(m));
-  Point shift = passes.empty() ? Point{0, 0} : passes.back().to - referenceEnd;
-  const std::size_t after = static_cast<std::size_t>(first - out.moves.begin()) + passes.size();
-  out.moves.erase(first, last);
-  out.moves.insert(out.moves.begin() + static_cast<long>(after - passes.size()), passes.begin(), passes.end());
-  Point from = referenceEnd;
-  for (std::size_t i = after; i < out.moves.size(); ++i) {
-    const Point to = out.moves[i].to;
-    shift = keepingItsAxis(out.moves[i], from, shift);
-    from = to;
-  }
-  out.end = out.moves.back().to;
-  return out;
-}
-
-FinishingAllowance unsignedAllowance(double alongContour, double z, double x) {
-  return {std::abs(alongContour), std::abs(z), std::abs(x)};
 }
 
 const SiemensPlanners& maxInfeedPlanners() {
   static const SiemensPlanners planners{
       [](const SiemensCycleCall& call, const Lcyc95Parameters& p) {
-        const LevelFaultSettings s{p.type, unsignedAllowance(p.allowance, 0, 0), std::abs(p.retract), p.maxInfeed, p.infeedAngle,
-                                   p.roughingFeed, 0, MoveKind::Feed, "LCYC95.ROUGH", "LCYC95.DEPTH", ""};
-        return withLevelsByMaxInfeed(planLcyc95(call, p), call, s);
+        StockRemovalSettings s = lcyc95Settings(p);
+        s.mainLevels = levelsByMaxInfeed;
+        return planStockRemovalCycle(call, s);
       },
       [](const SiemensCycleCall& call, const Cycle95Parameters& p) {
-        const LevelFaultSettings s{p.type, unsignedAllowance(p.allowance, p.allowanceZ, p.allowanceX), std::abs(p.retract),
-                                   p.infeed, 0, p.roughingFeed, std::abs(p.interruptLength), MoveKind::Rapid,
-                                   "CYCLE95.ROUGH", "CYCLE95.DEPTH", "CYCLE95.DAM"};
-        return withLevelsByMaxInfeed(planCycle95(call, p), call, s);
+        StockRemovalSettings s = cycle95Settings(p);
+        s.mainLevels = levelsByMaxInfeed;
+        return planStockRemovalCycle(call, s);
       },
       machiningTypeOf};
   return planners;

@@ -5,14 +5,13 @@
 
 namespace cyclecert {
 
-namespace {
-
 StockRemovalSettings cycle95Settings(const Cycle95Parameters& p) {
   StockRemovalSettings s;
   s.type = p.type;
   s.allowance = {p.allowance, p.allowanceZ, p.allowanceX};
   s.clearance = p.retract;
   s.maxInfeed = p.infeed;
+  s.infeedParameter = "MID";
   s.infeedAngle = 0;
   s.infeedKind = MoveKind::Rapid;  // CYCLE95.ROUGH: "the infeed to the current depth ... with G0"
   s.roughingFeed = p.roughingFeed;
@@ -25,10 +24,7 @@ StockRemovalSettings cycle95Settings(const Cycle95Parameters& p) {
   return s;
 }
 
-}  // namespace
-
 SiemensCycleOutcome planCycle95(const SiemensCycleCall& call, const Cycle95Parameters& p) {
-  requireInfeedDepth(p.infeed, p.type, "MID", call.line);
   return planStockRemovalCycle(call, cycle95Settings(p));
 }
 

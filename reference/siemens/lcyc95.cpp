@@ -18,14 +18,13 @@ std::optional<MachiningType> machiningTypeOf(double value) {
   return t;
 }
 
-namespace {
-
 StockRemovalSettings lcyc95Settings(const Lcyc95Parameters& p) {
   StockRemovalSettings s;
   s.type = p.type;
   s.allowance.alongContour = p.allowance;
   s.clearance = p.retract;
   s.maxInfeed = p.maxInfeed;
+  s.infeedParameter = "R108";
   s.infeedAngle = p.infeedAngle;
   s.infeedKind = MoveKind::Feed;  // "depth infeed at R109" (interpretation: at R111)
   s.roughingFeed = p.roughingFeed;
@@ -35,10 +34,7 @@ StockRemovalSettings lcyc95Settings(const Lcyc95Parameters& p) {
   return s;
 }
 
-}  // namespace
-
 SiemensCycleOutcome planLcyc95(const SiemensCycleCall& call, const Lcyc95Parameters& p) {
-  requireInfeedDepth(p.maxInfeed, p.type, "R108", call.line);
   return planStockRemovalCycle(call, lcyc95Settings(p));
 }
 

@@ -87,6 +87,7 @@ std::vector<Warning> undercutsLeftToFinishing(const std::vector<Segment>& profil
 }  // namespace
 
 SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& settings) {
+  requireInfeedDepth(settings.maxInfeed, settings.type, settings.infeedParameter, call.line);
   requirePlannableValues(call, settings);
   const StockRemovalSettings s = withUnsignedSizes(settings);
   const SiemensContour& contour = requireContour(call);
@@ -97,8 +98,10 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
   cycle.line = call.line;
   cycle.profile = roughingProfile(frame.toFrame(contour.segments), s.allowance, frame, call.line);
   cycle.finishPath = frame.toFrame(finishingPathInPlane(contour, call, frame));
+  cycle.contourFront = frame.toFrame(contour.segments.front().from);
   cycle.clearance = {s.clearance, s.clearance};
   cycle.maxInfeed = s.maxInfeed;
+  cycle.mainLevels = s.mainLevels;
   cycle.infeedAngle = s.infeedAngle;
   cycle.infeedKind = s.infeedKind;
   cycle.roughingFeed = s.roughingFeed;

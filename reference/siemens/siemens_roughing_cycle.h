@@ -17,6 +17,8 @@ struct StockRemovalSettings {
   FinishingAllowance allowance;
   double clearance = 0;       // R110 / _VRT, in each axis
   double maxInfeed = 0;       // R108 / MID
+  const char* infeedParameter = "R108";  // its name, for the alarm when roughing has none
+  RoughingLevelsRule mainLevels = equalInfeedLevels;  // LCYC95.DEPTH
   double infeedAngle = 0;     // R109 (degrees from the infeed axis); CYCLE95: 0
   MoveKind infeedKind = MoveKind::Feed;
   double roughingFeed = 0;
@@ -29,5 +31,9 @@ struct StockRemovalSettings {
 };
 
 SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& settings);
+
+// Each cycle's parameters read into the shared terms (planLcyc95, planCycle95 plan with them).
+StockRemovalSettings lcyc95Settings(const Lcyc95Parameters& p);
+StockRemovalSettings cycle95Settings(const Cycle95Parameters& p);
 
 }  // namespace cyclecert

@@ -41,6 +41,13 @@ InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line) {
   return {static_cast<int>(count), totalDepth / count};
 }
 
+std::vector<double> equalInfeedLevels(double top, double bottom, double maxInfeed, int line) {
+  const InfeedSteps steps = equalInfeedSteps(top - bottom, maxInfeed, line);
+  std::vector<double> levels{top};
+  for (int k = 1; k <= steps.count; ++k) levels.push_back(k == steps.count ? bottom : top - k * steps.depth);
+  return levels;
+}
+
 namespace {
 
 double lowestX(const std::vector<Segment>& profile) {
@@ -199,7 +206,7 @@ class StockRemovalPlanner {
 
   void rough() {
     const double top = start_.x - c_.clearance.x;
-    const std::vector<double> levels = roughingLevels(top, lowestX(c_.profile));
+    const std::vector<double> levels = c_.mainLevels(top, lowestX(c_.profile), c_.maxInfeed, c_.line);
     approachStart();
     const int count = static_cast<int>(levels.size()) - 1;
     for (int k = 1; k <= count; ++k) {
@@ -211,15 +218,6 @@ class StockRemovalPlanner {
       for (const Undercut& u : findUndercuts(c_.profile, levels)) roughUndercut(u, pass);
     }
     if (c_.technology == SiemensTechnology::Roughing) returnToStart();
-  }
-
-  // The levels from `top` down to `bottom` in equal steps (LCYC95.DEPTH), `top` first; the last is
-  // `bottom` itself.
-  std::vector<double> roughingLevels(double top, double bottom) const {
-    const InfeedSteps steps = equalInfeedSteps(top - bottom, c_.maxInfeed, c_.line);
-    std::vector<double> levels{top};
-    for (int k = 1; k <= steps.count; ++k) levels.push_back(k == steps.count ? bottom : top - k * steps.depth);
-    return levels;
   }
 
   // G0 to the computed start with both axes together.
@@ -254,10 +252,15 @@ class StockRemovalPlanner {
     return foot;
   }
 
+  // The z the part's face stands at: the profile's first point's, or the contour's own where the
+  // allowance moved the profile's start behind it (a first element falling away from the front: its
+  // offset's start lies at −z of the contour's).
+  double faceZ() const { return std::max(c_.profile.front().from.z, c_.contourFront.z); }
+
   void roughingPass(int k, double level, double previous) {
     const bool meetsTheFace = level < frontFaceTop() - kGeomEps;
     const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z);
-    const double hitZ = meetsTheFace ? c_.profile.front().from.z : hit ? hit->at.z : c_.profile.back().to.z;
+    const double hitZ = meetsTheFace ? faceZ() : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
     if (hit) cleanUpAlongProfile(k, *hit, previous);
@@ -278,6 +281,11 @@ class StockRemovalPlanner {
   void cleanUpFromTheFace(int k, double previous) {
     const ProfilePoint foot = faceFoot();
     if (foot.segment >= c_.profile.size() || foot.at.x >= previous - kGeomEps) return;
+    // Where the profile's start lies behind the face: up the face to the contour's first point,
+    // then across the allowance to the profile's start.
+    if (foot.at.z < faceZ() - kGeomEps) {
+      emit(MoveKind::Feed, {faceZ(), c_.contourFront.x}, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
+    }
     emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
     cleanUpAlongProfile(k, foot, previous);
   }
@@ -293,7 +301,7 @@ class StockRemovalPlanner {
 
   void roughUndercut(const Undercut& u, int& pass) {
     emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, pass + 1, {c_.rules.undercut});
-    const std::vector<double> levels = roughingLevels(u.top, u.bottom());
+    const std::vector<double> levels = equalInfeedLevels(u.top, u.bottom(), c_.maxInfeed, c_.line);
     for (std::size_t m = 1; m < levels.size(); ++m) undercutPass(u, ++pass, levels[m], levels[m - 1], m + 1 == levels.size());
   }
 

@@ -25,13 +25,21 @@ struct StockRemovalRules {
   std::string undercut;   // CYCLE95.UNDERCUT (empty for LCYC95)
 };
 
+// The main roughing levels from the profile's top down to its bottom, `top` first and `bottom`
+// last: LCYC95.DEPTH's fewest equal steps not above the largest infeed (equalInfeedLevels). A faulty
+// engine (harness/engines/mutants.cpp) plugs in another rule.
+using RoughingLevelsRule = std::vector<double> (*)(double top, double bottom, double maxInfeed, int line);
+std::vector<double> equalInfeedLevels(double top, double bottom, double maxInfeed, int line);
+
 // One stock-removal cycle, in the frame.
 struct StockRemoval {
   int line = 0;                     // the call's line (named by NotSupported)
   std::vector<Segment> profile;     // contour + finishing allowance: what roughing follows
   std::vector<Segment> finishPath;  // the contour as finishing follows it (nose-radius compensated)
+  Point contourFront;               // the contour's first point (its own, not the profile's)
   Point clearance;                  // R110 / _VRT in each axis: the retract, and the start's distance
   double maxInfeed = 0;             // R108 / MID
+  RoughingLevelsRule mainLevels = equalInfeedLevels;  // LCYC95.DEPTH
   double infeedAngle = 0;           // R109, degrees from the infeed axis (0: straight in)
   MoveKind infeedKind = MoveKind::Feed;
   double roughingFeed = 0;          // R111 / FF1
