@@ -505,10 +505,18 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
 // profile and the finishing path.
 BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
                              const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
+  const DepthFrame frame(away);
   if (!s.roughs()) {
+    // Two graphs over the cut axis a contour-parallel allowance keeps apart bound the layer
+    // themselves: the profile, across to the finishing path's end and back along it — no boolean.
+    if (std::abs(s.allowance) > kTidyDistance && isGraphOverCutAxis(profile, frame) && isGraphOverCutAxis(finish, frame)) {
+      std::vector<Point> outline;
+      for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
+      for (auto seg = finish.rbegin(); seg != finish.rend(); ++seg) appendFlattened(outline, seg->reversed(), chordTolerance);
+      return regionFromSimpleOutline(outline);
+    }
     return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
   }
-  const DepthFrame frame(away);
   const auto [lo, hi] = cutSpanOf(profile, frame);
   if (!(hi > lo)) return {};
   const double top = s.levels.top;  // the frame's x is the plane's depth along `away`
