@@ -50,6 +50,10 @@ for engine in "${engines[@]}"; do
   step "$cli" fuzz --engine "$engine" --cycles g73 --seed 73 --time "$g73_seconds" --timeout 2 \
     --out "$runs/fuzz-g73-$engine" --regressions "$report/regressions"
 done
+# And a SINUMERIK campaign (LCYC95 and CYCLE95, `fuzz --cycles siemens`) for the reference alone:
+# LinuxCNC reads no Siemens dialect.
+step "$cli" fuzz --engine reference --cycles siemens --seed 95 --time "$g73_seconds" --timeout 2 \
+  --out "$runs/fuzz-siemens-reference" --regressions "$report/regressions"
 step "$cli" merge --mix-campaigns --out "$report" "$runs"/*
 step "$cli" report "$report"
 
