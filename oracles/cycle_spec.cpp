@@ -673,6 +673,20 @@ const SiemensCycleSpec* ProgramSpec::singleSiemensCycle() const {
   return siemensCycles.size() == 1 && !siemensAlarm ? &siemensCycles.front() : nullptr;
 }
 
+std::vector<const SiemensCycleSpec*> ProgramSpec::siemensCallsOnOneContour() const {
+  std::vector<const SiemensCycleSpec*> calls;
+  if (siemensAlarm || siemensCycles.empty()) return calls;
+  const SiemensCycleSpec& first = siemensCycles.front();
+  for (const SiemensCycleSpec& c : siemensCycles) {
+    if (c.contourName != first.contourName || c.frame.transposed != first.frame.transposed ||
+        c.frame.mirrored != first.frame.mirrored) {
+      return {};
+    }
+    calls.push_back(&c);
+  }
+  return calls;
+}
+
 std::optional<CycleFamily> ProgramSpec::judgedFamily() const {
   if (siemensFamily) return siemensFamily;
   if (const CycleSpec* c = singleRoughingCycle()) return c->family;

@@ -101,6 +101,10 @@ struct ProgramSpec {
   const CycleSpec* singleRoughingCycle() const;
   // The program's one SINUMERIK cycle call when it has exactly one and no alarm stops it, else nullptr.
   const SiemensCycleSpec* singleSiemensCycle() const;
+  // The program's SINUMERIK calls when no alarm stops it and all of them machine one contour in one
+  // frame (the seed's L42: roughing, then finishing), in program order; else none. The material
+  // oracles judge such a program as one part.
+  std::vector<const SiemensCycleSpec*> siemensCallsOnOneContour() const;
   // The family the oracles are chosen by (Oracle::judges): a SINUMERIK program's cycle, else the one
   // roughing cycle's; nothing for other programs (every oracle judges them).
   std::optional<CycleFamily> judgedFamily() const;

@@ -110,9 +110,9 @@ bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance
 // contour's end). The documented move, not an engine's choice (interpretation): no-gouge leaves it
 // to the documented sequence, as rapids-in-air leaves G73's programmed head.
 bool isDocumentedFinishingReturn(const MaterialReplay& r, const JudgeInput& in, std::size_t i) {
-  if (!r.siemens || !r.siemens->finishes() || r.siemens->finishPath.empty()) return false;
+  if (!r.siemensFinishing || r.siemensFinishing->finishPath.empty()) return false;
   if (in.path.moves[i].kind != MoveKind::Rapid) return false;
-  const SiemensCycleSpec& s = *r.siemens;
+  const SiemensCycleSpec& s = *r.siemensFinishing;
   const Segment move = in.path.segment(i);
   return distance(move.from, s.frame.toPlane(s.finishPath.back().to)) <= tolerance(in) &&
          distance(move.to, s.frame.toPlane(s.start)) <= tolerance(in);
@@ -177,7 +177,7 @@ class RapidsInAirOracle : public Oracle {
 };
 
 std::string targetName(const JudgeInput& in, const MaterialReplay& r) {
-  if (r.siemens) return r.siemens->finishes() ? "finishing path" : "roughing profile (contour + allowance)";
+  if (r.siemens) return r.siemensFinishing ? "finishing path" : "roughing profile (contour + allowance)";
   return in.program.hasFinishingCycle ? "finish shape" : "rough profile";
 }
 

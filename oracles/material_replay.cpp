@@ -560,28 +560,32 @@ BgRegion siemensLeftAlone(const SiemensCycleSpec& s, double reach) {
 // (interpretation: a nose radius puts the finishing path's control point off the contour, above or
 // below the profile). Completeness measures what is left above the finishing path when the call
 // finishes, else above the roughing profile.
-MaterialReplay siemensReplayOf(const JudgeInput& in, const SiemensCycleSpec& s) {
+MaterialReplay siemensReplayOf(const JudgeInput& in, const std::vector<const SiemensCycleSpec*>& calls) {
   MaterialReplay r;
-  r.siemens = &s;
+  const auto roughing = std::find_if(calls.begin(), calls.end(), [](const SiemensCycleSpec* c) { return c->roughs(); });
+  const auto finishing = std::find_if(calls.rbegin(), calls.rend(), [](const SiemensCycleSpec* c) { return c->finishes(); });
+  r.siemens = roughing != calls.end() ? *roughing : calls.front();
+  r.siemensFinishing = finishing != calls.rend() ? *finishing : nullptr;
+  const SiemensCycleSpec& s = *r.siemens;
   r.judgedMoves = in.path.moves.size();
   r.away = siemensAway(s);
   const std::vector<Segment> profile = s.frame.toPlane(s.profile);
-  const std::vector<Segment> finish = s.frame.toPlane(s.finishPath);
+  const std::vector<Segment> finish = s.frame.toPlane((r.siemensFinishing ? *r.siemensFinishing : s).finishPath);
   r.reach = reachFor(in, {&profile, &finish}, 0);
   const double chord = in.settings.chordTolerance;
   const std::optional<BgRegion> given = givenStock(in);
   r.stock = given ? *given : siemensImpliedStock(s, profile, finish, r.away, r.reach, chord);
-  r.target = s.finishes() ? finish : profile;
+  r.target = r.siemensFinishing ? finish : profile;
   const DepthFrame frame(r.away);
-  if (!s.finishes()) {
+  if (!r.siemensFinishing) {
     setPartBelow(r, profile, frame, chord);
-  } else if (s.tool.noseRadius <= 0) {
+  } else if (r.siemensFinishing->tool.noseRadius <= 0) {
     setPartBelow(r, finish, frame, chord);  // the contour: the profile stands above it
   } else {
     r.part = checkedIntersection(partRegionOf(profile, r.away, r.reach, chord), partRegionOf(finish, r.away, r.reach, chord));
     r.partForCrossing = CrossingRegion(r.part);
   }
-  r.leftAlone = siemensLeftAlone(s, r.reach);
+  if (!r.siemensFinishing) r.leftAlone = siemensLeftAlone(s, r.reach);
   return r;
 }
 
@@ -607,8 +611,9 @@ class SiemensDocumentedCrossings {
 
   // The crossing of a rapid without its pieces inside the material the sequence meets.
   Crossing without(const Crossing& c, const Segment& rapid) const {
+    const SiemensCycleSpec* f = r_.siemensFinishing;
     const bool toContourStart =
-        !s_.finishPath.empty() && distance(rapid.to, s_.frame.toPlane(s_.finishPath.front().from)) <= tol_;
+        f && !f->finishPath.empty() && distance(rapid.to, f->frame.toPlane(f->finishPath.front().from)) <= tol_;
     if (c.pieces.empty()) return c;
     Crossing kept;
     for (const Segment& piece : c.pieces) {
@@ -633,7 +638,8 @@ class SiemensDocumentedCrossings {
   const BgRegion& allowanceLayer() const {
     if (!layer_) {
       const BgRegion belowProfile = partRegionOf(s_.frame.toPlane(s_.profile), r_.away, r_.reach, chord_);
-      layer_ = cyclecert::without(belowProfile, partRegionOf(s_.frame.toPlane(s_.finishPath), r_.away, r_.reach, chord_));
+      const SiemensCycleSpec& f = r_.siemensFinishing ? *r_.siemensFinishing : s_;
+      layer_ = cyclecert::without(belowProfile, partRegionOf(f.frame.toPlane(f.finishPath), r_.away, r_.reach, chord_));
     }
     return *layer_;
   }
@@ -649,7 +655,7 @@ class SiemensDocumentedCrossings {
 // The replay before its moves, for the program's one roughing cycle or SINUMERIK call.
 std::optional<MaterialReplay> replayOf(const JudgeInput& in) {
   if (in.path.alarm) return std::nullopt;
-  if (const SiemensCycleSpec* s = in.program.singleSiemensCycle()) return siemensReplayOf(in, *s);
+  if (const auto calls = in.program.siemensCallsOnOneContour(); !calls.empty()) return siemensReplayOf(in, calls);
   if (const CycleSpec* c = in.program.singleRoughingCycle()) return fanucReplayOf(in, *c);
   return std::nullopt;
 }

@@ -17,11 +17,14 @@ namespace cyclecert {
 inline constexpr double kMeasuringChord = 1e-6;
 
 struct MaterialReplay {
-  // The one roughing cycle judged — or, for a SINUMERIK program, its one stock-removal call
-  // (`cycle` null): its moves are judged against the material in the plane, the part below the
-  // roughing profile or the finishing path (replayMaterial says how).
+  // The one roughing cycle judged — or, for a SINUMERIK program, its stock-removal calls on one
+  // contour (`cycle` null): their moves are judged against the material in the plane, the part below
+  // the roughing profile or the finishing path (replayMaterial says how).
   const CycleSpec* cycle = nullptr;
+  // SINUMERIK: the call whose roughing sets the stock (the first call; or the finishing call of a
+  // program that only finishes) and the last call that finishes (nullptr when none does).
   const SiemensCycleSpec* siemens = nullptr;
+  const SiemensCycleSpec* siemensFinishing = nullptr;
   // The moves replayed and judged: all, or up to the end of a Huazhong finishing run
   // (movesJudgedAgainstThePart, run_after_cycle.h).
   std::size_t judgedMoves = 0;

@@ -313,6 +313,24 @@ TEST(SiemensOracles, RetractAt45DegreesIsReportedInEveryFrame) {
   }
 }
 
+// The seed's L42 program calls LCYC95 twice on one contour: R105=1 (roughing to R106 = 0.3), then
+// R105=5 (finishing). The material oracles judge the two calls as one part — the first call's stock,
+// the second's finishing path as what must be left — so the reference's path passes, and the same
+// path without its finishing pass leaves the allowance standing: `complete` (0.3 mm and more).
+TEST(SiemensOracles, TheSeedsTwoL42CallsAreJudgedAsOnePart) {
+  const SpecCase c = loadSpecCase(defaultSpecsDir() + "/cases/sinumerik-802s/lcyc95/seed-l42-both-calls.json");
+  const Toolpath path = planSpecCase(c);
+  EXPECT_TRUE(judge(judgeInputFor(judgeRequestFor(c), path)).empty());
+  Toolpath rough = path;
+  rough.moves.erase(std::remove_if(rough.moves.begin(), rough.moves.end(),
+                                   [](const Move& m) { return m.phase == MovePhase::Finish; }),
+                    rough.moves.end());
+  ASSERT_LT(rough.moves.size(), path.moves.size());
+  const std::vector<Finding> f = of(judge(judgeInputFor(judgeRequestFor(c), rough)), "complete");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].rules, (std::vector<std::string>{"LCYC95.ROUGH", "LCYC95.FINISH"}));
+}
+
 TEST(SiemensOracles, FanucOraclesDoNotJudgeSiemensPrograms) {
   // On a SINUMERIK program only the SINUMERIK oracles and the material ones (no-gouge, rapids-in-air,
   // complete) run, and the material ones cite the call's own cycle's rules. An empty path leaves
