@@ -234,7 +234,12 @@ BgRegion nearNetBlankOf(const CycleSpec& c, double reach, double chordTolerance)
   const bool sameBands = std::abs(partSide.away().z * relief.away().x - partSide.away().x * relief.away().z) < 1e-12;
   const BgRegion alongPartSide =
       checkedIntersection(cutBand(partSide, lo, hi, 4 * reach), partRegionOf(blank, partSide.away(), reach, chordTolerance));
-  return sameBands ? alongPartSide : withinCutBand(alongPartSide, relief, reliefLo, reliefHi);
+  // Drawn in along the relief by far less than any tolerance, yet by ten times the booleans'
+  // resolution (region.h): a blank edge on the band's (a shape segment parallel to the relief, the
+  // passes running along it) then stays apart from the passes' paths, whose shadows the material
+  // model's booleans would otherwise meet collinear only to rounding and may not remove.
+  const double clear = 10 * kBooleanResolution * reach;
+  return sameBands ? alongPartSide : withinCutBand(alongPartSide, relief, reliefLo + clear, reliefHi - clear);
 }
 
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance) {
