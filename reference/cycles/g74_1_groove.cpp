@@ -181,6 +181,24 @@ GrooveSlice sliceAt(const GrooveProfile& p, double w) {
   return slice;
 }
 
+namespace {
+
+// The depth of the profile's floor side (flanks, floor and floor corners) at u; 0 outside it.
+double depthAt(const GrooveProfile& p, double u) {
+  double deepest = 0;
+  for (std::size_t i = 0; i < p.chain.size(); ++i) {
+    if (p.parts[i] == GroovePart::CornerR1 || p.parts[i] == GroovePart::CornerR2) continue;
+    for (const Point& hit : intersectWithLevelX(p.chain[i], u)) deepest = std::max(deepest, hit.z);
+  }
+  return deepest;
+}
+
+}  // namespace
+
+double deepestUnderTheBlade(const GrooveProfile& p, double u, double toolWidth) {
+  return std::min(depthAt(p, u - toolWidth), depthAt(p, u));
+}
+
 std::vector<Segment> bladePath(const GrooveProfile& p, double toolWidth) {
   if (p.floorTo - p.floorFrom < toolWidth - kGeomEps) {
     throw GrooveDoesNotFit("the tool width I " + mm(toolWidth) + " is wider than the groove's floor (" +

@@ -72,6 +72,11 @@ struct GrooveSlice {
 };
 GrooveSlice sliceAt(const GrooveProfile& p, double w);
 
+// The deepest a tool of width r whose programmed point is at u (its blade spanning [u − r, u]) may
+// go without cutting into the profile: the profile's depth under the blade's two corners, the
+// smaller (the groove is convex below its mouth); 0 outside the groove. Mouth corners not counted.
+double deepestUnderTheBlade(const GrooveProfile& p, double u, double toolWidth);
+
 // The path of the programmed point of a grooving tool of width r (0: a pointed tool) along the
 // profile (§7): the start side shifted by r along u, the floor from its start + r, the far side
 // as it is. Local points.

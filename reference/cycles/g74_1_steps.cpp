@@ -13,11 +13,17 @@ namespace cyclecert {
 
 namespace {
 
-// One layer of axial cycles (I16, I17): its top (where each Amn is) and bottom (each Bmn), and the
-// u of its cycle starts Am1 … Amf.
+// One axial cycle: the u of Amn and the depth of Bmn.
+struct AxialCycle {
+  double u = 0;
+  double end = 0;
+};
+
+// One layer of axial cycles (I16, I17): its top (where each Amn is) and bottom (no Bmn deeper), and
+// its cycles Am1 … Amf.
 struct GrooveLayer {
   double top = 0, bottom = 0;
-  std::vector<double> cycleStarts;
+  std::vector<AxialCycle> cycles;
 };
 
 std::string mm(double v) {
@@ -36,6 +42,7 @@ class G74_1Planner {
         roughStart_(grooveLocal(rough_.start.x + c.toolWidth, 0)),
         finishStart_(grooveLocal(finish_.start.x + c.toolWidth, 0)),
         moves_(c.before, c.feed) {
+    requireTheToolFitsTheFloor();
     if (c_.pathType != GroovePathType::FinishOnly) layers_ = layers();
   }
 
@@ -55,22 +62,23 @@ class G74_1Planner {
   void cutLayer(std::size_t m) {
     const GrooveLayer& layer = layers_[m];
     step2PositionToLayerStart(m);
-    for (std::size_t n = 0; n < layer.cycleStarts.size(); ++n) {
-      if (n > 0) step7StepAcross(m, layer.cycleStarts[n]);
-      axialCycle(m, layer.cycleStarts[n]);
+    for (std::size_t n = 0; n < layer.cycles.size(); ++n) {
+      if (n > 0) step7StepAcross(m, layer.cycles[n].u);
+      axialCycle(m, layer.cycles[n]);
     }
     step8ToTheNextLayerOrBack(m);
   }
 
-  // Steps 3 to 6: the n-th axial cycle of layer m, from Amn = (u, top) to Bmn = (u, bottom) and back.
-  void axialCycle(std::size_t m, double u) {
-    const GrooveLayer& layer = layers_[m];
-    double reached = step3FirstFeed(m, u);
-    while (reached < layer.bottom - kGeomEps) {
-      step4Retract(m, u, reached);
-      reached = step5FeedAgain(m, u, reached);
+  // Steps 3 to 6: an axial cycle of layer m, from Amn = (u, top) to Bmn = (u, end) and back. A
+  // cycle whose Bmn is Amn (the blade on a slanted flank's top) makes no move.
+  void axialCycle(std::size_t m, const AxialCycle& cycle) {
+    if (cycle.end <= layers_[m].top + kGeomEps) return;
+    double reached = step3FirstFeed(m, cycle);
+    while (reached < cycle.end - kGeomEps) {
+      step4Retract(m, cycle.u, reached);
+      reached = step5FeedAgain(m, cycle, reached);
     }
-    step6BackToCycleStart(m, u);
+    step6BackToCycleStart(m, cycle.u);
   }
 
   // G74_1.STEP1: from where the tool stands straight to the rough start A11 (I18): the blade's
@@ -83,15 +91,14 @@ class G74_1Planner {
   // down from Cmf for the others.
   void step2PositionToLayerStart(std::size_t m) {
     const GrooveLayer& layer = layers_[m];
-    move(MoveKind::Rapid, layer.cycleStarts.front(), layer.top, m, "G74_1.STEP2");
+    move(MoveKind::Rapid, layer.cycles.front().u, layer.top, m, "G74_1.STEP2");
   }
 
   // G74_1.STEP3: feed Δk along z towards the floor; reaching or passing Bmn, feed to Bmn (I19).
   // Returns the depth reached.
-  double step3FirstFeed(std::size_t m, double u) {
-    const GrooveLayer& layer = layers_[m];
-    const double to = std::min(layer.top + c_.peck, layer.bottom);
-    move(MoveKind::Feed, u, to, m, "G74_1.STEP3");
+  double step3FirstFeed(std::size_t m, const AxialCycle& cycle) {
+    const double to = std::min(layers_[m].top + c_.peck, cycle.end);
+    move(MoveKind::Feed, cycle.u, to, m, "G74_1.STEP3");
     return to;
   }
 
@@ -102,11 +109,10 @@ class G74_1Planner {
 
   // G74_1.STEP5: feed (Δk + e) from the retracted point if it ends strictly between Amn and Bmn;
   // else feed to Bmn. Returns the depth reached.
-  double step5FeedAgain(std::size_t m, double u, double reached) {
-    const GrooveLayer& layer = layers_[m];
+  double step5FeedAgain(std::size_t m, const AxialCycle& cycle, double reached) {
     const double next = reached - c_.retract + (c_.peck + c_.retract);
-    const double to = next < layer.bottom - kGeomEps ? next : layer.bottom;
-    move(MoveKind::Feed, u, to, m, "G74_1.STEP5");
+    const double to = next < cycle.end - kGeomEps ? next : cycle.end;
+    move(MoveKind::Feed, cycle.u, to, m, "G74_1.STEP5");
     return to;
   }
 
@@ -122,7 +128,7 @@ class G74_1Planner {
   // then along x back to A11.
   void step8ToTheNextLayerOrBack(std::size_t m) {
     if (m + 1 < layers_.size()) {
-      move(MoveKind::Rapid, layers_[m + 1].cycleStarts.front(), layers_[m].top, m, "G74_1.STEP8");
+      move(MoveKind::Rapid, layers_[m + 1].cycles.front().u, layers_[m].top, m, "G74_1.STEP8");
       return;
     }
     move(MoveKind::Rapid, local(moves_.current()).x, 0, m, "G74_1.STEP8");
@@ -164,9 +170,10 @@ class G74_1Planner {
     moves_.emit(MoveKind::Rapid, plane(to), phase, 0, {rule});
   }
 
-  // I16, I17: the layers Δv deep from the start level to the rough floor (one without V), and in
-  // each the cycle starts from Am1 (the blade's start side on the layer's near boundary at its
-  // bottom) by Δi/2 to Amf (the programmed point on the far boundary).
+  // I16, I17: the layers Δv deep from the start level to the rough floor (one without V); in each,
+  // the cycle starts from Am1 (the blade's start side on the rough profile's near boundary at the
+  // layer's top) by Δi/2 to Amf (the programmed point on its far boundary), and each Bmn as deep as
+  // the rough profile lets the blade go there, at most the layer's bottom.
   std::vector<GrooveLayer> layers() const {
     const double depth = rough_.floorDepth;
     const double count = c_.layerDepth ? std::ceil(depth / *c_.layerDepth - kGeomEps) : 1.0;
@@ -177,22 +184,31 @@ class G74_1Planner {
       GrooveLayer layer;
       layer.top = c_.layerDepth ? m * *c_.layerDepth : 0.0;
       layer.bottom = c_.layerDepth ? std::min((m + 1) * *c_.layerDepth, depth) : depth;
-      const GrooveSlice slice = sliceAt(rough_, layer.bottom);
-      const double first = slice.nearU + c_.toolWidth, last = slice.farU;
-      if (last < first - kGeomEps) {
-        throw GrooveDoesNotFit("at the depth " + mm(layer.bottom) + " of layer " + std::to_string(m + 1) +
-                               " the rough groove is " + mm(slice.farU - slice.nearU) +
-                               " mm wide (radius), narrower than the tool width I " + mm(c_.toolWidth));
-      }
+      const GrooveSlice slice = sliceAt(rough_, layer.top);
+      const double first = slice.nearU + c_.toolWidth, last = std::max(slice.farU, first);
       const double steps = std::ceil((last - first) / c_.radialStep - kGeomEps);
       const double pecks = std::ceil((layer.bottom - layer.top) / c_.peck - kGeomEps);
       moves += (steps + 1) * (2 * pecks + 1);
       requireFewerMovesThanTheCap(count, steps + 1, moves);
-      for (int k = 0; k < static_cast<int>(steps); ++k) layer.cycleStarts.push_back(first + k * c_.radialStep);
-      layer.cycleStarts.push_back(last);
+      for (int k = 0; k < static_cast<int>(steps); ++k) layer.cycles.push_back(axialCycleAt(layer, first + k * c_.radialStep));
+      layer.cycles.push_back(axialCycleAt(layer, last));
       out.push_back(std::move(layer));
     }
     return out;
+  }
+
+  AxialCycle axialCycleAt(const GrooveLayer& layer, double u) const {
+    return {u, std::min(layer.bottom, deepestUnderTheBlade(rough_, u, c_.toolWidth))};
+  }
+
+  // I12: the blade must fit on the floor between its corners (the profile passes ride on it).
+  void requireTheToolFitsTheFloor() const {
+    for (const GrooveProfile* p : {&rough_, &finish_}) {
+      if (p->floorTo - p->floorFrom >= c_.toolWidth - kGeomEps) continue;
+      throw GrooveDoesNotFit("the tool width I " + mm(c_.toolWidth) + " is wider than the " +
+                             (p == &rough_ ? "rough" : "finish") + " groove's floor (" +
+                             mm(p->floorTo - p->floorFrom) + " mm between its corners)");
+    }
   }
 
   // PROG.CAP.PASSES: as every planner, a bounded plan.
