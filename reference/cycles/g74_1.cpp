@@ -40,7 +40,7 @@ bool givesTheGroove(const Block& b) { return b.has('X') || b.has('Z'); }
 
 // The largest magnitude of a length word (IS-C, the increment system of the seed's example: I5).
 constexpr double kLargestLength = 9999.9999;
-constexpr double kLargestCorner = 99.9999;
+constexpr double kLargestSmall = 99.9999;  // e and r1…r4
 
 const Word& required(const Block& b, char letter, std::string_view code, const std::string& why) {
   if (const Word* w = b.find(letter)) return *w;
@@ -91,11 +91,11 @@ double stepAmount(const Word& w, const CycleCall& call) {
   return w.value * increment * call.modal.unitScale();
 }
 
-// A word of the second block between 0 and `largest` (R, A, B, D, E), 0 when absent.
-double unsignedWord(const Block& b, char letter, double largest, const char* what) {
+// A word of the second block between 0 and 99.9999 (R, A, B, D, E), 0 when absent.
+double smallUnsignedWord(const Block& b, char letter, const char* what) {
   const Word* w = b.find(letter);
   if (!w) return 0;
-  if (w->value < 0 || w->value > largest) outOfRange(*w, "0…" + std::to_string(largest).substr(0, 7) + " (" + what + ")");
+  if (w->value < 0 || w->value > kLargestSmall) outOfRange(*w, std::string("0…99.9999 (") + what + ")");
   return w->value;
 }
 
@@ -159,7 +159,7 @@ void readGrooveBlock(const Block& b, const CycleCall& call, G74_1Cycle& c) {
 void readCuttingBlock(const Block& b, const CycleCall& call, G74_1Cycle& c) {
   requireAddressesOf(b, "RVUWIJABDEP", kSecondFormat);
   const double scale = call.modal.unitScale();
-  c.retract = unsignedWord(b, 'R', 99.9999, "the retract e, mm") * scale;
+  c.retract = smallUnsignedWord(b, 'R', "the retract e, mm") * scale;
   if (const Word* v = b.find('V')) {
     if (v->value <= 0) {
       throw cycleBlockAlarm(alarm::kCuttingAmount, v->line, at(*v) + ": the layer depth Δv of G74.1 must be positive");
@@ -174,7 +174,7 @@ void readCuttingBlock(const Block& b, const CycleCall& call, G74_1Cycle& c) {
   const std::array<GrooveCornerKind, 4> kinds = cornerKinds(b);
   const char letters[4] = {'A', 'B', 'D', 'E'};  // r1 r2 r3 r4
   for (std::size_t k = 0; k < 4; ++k) {
-    c.groove.corners[k].size = unsignedWord(b, letters[k], kLargestCorner, "a corner's chamfer width or round radius, mm") * scale;
+    c.groove.corners[k].size = smallUnsignedWord(b, letters[k], "a corner's chamfer width or round radius, mm") * scale;
     c.groove.corners[k].kind = kinds[k];
   }
 }

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
+#include <string>
+
+#include "reference/model/number_text.h"
 
 namespace cyclecert {
 
@@ -21,12 +23,7 @@ double dot(Point a, Point b) { return a.z * b.z + a.x * b.x; }
 double cross(Point a, Point b) { return a.z * b.x - a.x * b.z; }
 Point unit(Point v) { return (1.0 / std::hypot(v.z, v.x)) * v; }
 
-std::string mm(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+std::string mm(double v) { return shortDecimalText(v); }
 
 // The four vertices of the (rough or finish) trapezoid: S on the mouth, N and F on the floor, M2 on
 // the mouth (docs/g74_1.md §3, §5).

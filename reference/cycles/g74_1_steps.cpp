@@ -1,6 +1,7 @@
 // G74.1 — the ten numbered steps of seed 002 (G74_1.STEP1…STEP10), one function each, in the
 // groove's frame (u along d, w the depth along h: reference/cycles/g74_1_groove.h). The points
 // (A11, Am1, Amn, Bmn, Amf, Cmf) and every interpretation are those of docs/g74_1.md §6.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,6 +9,7 @@
 #include "reference/cycles/move_emitter.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/model/alarms.h"
+#include "reference/model/number_text.h"
 
 namespace cyclecert {
 
@@ -26,12 +28,7 @@ struct GrooveLayer {
   std::vector<AxialCycle> cycles;
 };
 
-std::string mm(double v) {
-  std::string s = std::to_string(v);
-  while (s.size() > 1 && s.back() == '0') s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
+std::string mm(double v) { return shortDecimalText(v); }
 
 class G74_1Planner {
  public:
