@@ -128,6 +128,11 @@ class SpecReader {
       const GCodeSystem system = state_.gCodeSystem;
       const bool g70 = hasGFunction(b, 700, system), g71 = hasGFunction(b, 710, system),
                  g72 = hasGFunction(b, 720, system), g73 = hasGFunction(b, 730, system);
+      if (hasGFunction(b, 741, system)) {  // G74.1: not read by the oracles yet (hasGrooveCycle)
+        out_.hasGrooveCycle = true;
+        ++i;
+        continue;
+      }
       if (g73) refuseOtherG73Dialects(b);
       const bool roughing = g71 || g72 || g73;
       if ((g70 || roughing) && !out_.firstCycleBlockLine) out_.firstCycleBlockLine = b.line;
@@ -689,6 +694,7 @@ std::vector<const SiemensCycleSpec*> ProgramSpec::siemensCallsOnOneContour() con
 
 std::optional<CycleFamily> ProgramSpec::judgedFamily() const {
   if (siemensFamily) return siemensFamily;
+  if (hasGrooveCycle) return CycleFamily::G74_1;
   if (const CycleSpec* c = singleRoughingCycle()) return c->family;
   return std::nullopt;
 }

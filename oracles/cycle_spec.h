@@ -95,6 +95,9 @@ struct ProgramSpec {
   std::optional<CycleFamily> siemensFamily;
   std::vector<SiemensCycleSpec> siemensCycles;
   std::optional<Alarm> siemensAlarm;
+  // A program with a G74.1 groove cycle (GSK, seed 002): its blocks are not read as moves, and no
+  // oracle judges the program yet (Oracle::judges).
+  bool hasGrooveCycle = false;
 
   // The program's one roughing cycle when it has exactly one that the rules allow (what the
   // geometric oracles judge), else nullptr.
@@ -105,8 +108,9 @@ struct ProgramSpec {
   // frame (the seed's L42: roughing, then finishing), in program order; else none. The material
   // oracles judge such a program as one part.
   std::vector<const SiemensCycleSpec*> siemensCallsOnOneContour() const;
-  // The family the oracles are chosen by (Oracle::judges): a SINUMERIK program's cycle, else the one
-  // roughing cycle's; nothing for other programs (every oracle judges them).
+  // The family the oracles are chosen by (Oracle::judges): a SINUMERIK program's cycle, G74.1 for a
+  // program with a groove cycle, else the one roughing cycle's; nothing for other programs (every
+  // oracle judges them).
   std::optional<CycleFamily> judgedFamily() const;
   // The first cycle the rules forbid, or nullptr.
   const CycleSpec* firstForbidden() const;

@@ -125,7 +125,7 @@ class NoGougeOracle : public Oracle {
   std::vector<std::string> rules() const override {
     return withSiemensRules({"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD", "G73.PASS.SHIFT"}, kSiemensMaterialSteps);
   }
-  bool judges(CycleFamily) const override { return true; }
+  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1; }  // also SINUMERIK
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
@@ -156,7 +156,7 @@ class RapidsInAirOracle : public Oracle {
         {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN", "G73.APPROACH", "G73.RETURN"},
         kSiemensMaterialSteps);
   }
-  bool judges(CycleFamily) const override { return true; }
+  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1; }  // also SINUMERIK
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;
@@ -193,7 +193,7 @@ class CompleteOracle : public Oracle {
     rules.push_back("CYCLE95.UNDERCUT");
     return rules;
   }
-  bool judges(CycleFamily) const override { return true; }
+  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1; }  // also SINUMERIK
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
     const MaterialReplay* r = ctx.replay;

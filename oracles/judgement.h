@@ -69,8 +69,8 @@ class Oracle {
   // it for a program whose one roughing cycle (or SINUMERIK program) it does not judge. How it
   // judges each family is in its comment and oracles/README.md (depth-per-pass: Δd for G71/G72, the
   // division step for G73). By default the FANUC families; the SINUMERIK oracles (oracles/siemens/,
-  // siemens-alarm) judge LCYC95 and CYCLE95.
-  virtual bool judges(CycleFamily family) const { return !isSiemensFamily(family); }
+  // siemens-alarm) judge LCYC95 and CYCLE95. No oracle judges G74.1 (the groove cycle) yet.
+  virtual bool judges(CycleFamily family) const { return !isSiemensFamily(family) && family != CycleFamily::G74_1; }
   virtual void judge(const JudgeContext& ctx, std::vector<Finding>& findings) const = 0;
 };
 

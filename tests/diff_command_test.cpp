@@ -165,8 +165,9 @@ TEST_F(DiffCli, BothAlarmingAgreeAndAMissedAlarmDiverges) {
 }
 
 TEST_F(DiffCli, AnEngineThatIsNotApplicableCannotBeCompared) {
-  // G74.1 is not planned by the reference yet: not applicable, so nothing to compare.
-  const CliRun r = run("diff --engine reference --vs mutant:retract-angle " + corpus("seed002-o0008-g74_1.nc"));
+  // G75 (outer diameter grooving) is not planned by the reference: not applicable, so nothing to compare.
+  const std::string g75 = write("g75.nc", "G00 X70 Z10;\nG75 R1;\nG75 X40 Z-20 P3000 Q5000 F0.1;\nM30;\n");
+  const CliRun r = run("diff --engine reference --vs mutant:retract-angle " + g75);
   EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, "not applicable: ")) << r.out;
   EXPECT_TRUE(contains(r.out, "cannot compare the engines: reference is not applicable and mutant:retract-angle is not applicable"))

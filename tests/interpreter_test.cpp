@@ -112,7 +112,7 @@ TEST(Interpreter, NoFeedAnywhereIsPS0011) {
 }
 
 TEST(Interpreter, CyclesTheReferenceCannotPlanAreNotSupported) {
-  EXPECT_THROW(plan("G00 X70 Z10;\nG74.1 X66 Z0 P30000 Q50000 H-10 D-20 A45 B60;\n"), NotSupported);
+  EXPECT_THROW(plan("G00 X70 Z10;\nG75 X40 Z-20 P3000 Q5000 F0.1;\n"), NotSupported);
 }
 
 TEST(Interpreter, HeadBlockWithBothAxesSelectsTypeII) {

@@ -19,4 +19,11 @@ CycleOutcome planG72(const CycleCall& call);
 void applyG73FirstBlock(const CycleCall& call);
 CycleOutcome planG73(const CycleCall& call);
 
+// G74.1 axial trapezoid groove cycle (GSK, seed 002, G74_1.*; docs/g74_1.md). A G74.1 block with X
+// or Z gives the groove (its words are checked, nothing moves); one without them cuts the groove
+// the nearest such block before it gives.
+bool isG74_1GrooveBlock(const Block& b);
+void applyG74_1FirstBlock(const CycleCall& call);
+CycleOutcome planG74_1(const CycleCall& call);
+
 }  // namespace cyclecert

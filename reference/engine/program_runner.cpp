@@ -59,18 +59,19 @@ class ProgramRunner {
       if (code->support == GSupport::NotPlanned) throw NotSupported(b.line, notPlannedReason(b, *g, state_));
       if (code->group == GGroup::Units) unitsCommanded_ = true;
       applyModalGCode(*code, state_);
-      if (code->function == 700 || code->function == 710 || code->function == 720 || code->function == 730) {
+      if (code->function == 700 || code->function == 710 || code->function == 720 || code->function == 730 ||
+          code->function == 741) {
         cycle = code->function;
       }
     }
     const AxisWordsMean meaning = axisWordsMeaning(b, system);
     checkCompensationChange(b, before, state_);
-    checkWords(b, cycle != 0, meaning);
+    checkWords(b, cycle, meaning);
     if (const Word* f = b.find('F')) {
       state_.feed = f->value * state_.unitScale();
     }
     if (cycle) {
-      refuseIncrementalAddressesInShape(b);
+      if (cycle != 741) refuseIncrementalAddressesInShape(b);  // G74.1's P and Q are amounts
       warnAssumedUnits(b);
       return executeCycle(i, cycle);
     }
@@ -125,7 +126,8 @@ class ProgramRunner {
 
   // PROG.RANGE, PROG.ADDRESS: the words as the controller reads them. A cycle block's own
   // addresses are read by its planner (G72.RANGE); its range alarm is dated "cycle block".
-  void checkWords(const Block& b, bool cycleBlock, AxisWordsMean meaning) {
+  void checkWords(const Block& b, int cycle, AxisWordsMean meaning) {
+    const bool cycleBlock = cycle != 0;
     try {
       checkWordRanges(b, state_.inch);
     } catch (CycleAlarm& a) {
@@ -133,7 +135,7 @@ class ProgramRunner {
       throw;
     }
     if (meaning == AxisWordsMean::Data) return;  // G10 and G65 give every address a meaning of their own
-    checkNoThreadLead(b);
+    if (cycle != 741) checkNoThreadLead(b);  // G74.1's E is the corner r4 (G74_1.FMT)
     if (!cycleBlock && hasAxisWord(b) && meaning == AxisWordsMean::Motion) {
       checkMotionBlockAddresses(b, state_.motion, state_);
     }
@@ -186,24 +188,35 @@ class ProgramRunner {
       case 700: return planG70(call);
       case 710: return planG71(call);
       case 720: return planG72(call);
+      case 741: return planG74_1(call);
       default: return planG73(call);
     }
+  }
+
+  // The cycle's G code as programs write it: "G71", "G74.1".
+  static std::string cycleName(int cycle) {
+    return "G" + std::to_string(cycle / 10) + (cycle % 10 ? "." + std::to_string(cycle % 10) : "");
   }
 
   std::size_t executeCycle(std::size_t i, int cycle) {
     const Block& b = program_.blocks[i];
     const CycleCall call{program_, i, state_, params_, profile_, options_.tool};
-    // G72.MDI, HNC.G71.MDI: the shape program must be in memory.
-    if (options_.mdi) {
-      CycleAlarm a(alarm::kNotInMdi, b.line, "G" + std::to_string(cycle / 10) + " cannot run in MDI mode");
+    // G72.MDI, HNC.G71.MDI: the shape program must be in memory. G74.1 has none (seed 002 says
+    // nothing of MDI).
+    if (options_.mdi && cycle != 741) {
+      CycleAlarm a(alarm::kNotInMdi, b.line, cycleName(cycle) + " cannot run in MDI mode");
       a.setWhen("cycle block");
       throw a;
     }
-    if (cycle != 700 && !b.has('P') && !b.has('Q')) {
+    if (cycle == 741 && isG74_1GrooveBlock(b)) {  // G74_1.FMT: the block that gives the groove
+      applyG74_1FirstBlock(call);
+      return i + 1;
+    }
+    if (cycle != 700 && cycle != 741 && !b.has('P') && !b.has('Q')) {
       applyFirstCycleBlock(call, cycle);
       return i + 1;
     }
-    requireKnownPlanePosition(b, "G" + std::to_string(cycle / 10) + " starts from it");
+    requireKnownPlanePosition(b, cycleName(cycle) + " starts from it");
     if (state_.tnrc != 40 && options_.tool.noseRadius <= 0) {
       path_.warnings.push_back({b.line, "G4" + std::to_string(state_.tnrc % 10) +
                                             " is active but the tool's nose radius is 0: the shape is not offset "
@@ -216,7 +229,7 @@ class ProgramRunner {
       throw NotSupported(b.line, "the program would make more than " + std::to_string(kMostMovesPerToolpath) +
                                      " moves; cyclecert plans at most that many per program");
     }
-    CycleRecord record{"G" + std::to_string(cycle / 10), b.line, state_.planePoint(), path_.moves.size(),
+    CycleRecord record{cycleName(cycle), b.line, state_.planePoint(), path_.moves.size(),
                        out.moves.size(), std::move(out.shape), out.allowance, out.compensated};
     path_.cycles.push_back(record);
     markSingleBlockStops(out.moves);

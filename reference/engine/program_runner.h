@@ -18,7 +18,7 @@ struct RunOptions {
 };
 
 // A controller alarm ends the run: the toolpath keeps the moves made before it and names the alarm.
-// Throws NotSupported for cycles the reference cannot plan yet (G73, G74.1, …).
+// Throws NotSupported for cycles the reference cannot plan yet (G75, G76, …).
 Toolpath planProgram(const Program& program, const Profile& profile, const MachineParams& params,
                      const RunOptions& options = {});
 

@@ -56,7 +56,7 @@ constexpr Row kTable[] = {
     {{720, G::OneShot, S::Applied, "stock removal in facing"}, {720, 720, 740, 720}},
     {{730, G::OneShot, S::Applied, "pattern repeating cycle"}, {730, 730, 750, 730}},
     {{740, G::OneShot, S::NotPlanned, "end-face peck drilling cycle"}, {740, 740, 760, 740}},
-    {{741, G::OneShot, S::NotPlanned, "axial groove cycle"}, {741, 741, kNo, 741}},
+    {{741, G::OneShot, S::Applied, "axial groove cycle"}, {741, 741, kNo, 741}},
     {{750, G::OneShot, S::NotPlanned, "outer diameter grooving cycle"}, {750, 750, 770, 750}},
     {{760, G::OneShot, S::NotPlanned, "threading cycle"}, {760, 760, 780, 760}},
     {{800, G::DrillingCycle, S::Applied, "canned cycle for drilling cancel"}, {800, 800, 800, 800}},

@@ -7,7 +7,7 @@ namespace cyclecert {
 namespace {
 
 constexpr std::array kFamilies{CycleFamily::G71, CycleFamily::G72, CycleFamily::G73, CycleFamily::Lcyc95,
-                               CycleFamily::Cycle95};
+                               CycleFamily::Cycle95, CycleFamily::G74_1};
 
 }  // namespace
 
@@ -18,6 +18,7 @@ std::string_view cycleCode(CycleFamily family) {
     case CycleFamily::G73: return "G73";
     case CycleFamily::Lcyc95: return "LCYC95";
     case CycleFamily::Cycle95: return "CYCLE95";
+    case CycleFamily::G74_1: return "G74.1";
   }
   return "G71";
 }
@@ -33,7 +34,8 @@ bool isSiemensFamily(CycleFamily family) {
   switch (family) {
     case CycleFamily::G71:
     case CycleFamily::G72:
-    case CycleFamily::G73: return false;
+    case CycleFamily::G73:
+    case CycleFamily::G74_1: return false;
     case CycleFamily::Lcyc95:
     case CycleFamily::Cycle95: return true;
   }

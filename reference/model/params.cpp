@@ -69,6 +69,10 @@ const std::vector<ParamSpec>& MachineParams::catalogue() {
       {"8133#0", "SSC", true, 0.0, "bit",
        "1: constant surface speed control is enabled (G96/G97 inside ns…nf are then ignored by the cycle)",
        {"G71.CSS"}},
+      {"182#7", "", true, 0.0, "bit",
+       "GSK NO182.7: 0 reads P(Δi) and Q(Δk) of G74.1 in least input increments (IS-C: 0.0001 mm, as seed 002's "
+       "example O0008: P30000 = 3 mm), 1 in mm (inch)",
+       {"G74_1.ADDR", "G74_1.EX.O0008"}},
       {"3401#6", "GSB", true, 0.0, "bit",
        "1: G code system B (G90/G91 absolute/incremental, G92 coordinate setting, G94/G95 feed modes, "
        "G77/G78/G79 single cycles); FANUC profiles",
