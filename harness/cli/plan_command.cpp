@@ -18,9 +18,10 @@ const char* kPlanHelp = R"HELP(Usage: cyclecert plan PROGRAM.nc [options]
        cyclecert plan --case CASE.json [options]
 
 Plans the program with the reference engine: every move from the first positioning on (phase
-"program") and every G70/G71/G72/G73 cycle, or LCYC95/CYCLE95 under the SINUMERIK profiles
-(`cyclecert profiles` lists the dialects). A SINUMERIK contour subprogram is read from after the
-main program (a line `L42.spf`, then its blocks), or from `L42.spf`/`L42.SPF` beside PROGRAM.nc.
+"program") and every G70/G71/G72/G73 cycle (and G74.1 under gsk), or LCYC95/CYCLE95 under the
+SINUMERIK profiles (`cyclecert profiles` lists the dialects). A SINUMERIK contour subprogram is
+read from after the main program (a line `L42.spf`, then its blocks), or from `L42.spf`/`L42.SPF`
+beside PROGRAM.nc.
 
 Options:
   --profile P          controller profile (default: the program's "(profile: P)" header comment,
