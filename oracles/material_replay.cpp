@@ -474,10 +474,8 @@ MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
 // siemens_cycle_spec.h) in the plane.
 Point siemensAway(const SiemensCycleSpec& s) { return s.frame.toPlane(Point{0, 1}); }
 
-// SINUMERIK (LCYC95.ROUGH note, interpretation): below the contour's first point the part's face
-// stands at that point's z, up to the lowest point of the walls the contour begins with there; a
-// level below that meets the part at the face. What lies behind the face and above the profile (a
-// recess the contour draws beyond a raised start) is out of the levels' reach: no stock of theirs.
+// The top of the part's face below the profile's first point: the lowest point of the walls the
+// profile begins with at that point's z (the point itself without them).
 double siemensFaceTop(const SiemensCycleSpec& s) {
   const double frontZ = s.profile.front().from.z;
   double faceTop = s.profile.front().from.x;
@@ -488,6 +486,10 @@ double siemensFaceTop(const SiemensCycleSpec& s) {
   return faceTop;
 }
 
+// SINUMERIK (LCYC95.ROUGH note, interpretation): below the contour's first point the part's face
+// stands at that point's z, up to siemensFaceTop; a level below that meets the part at the face.
+// What lies behind the face and above the profile (a recess the contour draws beyond a raised
+// start) is out of the levels' reach: no stock of theirs.
 BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
   if (s.profile.empty() || s.contour.empty()) return {};
   // The profile's first point's z, or the contour's where the allowance moved the profile's start
