@@ -457,6 +457,24 @@ TEST(SiemensOracles, ALevelMeetsTheFaceAtTheContoursFrontNotBehindIt) {
   EXPECT_TRUE(stopsAtTheFace);
 }
 
+// A zero-width spike (found by `fuzz --cycles siemens`): L1 runs out along X10.82 to Z-5.19 and back
+// along the same line to Z-4.65 before falling into a pocket (VARI 12, face internal). The main pass
+// that climbs the spike's wall to its rim cuts at FF1; the pocket's falling side is the same line,
+// descended at FF2. Before, siemens-feeds took the climb at the rim's z for the pocket's and asked
+// FF2 of it (23 of 2,000 generated cases failed so on the reference).
+TEST(SiemensOracles, AClimbToTheRimOfAZeroWidthSpikeIsTheMainPass) {
+  const std::string program =
+      "T1 D1\nG0 X22.92 Z-7.94\nCYCLE95(\"L1\", 0.75, 0.04, 0, 0, 0.13, 0.07, 0.06, 12, 0, 3.3, 0.5)\nM02\n";
+  const std::string contour =
+      "G1 X19.44 Z0\nG1 X19.44 Z-0.37\nG1 X17.94 Z-1.12\nG1 X14.2 Z-1.69 RND=0.27\nG1 X14.2 Z-2.52\n"
+      "G3 X10.82 Z-4.21 CR=3.38\nG1 X10.82 Z-5.19\nG1 X10.82 Z-4.65\nG1 X8.66 Z-4.65\nG1 X8.66 Z-5.19\n"
+      "G1 X6.64 Z-6.2\nRET\n";
+  PlanRequest request{program, "spike.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  EXPECT_TRUE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
+}
+
 // A groove behind a raised contour start (LCYC95.ROUGH / CYCLE95.UNDERCUT, interpretation): L1
 // begins at (z 0, x 1.4), rounds up to (−0.1, 1.5), falls to (−0.1, 1), runs to (−1.1, 1) and rises
 // to (−1.1, 1.5). Below the contour's first point the part's face stands at z 0, up to x 1.4; the

@@ -191,7 +191,12 @@ bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol) {
   // The plunge along the depth axis down to the falling side's top starts the pocket's pass: it
   // belongs to the pocket even where that top is its top level (a rim at the profile's top).
   const bool plunge = zHigh - zLow <= tol && from.x > to.x;
+  // A climb along the depth axis at the rim's own z is the wall that rises to the rim (a zero-width
+  // spike whose far side falls into the pocket along the same line): the main pass's, not the
+  // pocket's.
+  const bool climb = zHigh - zLow <= tol && to.x > from.x;
   return std::any_of(c.undercuts.begin(), c.undercuts.end(), [&](const SiemensUndercut& u) {
+    if (climb && std::abs(zHigh - u.rimZ) <= tol) return false;
     return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && xLow < u.top + (plunge ? tol : -tol);
   });
 }
