@@ -204,8 +204,13 @@ RC_GTEST_PROP(CutEnvelope, TheTopWithoutSkinsBoundsTheMaterialWithoutSkins, ()) 
   const double skin = *rc::gen::inRange(1, 30) / 10.0;
   const double c0 = -*rc::gen::inRange(200, 400) / 10.0, c1 = -*rc::gen::inRange(0, 200) / 10.0;
   const BgRegion band = regionFrom({{c0, -100}, {c0, 100}, {c1, 100}, {c1, -100}});
-  const BgRegion left = checkedIntersection(without(model.remaining(), partRegionOf(profile, kOuter, 100, 0.001)), band);
-  const auto region = thickestAbove(withoutSkins(left, kOuter, skin), profile, kOuter, 1e-6);
+  // The skins come off the material left before it is clipped to the band: clipped first, the band's
+  // edge moved by the skin can meet an edge of the material moved the same way and leave a sliver
+  // that is no material (a steep feed near c0; found by this property, RC seed 17870914112940817977:
+  // 10.7952 measured against a bound of 10.7919). `complete` still clips first, where such a sliver
+  // could only add a finding, never hide one (the session note of 2026-11-26).
+  const BgRegion left = without(model.remaining(), partRegionOf(profile, kOuter, 100, 0.001));
+  const auto region = thickestAbove(checkedIntersection(withoutSkins(left, kOuter, skin), band), profile, kOuter, 1e-6);
   const auto top = thickestBeneath(*model.topWithoutSkinsWithin(c0, c1, skin), profile, kOuter, 1e-6);
   if (!region) return;
   RC_ASSERT(top.has_value());
