@@ -10,7 +10,6 @@
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
 #include "oracles/run_after_cycle.h"
-#include "reference/model/offset.h"
 
 namespace cyclecert {
 
@@ -73,14 +72,9 @@ BgRegion withoutWhatG70Removes(const JudgeInput& in, const MaterialReplay& r, Bg
   const CycleSpec* c = r.cycle;
   if (left.empty() || !c || !c->patternRepeating() || !in.program.hasFinishingCycle) return left;
   const Point side = partSideOf(*c);
-  const double tol = tolerance(in);
   for (std::size_t i = 0; i < r.judgedMoves && !left.empty(); ++i) {
-    if (in.path.moves[i].kind != MoveKind::Feed) continue;
     const Segment move = in.path.segment(i);
-    if (!nearPath(move.from, c->shape, tol) || !nearPath(pointAt(move, 0.5), c->shape, tol) ||
-        !nearPath(move.to, c->shape, tol)) {
-      continue;
-    }
+    if (in.path.moves[i].kind != MoveKind::Feed || !onFinishShape(in, *c, move)) continue;
     left = without(left, shadowOf(move, side, r.reach, in.settings.chordTolerance));
   }
   return left;

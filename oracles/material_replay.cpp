@@ -167,6 +167,30 @@ std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& fr
 
 }  // namespace
 
+namespace {
+
+// The stock between a shape and a level above it, over the shape's span along the cut axis: the
+// band below the level minus the part. A shape that is a graph over the cut axis and stands below
+// the level between its ends (an end may stand on it) bounds the stock itself: the shape, up to the
+// level at its end and back along it — the same region, without a boolean.
+BgRegion stockUpToLevel(const std::vector<Segment>& shape, Point away, double level, double reach, double chordTolerance) {
+  const DepthFrame frame(away);
+  const auto [lo, hi] = cutSpanOf(shape, frame);
+  if (!(hi > lo)) return {};
+  if (isGraphOverCutAxis(shape, frame) && highestBetweenEnds(shape, frame) < level - kTidyDistance) {
+    std::vector<Point> outline;
+    for (const Segment& s : shape) appendFlattened(outline, s, chordTolerance);
+    outline.push_back(frame.atDepth(shape.back().to, level));
+    outline.push_back(frame.atDepth(shape.front().from, level));
+    return regionFromSimpleOutline(outline);
+  }
+  const BgRegion band = regionFrom({frame.point(lo, level), frame.point(hi, level), frame.point(hi, level - reach),
+                                    frame.point(lo, level - reach)});
+  return without(band, partRegionOf(shape, away, reach, chordTolerance));
+}
+
+}  // namespace
+
 std::vector<Segment> nearNetBlankProfile(const CycleSpec& c) {
   std::vector<Segment> blank;
   if (c.shape.size() < 2) return blank;
@@ -246,24 +270,9 @@ BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double cho
   if (c.patternRepeating()) return nearNetBlankOf(c, reach, chordTolerance);
   const DepthFrame frame(away);
   const double level = frame.depth(c.start);
-  const std::vector<Segment> shape = stockBoundingShape(c, frame, level);
-  const auto [lo, hi] = cutSpanOf(shape, frame);
-  if (!(hi > lo)) return {};
-  // A shape that is a graph over the cut axis and stands below the start level between its ends
-  // (A stands on it; C may) bounds the stock itself: the shape, up to the level at its end and back
-  // along it — the band minus the part, without a boolean.
-  if (isGraphOverCutAxis(shape, frame) && highestBetweenEnds(shape, frame) < level - kTidyDistance) {
-    std::vector<Point> outline;
-    for (const Segment& s : shape) appendFlattened(outline, s, chordTolerance);
-    outline.push_back(frame.atDepth(shape.back().to, level));
-    outline.push_back(frame.atDepth(shape.front().from, level));
-    return regionFromSimpleOutline(outline);
-  }
-  const BgRegion band = regionFrom({frame.point(lo, level), frame.point(hi, level), frame.point(hi, level - reach),
-                                    frame.point(lo, level - reach)});
-  return without(band, partRegionOf(shape, away, reach, chordTolerance));
+  // A stands on the shape; C may.
+  return stockUpToLevel(stockBoundingShape(c, frame, level), away, level, reach, chordTolerance);
 }
-
 namespace {
 
 // The stock the case gives (a bar, a polygon), or nothing when the cycle implies it.
@@ -424,15 +433,14 @@ std::optional<Thickest> layerBeyondDepthOfCut(const MaterialModel& model, const 
   return thickest;
 }
 
-// A move along the finish shape (G70's finishing pass) removes the allowance, not a roughing layer.
+}  // namespace
+
 bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move) {
   if (!in.program.hasFinishingCycle) return false;
   const double tol = in.settings.tolerance();
   return nearPath(pointAt(move, 0.5), c.shape, tol) && nearPath(move.to, c.shape, tol) &&
          nearPath(move.from, c.shape, tol);
 }
-
-}  // namespace
 
 namespace {
 
@@ -474,6 +482,12 @@ MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
 // siemens_cycle_spec.h) in the plane.
 Point siemensAway(const SiemensCycleSpec& s) { return s.frame.toPlane(Point{0, 1}); }
 
+// The box [z0, z1] × [x0, x1] of a SINUMERIK call's frame, in the plane.
+BgRegion frameBoxInPlane(const SiemensFrame& frame, double z0, double z1, double x0, double x1) {
+  return regionFrom({frame.toPlane(Point{z0, x1}), frame.toPlane(Point{z1, x1}), frame.toPlane(Point{z1, x0}),
+                     frame.toPlane(Point{z0, x0})});
+}
+
 // The top of the part's face below the profile's first point: the lowest point of the walls the
 // profile begins with at that point's z (the point itself without them).
 double siemensFaceTop(const SiemensCycleSpec& s) {
@@ -496,12 +510,7 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
   // behind it.
   const double frontZ = std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
   const double faceTop = siemensFaceTop(s);
-  std::vector<Point> corners;
-  for (Point p : {Point{frontZ - reach, faceTop}, Point{frontZ, faceTop}, Point{frontZ, faceTop - reach},
-                  Point{frontZ - reach, faceTop - reach}}) {
-    corners.push_back(s.frame.toPlane(p));
-  }
-  return regionFrom(corners);
+  return frameBoxInPlane(s.frame, frontZ - reach, frontZ, faceTop - reach, faceTop);
 }
 
 // The stock a SINUMERIK call implies (interpretation, LCYC95.ROUGH note): a call that roughs takes
@@ -524,23 +533,8 @@ BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segmen
     }
     return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
   }
-  const auto [lo, hi] = cutSpanOf(profile, frame);
-  if (!(hi > lo)) return {};
-  const double top = s.levels.top;  // the frame's x is the plane's depth along `away`
-  BgRegion stock;
-  // A profile that is a graph over the cut axis and stands below the top between its ends bounds the
-  // stock itself: the profile, up to the top at its end and back along it — no boolean.
-  if (isGraphOverCutAxis(profile, frame) && highestBetweenEnds(profile, frame) < top - kTidyDistance) {
-    std::vector<Point> outline;
-    for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
-    outline.push_back(frame.atDepth(profile.back().to, top));
-    outline.push_back(frame.atDepth(profile.front().from, top));
-    stock = regionFromSimpleOutline(outline);
-  } else {
-    const BgRegion band = regionFrom({frame.point(lo, top), frame.point(hi, top), frame.point(hi, top - reach),
-                                      frame.point(lo, top - reach)});
-    stock = without(band, partRegionOf(profile, away, reach, chordTolerance));
-  }
+  // The frame's x is the plane's depth along `away`: the top level is the profile's highest point.
+  const BgRegion stock = stockUpToLevel(profile, away, s.levels.top, reach, chordTolerance);
   // Only a profile that comes down below the face's top has stock behind the face.
   return s.levels.bottom < siemensFaceTop(s) - kTidyDistance ? without(stock, siemensFrontFace(s, reach)) : stock;
 }
@@ -551,11 +545,7 @@ BgRegion siemensLeftAlone(const SiemensCycleSpec& s, double reach) {
   BgRegion pockets;
   if (s.isCycle95() || s.finishes()) return pockets;
   for (const SiemensUndercut& u : s.undercuts) {
-    std::vector<Point> corners;
-    for (Point p : {Point{u.endZ, u.top}, Point{u.rimZ, u.top}, Point{u.rimZ, u.top - reach}, Point{u.endZ, u.top - reach}}) {
-      corners.push_back(s.frame.toPlane(p));
-    }
-    const BgRegion pocket = regionFrom(corners);
+    const BgRegion pocket = frameBoxInPlane(s.frame, u.endZ, u.rimZ, u.top - reach, u.top);
     pockets.insert(pockets.end(), pocket.begin(), pocket.end());
   }
   return pockets;
@@ -618,10 +608,10 @@ class SiemensDocumentedCrossings {
 
   // The crossing of a rapid without its pieces inside the material the sequence meets.
   Crossing without(const Crossing& c, const Segment& rapid) const {
+    if (c.pieces.empty()) return c;
     const SiemensCycleSpec* f = r_.siemensFinishing;
     const bool toContourStart =
         f && !f->finishPath.empty() && distance(rapid.to, f->frame.toPlane(f->finishPath.front().from)) <= tol_;
-    if (c.pieces.empty()) return c;
     Crossing kept;
     for (const Segment& piece : c.pieces) {
       if (inside(chips_, piece) || (toContourStart && inside(allowanceLayer(), piece))) continue;

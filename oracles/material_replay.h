@@ -80,6 +80,10 @@ BgRegion withoutSkins(const BgRegion& region, Point away, double width);
 bool mayStandThickerWithoutSkins(const MaterialModel& model, double c0, double c1, const std::vector<Segment>& profile,
                                  double skin, double limit);
 
+// A move along the finish shape when a G70 follows (its finishing pass, within the tolerance at
+// both ends and the middle): it removes the allowance, not a roughing layer.
+bool onFinishShape(const JudgeInput& in, const CycleSpec& c, const Segment& move);
+
 // G73's near-net blank's profile: the shape after block ns grown by the relief and the allowance
 // (the first pass's path, G73.PASS.SHIFT); the blank is everything behind it (impliedStockOf).
 std::vector<Segment> nearNetBlankProfile(const CycleSpec& c);

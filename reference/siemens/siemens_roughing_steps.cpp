@@ -226,30 +226,25 @@ class StockRemovalPlanner {
   }
 
   // The part's front (LCYC95.ROUGH, interpretation): below the contour's first point the part's face
-  // stands at that point's z, up to the lowest point of the walls the contour begins with there. A
-  // level below that top meets the part at the face: the pass stops there (what lies behind the
-  // face, below the contour's start, is an undercut, CYCLE95.UNDERCUT).
-  double frontFaceTop() const {
+  // stands at that point's z, up to the lowest point of the walls the contour begins with there
+  // (`top`). A level below that top meets the part at the face: the pass stops there (what lies
+  // behind the face, below the contour's start, is an undercut, CYCLE95.UNDERCUT). The profile
+  // leaves the face at the end of those walls (the first point itself without them): `foot`, with
+  // the element that starts there.
+  struct FrontFace {
+    double top = 0;
+    ProfilePoint foot;
+  };
+  FrontFace frontFace() const {
     const double frontZ = c_.profile.front().from.z;
-    double top = c_.profile.front().from.x;
-    for (const Segment& s : c_.profile) {
+    FrontFace face{c_.profile.front().from.x, {0, c_.profile.front().from}};
+    while (face.foot.segment < c_.profile.size()) {
+      const Segment& s = c_.profile[face.foot.segment];
       if (s.isArc() || std::abs(s.to.z - frontZ) > kGeomEps) break;
-      top = std::min(top, s.to.x);
+      face.top = std::min(face.top, s.to.x);
+      face.foot = {face.foot.segment + 1, s.to};
     }
-    return top;
-  }
-
-  // Where the profile leaves the part's face: the end of the walls the contour begins with at its
-  // first point's z (the first point itself without them), and the element that starts there.
-  ProfilePoint faceFoot() const {
-    const double frontZ = c_.profile.front().from.z;
-    ProfilePoint foot{0, c_.profile.front().from};
-    while (foot.segment < c_.profile.size()) {
-      const Segment& s = c_.profile[foot.segment];
-      if (s.isArc() || std::abs(s.to.z - frontZ) > kGeomEps) break;
-      foot = {foot.segment + 1, s.to};
-    }
-    return foot;
+    return face;
   }
 
   // The z the part's face stands at: the profile's first point's, or the contour's own where the
@@ -258,13 +253,14 @@ class StockRemovalPlanner {
   double faceZ() const { return std::max(c_.profile.front().from.z, c_.contourFront.z); }
 
   void roughingPass(int k, double level, double previous) {
-    const bool meetsTheFace = level < frontFaceTop() - kGeomEps;
+    const FrontFace face = frontFace();
+    const bool meetsTheFace = level < face.top - kGeomEps;
     const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z);
     const double hitZ = meetsTheFace ? faceZ() : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
     if (hit) cleanUpAlongProfile(k, *hit, previous);
-    if (meetsTheFace) cleanUpFromTheFace(k, previous);
+    if (meetsTheFace) cleanUpFromTheFace(k, face.foot, previous);
     retract(k);
   }
 
@@ -278,8 +274,7 @@ class StockRemovalPlanner {
   // face below the previous level, the pass goes on up the face (G1) to that foot and along the
   // profile up to the previous level, as a level that meets the profile does — else the band
   // between the two levels above the profile beyond the face stays standing.
-  void cleanUpFromTheFace(int k, double previous) {
-    const ProfilePoint foot = faceFoot();
+  void cleanUpFromTheFace(int k, const ProfilePoint& foot, double previous) {
     if (foot.segment >= c_.profile.size() || foot.at.x >= previous - kGeomEps) return;
     // Where the profile's start lies behind the face: up the face to the contour's first point,
     // then across the allowance to the profile's start.
