@@ -62,11 +62,23 @@ struct ProfilePoint {
   Point at;
 };
 
+// Whether profile element `i` is a wall falling towards the depth axis among the walls the contour
+// begins with at its first point's z (before `foot`, the element where the profile leaves the
+// part's face). Such a wall has no part in front of it (nothing of the part stands beyond the
+// contour's start) nor behind it above the face's top: stock on both sides (LCYC95.ROUGH note).
+bool isFallingFrontWall(const std::vector<Segment>& profile, std::size_t i, std::size_t foot) {
+  return i < foot && profile[i].to.x < profile[i].from.x - kGeomEps;
+}
+
 // The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
-// `fromZ`, meets the profile.
-std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& profile, double level, double fromZ) {
+// `fromZ`, meets the profile — not counting the walls falling at its front (isFallingFrontWall: a
+// level between the face's top and the contour's first point runs through them into the stock
+// behind).
+std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& profile, double level, double fromZ,
+                                                 std::size_t foot = 0) {
   std::optional<ProfilePoint> best;
   for (std::size_t i = 0; i < profile.size(); ++i) {
+    if (isFallingFrontWall(profile, i, foot)) continue;
     for (const Point& p : intersectWithLevelX(profile[i], level)) {
       if (p.z > fromZ + kGeomEps) continue;
       if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
@@ -84,13 +96,14 @@ double positionAlong(const Segment& s, Point p) {
 }
 
 // Where the contour-parallel cleanup stops on `s`: where the profile reaches the previous level
-// `upper` (after its start), or where it starts to turn back down (an undercut begins).
-std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
+// `upper` (after its start), or where it starts to turn back down (an undercut begins) unless
+// `throughDescents` (the front stretch, frontStretchEnd).
+std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughDescents) {
   std::vector<Point> stops;
   for (const Point& p : intersectWithLevelX(s, upper)) {
     if (distance(p, s.from) > kGeomEps) stops.push_back(p);
   }
-  if (const auto descent = descentStartOn(s)) stops.push_back(*descent);
+  if (const auto descent = throughDescents ? std::nullopt : descentStartOn(s)) stops.push_back(*descent);
   if (stops.empty()) return std::nullopt;
   return *std::min_element(stops.begin(), stops.end(), [&](Point a, Point b) {
     return positionAlong(s, a) < positionAlong(s, b);
@@ -103,12 +116,16 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
 // previous pass cut), turns back towards the depth axis (an undercut), or ends. A level that meets
 // the profile at an element's end goes on along the next element; a stop at an element's start
 // leaves nothing on it (no piece without length: an arc's would read as a full circle).
-std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper) {
+// Within the front stretch (up to the element `throughDescentsUpTo`, when given) the cleanup goes on
+// through the profile's descents.
+std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
+                                         std::optional<std::size_t> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (hasNoLength(s)) continue;  // the hit is this element's end
-    if (const auto stop = cleanupStopOn(s, upper)) {
+    const bool throughDescents = throughDescentsUpTo && i <= *throughDescentsUpTo;
+    if (const auto stop = cleanupStopOn(s, upper, throughDescents)) {
       const Segment piece = portionOf(s, s.from, *stop);
       if (!hasNoLength(piece)) pieces.push_back(piece);
       break;
@@ -142,6 +159,26 @@ std::vector<Segment> pathBetween(const std::vector<Segment>& path, const Profile
     if (!hasNoLength(piece)) pieces.push_back(piece);
   }
   return pieces;
+}
+
+// The front stretch (CYCLE95.UNDERCUT note, interpretation): where the profile falls from its
+// first point — a wall falling down the part's face, a slope, an arc leaving it downwards — the
+// stretch from there to where the profile first rises back to the lowest level strictly above that
+// point is no undercut (findUndercuts passes over it): nothing stands before it, and the main
+// passes reach it along their levels from the start side. Their cleanup goes through the stretch's
+// descents up to the previous level. The element where the stretch ends, or nothing when the
+// profile does not fall from its first point (or never rises back).
+std::optional<std::size_t> frontStretchEnd(const std::vector<Segment>& profile, const std::vector<double>& levels) {
+  const Point first = profile.front().from;
+  const auto descent = descentStartOn(profile.front());
+  if (!descent || distance(*descent, first) > kGeomEps) return std::nullopt;
+  const double top = lowestLevelAbove(levels, first.x);
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    for (const Point& p : intersectWithLevelX(profile[i], top)) {
+      if (distance(p, first) > kGeomEps) return i;
+    }
+  }
+  return profile.size() - 1;
 }
 
 // Whether the pieces run straight along the depth axis (a wall): a plunge down them is one G1.
@@ -207,6 +244,7 @@ class StockRemovalPlanner {
   void rough() {
     const double top = start_.x - c_.clearance.x;
     const std::vector<double> levels = c_.mainLevels(top, lowestX(c_.profile), c_.maxInfeed, c_.line);
+    frontStretchEnd_ = frontStretchEnd(c_.profile, levels);
     approachStart();
     const int count = static_cast<int>(levels.size()) - 1;
     for (int k = 1; k <= count; ++k) {
@@ -255,7 +293,7 @@ class StockRemovalPlanner {
   void roughingPass(int k, double level, double previous) {
     const FrontFace face = frontFace();
     const bool meetsTheFace = level < face.top - kGeomEps;
-    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z);
+    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z, face.foot.segment);
     const double hitZ = meetsTheFace ? faceZ() : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
@@ -264,8 +302,9 @@ class StockRemovalPlanner {
     retract(k);
   }
 
-  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous) {
-    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous)) {
+  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous, bool throughTheFrontStretch = true) {
+    const auto through = throughTheFrontStretch ? frontStretchEnd_ : std::nullopt;
+    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous, through)) {
       emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
     }
   }
@@ -282,7 +321,7 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, {faceZ(), c_.contourFront.x}, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
     }
     emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
-    cleanUpAlongProfile(k, foot, previous);
+    cleanUpAlongProfile(k, foot, previous, false);
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
@@ -396,6 +435,7 @@ class StockRemovalPlanner {
   const StockRemoval& c_;
   Point position_;
   Point start_;
+  std::optional<std::size_t> frontStretchEnd_;  // set by rough()
   std::vector<Move> moves_;
 };
 

@@ -1,0 +1,122 @@
+// SINUMERIK stock-removal pockets at the contour's front (issue 16's fuzz classes; the shared steps
+// in reference/siemens/siemens_roughing_steps.cpp): a wall falling down the part's face, and the
+// front stretch — where the profile falls from its first point, up to where it rises back to the
+// level above that point — which the main passes reach along their levels (LCYC95.ROUGH and
+// CYCLE95.UNDERCUT notes in specs/rules.json). Expectations derived by hand in the comments.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "reference/siemens/siemens_cycles.h"
+#include "tests/siemens_contours.h"
+
+namespace cyclecert {
+namespace {
+
+using namespace siemens_test;
+
+// CYCLE95 VARI 1 (longitudinal external roughing), no allowances, FF1 0.2, FF2 0.05, _VRT 1.
+SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid) {
+  Cycle95Parameters p;
+  p.contourName = contour.name;
+  p.infeed = mid;
+  p.roughingFeed = 0.2;
+  p.undercutFeed = 0.05;
+  p.finishingFeed = 0.1;
+  p.type = machiningTypeOf(1).value();
+  p.retract = 1;
+  SiemensCycleCall call;
+  call.line = 4;
+  call.position = {5, 15};
+  call.contour = &contour;
+  return planCycle95(call, p);
+}
+
+// The contour begins with a wall falling down its face: (0, 6) → (0, 4), then (−3, 4) → (−3, 8) →
+// (−10, 8). The part's face stands at z 0 up to x 4 (the wall's foot); the wall has stock on both
+// sides. Top 8, bottom 4, MID 1.5: 3 levels of 4/3: 6.666667, 5.333333, 4; start (1, 9).
+//  pass 1 (6.666667, above the wall): to the rising wall at −3, up it to the top 8; retract (−2, 9);
+//    back to z 1.
+//  pass 2 (5.333333, through the falling wall — it is no roughing intersection): to (−3, 5.333333), up
+//    the wall to the previous level; retract (−2, 6.333333); back.
+//  pass 3 (4, the foot): the level meets the profile at the foot (0, 4), along the bottom to (−3, 4), up
+//    to 5.333333; retract (−2, 6.333333).
+//  The axes return one after the other, X first: (−2, 9), (1, 9).
+// (Before: pass 2 stopped where its level crossed the falling wall, at z 0, leaving the band between
+// 5.333333 and 6.666667 in front of the wall at −3.)
+TEST(SiemensFrontPockets, ALevelRunsThroughAWallFallingDownTheFace) {
+  const SiemensContour c = polyline("F", {{0, 6}, {0, 4}, {-3, 4}, {-3, 8}, {-10, 8}});
+  const double l1 = 8 - 4.0 / 3, l2 = 8 - 8.0 / 3;
+  expectMoves(roughWithCycle95(c, 1.5).moves, {
+                                                   {G0, {1, 9}, "approach"},
+                                                   {G0, {1, l1}, "pass", 1},
+                                                   {G1, {-3, l1}, "pass", 1},
+                                                   {G1, {-3, 8}, "pass", 1},
+                                                   {G0, {-2, 9}, "pass", 1},
+                                                   {G0, {1, 9}, "pass", 1},
+                                                   {G0, {1, l2}, "pass", 2},
+                                                   {G1, {-3, l2}, "pass", 2},
+                                                   {G1, {-3, l1}, "pass", 2},
+                                                   {G0, {-2, l1 + 1}, "pass", 2},
+                                                   {G0, {1, l1 + 1}, "pass", 2},
+                                                   {G0, {1, 4}, "pass", 3},
+                                                   {G1, {0, 4}, "pass", 3},
+                                                   {G1, {-3, 4}, "pass", 3},
+                                                   {G1, {-3, l2}, "pass", 3},
+                                                   {G0, {-2, l2 + 1}, "pass", 3},
+                                                   {G0, {-2, 9}, "return"},
+                                                   {G0, {1, 9}, "return"},
+                                               });
+}
+
+// A groove inside the front stretch: the contour falls down its face (0, 6) → (0, 4), runs to
+// (−2, 4), up to (−2, 5.5), along to (−3, 5.5), down into a groove to (−3, 4.5), along to (−5, 4.5),
+// up to (−5, 8), along to (−10, 8). Top 8, bottom 4, MID 1.5: levels 6.666667, 5.333333, 4; start
+// (1, 9). The front stretch runs from (0, 6) to where the profile rises back to the lowest level
+// above x 6, 6.666667 (on the wall at −5): no undercut, the main passes reach it.
+//  pass 1 (6.666667): to the wall at −5, up to 8; retract (−4, 9); back to z 1.
+//  pass 2 (5.333333): through the falling wall to (−2, 5.333333), up to 5.5, along to (−3, 5.5), and
+//    on through the stretch's descent: down to (−3, 4.5), along to (−5, 4.5), up to the previous level
+//    6.666667; retract (−4, 7.666667); back.
+//  pass 3 (4): from the wall's foot (0, 4) along to (−2, 4), up to 5.333333; retract (−1, 6.333333).
+//  Return, X first: (−1, 9), (1, 9). Every feed at FF1.
+// (Before: pass 2 stopped at the groove's rim (−3, 5.5), and the groove's stock below 6.666667 stayed:
+// no undercut pass takes a pocket of the front stretch — 'complete' in the fuzz.)
+TEST(SiemensFrontPockets, AGrooveInTheFrontStretchIsCleanedUpByTheMainPass) {
+  const SiemensContour c =
+      polyline("S", {{0, 6}, {0, 4}, {-2, 4}, {-2, 5.5}, {-3, 5.5}, {-3, 4.5}, {-5, 4.5}, {-5, 8}, {-10, 8}});
+  const double l1 = 8 - 4.0 / 3, l2 = 8 - 8.0 / 3;
+  const auto out = roughWithCycle95(c, 1.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, l1}, "pass", 1},
+                             {G1, {-5, l1}, "pass", 1},
+                             {G1, {-5, 8}, "pass", 1},
+                             {G0, {-4, 9}, "pass", 1},
+                             {G0, {1, 9}, "pass", 1},
+                             {G0, {1, l2}, "pass", 2},
+                             {G1, {-2, l2}, "pass", 2},
+                             {G1, {-2, 5.5}, "pass", 2},
+                             {G1, {-3, 5.5}, "pass", 2},
+                             {G1, {-3, 4.5}, "pass", 2},
+                             {G1, {-5, 4.5}, "pass", 2},
+                             {G1, {-5, l1}, "pass", 2},
+                             {G0, {-4, l1 + 1}, "pass", 2},
+                             {G0, {1, l1 + 1}, "pass", 2},
+                             {G0, {1, 4}, "pass", 3},
+                             {G1, {0, 4}, "pass", 3},
+                             {G1, {-2, 4}, "pass", 3},
+                             {G1, {-2, l2}, "pass", 3},
+                             {G0, {-1, l2 + 1}, "pass", 3},
+                             {G0, {-1, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (const Move& m : out.moves) {
+    if (m.kind == MoveKind::Feed) {
+      EXPECT_EQ(m.feed, 0.2);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cyclecert
