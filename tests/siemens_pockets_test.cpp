@@ -1,8 +1,9 @@
-// SINUMERIK stock-removal pockets at the contour's front (issue 16's fuzz classes; the shared steps
-// in reference/siemens/siemens_roughing_steps.cpp): a wall falling down the part's face, and the
-// front stretch — where the profile falls from its first point, up to where it rises back to the
-// level above that point — which the main passes reach along their levels (LCYC95.ROUGH and
-// CYCLE95.UNDERCUT notes in specs/rules.json). Expectations derived by hand in the comments.
+// SINUMERIK stock-removal pockets (issue 16's fuzz classes; the shared steps in
+// reference/siemens/siemens_roughing_steps.cpp): a wall falling down the part's face, the front
+// stretch — where the profile falls from its first point, up to where it rises back to the level
+// above that point — which the main passes reach along their levels, and a pocket inside a pocket
+// (LCYC95.ROUGH and CYCLE95.UNDERCUT notes in specs/rules.json). Expectations derived by hand in the
+// comments.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -114,6 +115,62 @@ TEST(SiemensFrontPockets, AGrooveInTheFrontStretchIsCleanedUpByTheMainPass) {
   for (const Move& m : out.moves) {
     if (m.kind == MoveKind::Feed) {
       EXPECT_EQ(m.feed, 0.2);
+    }
+  }
+}
+
+// A pocket whose rising side steps back down before the profile is back at the pocket's top (a
+// wall returning along itself, then a second, shallower groove): (0, 6) → (−2, 6), down the rim's
+// wall to (−2, 3), along to (−4, 3), up to (−4, 5), back down the same line to (−4, 4), along to
+// (−6, 4), up to (−6, 8), along to (−10, 8). Top 8, bottom 3, MID 2.5: main levels 5.5 and 3; start
+// (1, 9). Both main levels lie below the face's top 6.
+//  pass 1 (5.5): to the face at z 0, up it to (0, 6), along to the rim (−2, 6); retract (−1, 7); back.
+//  pass 2 (3): to the face; the face's top stands above the previous level; retract (1, 4).
+//  The pocket (CYCLE95.UNDERCUT): from the rim (−2, 6) to where the profile is back at its top 8,
+//  (−6, 8); bottom 3; its levels 5.5 and 3. G0 up to the start's height (1, 9).
+//  pass 3 (5.5): G0 along to above the rim, G1 down the wall to (−2, 5.5), across to the rising side
+//    at (−6, 5.5), up to 8; retract (−5, 9).
+//  pass 4 (3, the lowest): G0 to above the rim, G1 down to (−2, 3), along the bottom to (−4, 3), up to
+//    (−4, 5), and on through the rising side's own descent: down to (−4, 4), along to (−6, 4), up to
+//    the previous level 5.5; retract (−5, 6.5).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: pass 4 stopped at (−4, 5), where the rising side turns back down, and the second groove's
+// stock between 4 and 5.5 stayed: 'complete' in the fuzz.)
+TEST(SiemensPockets, ARisingSideThatStepsBackIsFollowedToThePreviousLevel) {
+  const SiemensContour c =
+      polyline("P", {{0, 6}, {-2, 6}, {-2, 3}, {-4, 3}, {-4, 5}, {-4, 4}, {-6, 4}, {-6, 8}, {-10, 8}});
+  const auto out = roughWithCycle95(c, 2.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 5.5}, "pass", 1},
+                             {G1, {0, 5.5}, "pass", 1},
+                             {G1, {0, 6}, "pass", 1},
+                             {G1, {-2, 6}, "pass", 1},
+                             {G0, {-1, 7}, "pass", 1},
+                             {G0, {1, 7}, "pass", 1},
+                             {G0, {1, 3}, "pass", 2},
+                             {G1, {0, 3}, "pass", 2},
+                             {G0, {1, 4}, "pass", 2},
+                             {G0, {1, 9}, "pass", 3},
+                             {G0, {-2, 9}, "pass", 3},
+                             {G1, {-2, 5.5}, "pass", 3},
+                             {G1, {-6, 5.5}, "pass", 3},
+                             {G1, {-6, 8}, "pass", 3},
+                             {G0, {-5, 9}, "pass", 3},
+                             {G0, {-2, 9}, "pass", 4},
+                             {G1, {-2, 3}, "pass", 4},
+                             {G1, {-4, 3}, "pass", 4},
+                             {G1, {-4, 5}, "pass", 4},
+                             {G1, {-4, 4}, "pass", 4},
+                             {G1, {-6, 4}, "pass", 4},
+                             {G1, {-6, 5.5}, "pass", 4},
+                             {G0, {-5, 6.5}, "pass", 4},
+                             {G0, {-5, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (std::size_t i = 10; i < 24; ++i) {
+    if (out.moves[i].kind == MoveKind::Feed) {
+      EXPECT_EQ(out.moves[i].feed, 0.05) << i;
     }
   }
 }

@@ -369,7 +369,10 @@ class StockRemovalPlanner {
     }
     if (out && !u.up.empty()) {
       emit(MoveKind::Feed, out->at, c_.undercutFeed, MovePhase::Pass, k, rules);
-      for (const Segment& s : cleanupAlongProfile(u.up, *out, previous)) {
+      // The rising side may step back down into a pocket of its own before the profile is back at
+      // the pocket's top (a wall returning along itself, a second groove): the pass follows it
+      // through those descents up to the previous level.
+      for (const Segment& s : cleanupAlongProfile(u.up, *out, previous, u.up.size() - 1)) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
       }
     } else {  // the pocket stays open to the profile's end
