@@ -302,8 +302,9 @@ class StockRemovalPlanner {
     retract(k);
   }
 
-  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous) {
-    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous, frontStretchEnd_)) {
+  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous, bool throughTheFrontStretch = true) {
+    const auto through = throughTheFrontStretch ? frontStretchEnd_ : std::nullopt;
+    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous, through)) {
       emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
     }
   }
@@ -311,9 +312,7 @@ class StockRemovalPlanner {
   // A level that met the part's face (interpretation, LCYC95.ROUGH): where the profile leaves the
   // face below the previous level, the pass goes on up the face (G1) to that foot and along the
   // profile up to the previous level, as a level that meets the profile does — else the band
-  // between the two levels above the profile beyond the face stays standing. Through the front
-  // stretch's descents too: where the profile falls from its first point, the band between the
-  // face's top and the previous level over the stretch is reached by no other pass.
+  // between the two levels above the profile beyond the face stays standing.
   void cleanUpFromTheFace(int k, const ProfilePoint& foot, double previous) {
     if (foot.segment >= c_.profile.size() || foot.at.x >= previous - kGeomEps) return;
     // Where the profile's start lies behind the face: up the face to the contour's first point,
@@ -322,7 +321,7 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, {faceZ(), c_.contourFront.x}, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
     }
     emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
-    cleanUpAlongProfile(k, foot, previous);
+    cleanUpAlongProfile(k, foot, previous, false);
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
