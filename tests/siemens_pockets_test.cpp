@@ -175,5 +175,45 @@ TEST(SiemensPockets, ARisingSideThatStepsBackIsFollowedToThePreviousLevel) {
   }
 }
 
+// A pocket open to the contour's end whose last element falls steeply (3 down over 1 along):
+// (0, 4) up the face to (0, 6), along to the rim (−4, 6), down to the end (−5, 3). Top 6, bottom 3,
+// MID 2: main levels 4.5 and 3; start (1, 7). A retract by _VRT in each axis from the end's z below the
+// rim would run back into the part across the steep fall (from (−5, 4.5) to (−4, 5.5), under the rim
+// at 6): the pass first climbs along X at the end's z — beyond the contour — to the pocket's top 6.
+//  pass 1 (4.5): meets the face wall at (0, 4.5), up it to 6; retract (1, 7) (the start: no G0 back).
+//  pass 2 (3, below the face's top 4): to the face at z 0; retract (1, 4).
+//  The pocket: rim (−4, 6), open to the end, top 6, bottom 3, levels 4.5 and 3; G0 up to (1, 7).
+//  pass 3 (4.5): G0 to above the rim, G1 down to it, along the falling side to (−4.5, 4.5), across at
+//    4.5 to the end's z −5, climb to (−5, 6); retract (−4, 7).
+//  pass 4 (3, the lowest): G0 to above (−4.5, 4.5), G1 down to it, along the falling side to the end
+//    (−5, 3), climb to (−5, 6); retract (−4, 7).
+//  Return: X already at the start's height; Z: (1, 7).
+TEST(SiemensPockets, APassEndingUnderASteepLastFallClimbsBeforeItsRetract) {
+  const SiemensContour c = polyline("E", {{0, 4}, {0, 6}, {-4, 6}, {-5, 3}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 7}, "approach"},
+                                                 {G0, {1, 4.5}, "pass", 1},
+                                                 {G1, {0, 4.5}, "pass", 1},
+                                                 {G1, {0, 6}, "pass", 1},
+                                                 {G0, {1, 7}, "pass", 1},
+                                                 {G0, {1, 3}, "pass", 2},
+                                                 {G1, {0, 3}, "pass", 2},
+                                                 {G0, {1, 4}, "pass", 2},
+                                                 {G0, {1, 7}, "pass", 3},
+                                                 {G0, {-4, 7}, "pass", 3},
+                                                 {G1, {-4, 6}, "pass", 3},
+                                                 {G1, {-4.5, 4.5}, "pass", 3},
+                                                 {G1, {-5, 4.5}, "pass", 3},
+                                                 {G1, {-5, 6}, "pass", 3},
+                                                 {G0, {-4, 7}, "pass", 3},
+                                                 {G0, {-4.5, 7}, "pass", 4},
+                                                 {G1, {-4.5, 4.5}, "pass", 4},
+                                                 {G1, {-5, 3}, "pass", 4},
+                                                 {G1, {-5, 6}, "pass", 4},
+                                                 {G0, {-4, 7}, "pass", 4},
+                                                 {G0, {1, 7}, "return"},
+                                             });
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -299,6 +299,7 @@ class StockRemovalPlanner {
     cutToIntersection(k, {hitZ, level});
     if (hit) cleanUpAlongProfile(k, *hit, previous);
     if (meetsTheFace) cleanUpFromTheFace(k, face.foot, previous);
+    climbOffASteepEnd(k, previous, c_.roughingFeed, c_.rules.rough);
     retract(k);
   }
 
@@ -379,7 +380,22 @@ class StockRemovalPlanner {
       const Point end = u.up.empty() ? lowPoint : u.up.back().to;
       emit(MoveKind::Feed, {end.z, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     }
+    climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
     emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+  }
+
+  // A pass that ends at the profile's last z, below `height`, where the profile arrives falling more
+  // steeply than 45° (towards −z): the retract by the clearance in each axis would run back into the
+  // part across that last element. The pass first climbs with G1 along the depth axis at the end's
+  // z — beyond the profile, where no part stands — to `height` (the previous level for a main pass,
+  // the pocket's top for a pocket pass), above the profile there (interpretation, LCYC95.ROUGH and
+  // CYCLE95.UNDERCUT notes).
+  void climbOffASteepEnd(int k, double height, double feed, const std::string& rule) {
+    const Point end = c_.profile.back().to;
+    if (std::abs(current().z - end.z) > kGeomEps || current().x >= height - kGeomEps) return;
+    const Point t = unitTangentAtEnd(c_.profile.back());
+    if (!(t.x < 0 && -t.x > std::abs(t.z) + 1e-9)) return;
+    emit(MoveKind::Feed, {end.z, height}, feed, MovePhase::Pass, k, {rule});
   }
 
   // Infeed to the level at the infeed angle (R109, from the infeed axis), never beyond the
