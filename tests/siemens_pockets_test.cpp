@@ -215,5 +215,70 @@ TEST(SiemensPockets, APassEndingUnderASteepLastFallClimbsBeforeItsRetract) {
                                              });
 }
 
+// A bump inside a pocket: (0, 6) → (−2, 6), down the rim's wall to (−2, 2), along to (−3, 2), up the
+// bump to (−3, 4), along to (−4, 4), down to (−4, 1), along to (−6, 1), up to (−6, 8), along to
+// (−10, 8). Top 8, bottom 1, MID 2.5: main levels 5.666667, 3.333333, 1 (all below the face's top 6);
+// start (1, 9). The pocket runs from the rim (−2, 6) to (−6, 8), its top 8, bottom 1 (after the bump),
+// its levels the same three.
+//  pass 1 (5.666667): to the face, up to (0, 6), along to the rim; retract (−1, 7); back.
+//  pass 2 (3.333333), pass 3 (1): to the face; retract.
+//  pass 4 (5.666667): G0 up to (1, 9), along to above the rim, G1 down the wall to (−2, 5.666667),
+//    across to the rising wall at −6, up to 8; retract (−5, 9).
+//  pass 5 (3.333333): down the wall to (−2, 3.333333), across only to where the level meets the bump,
+//    (−3, 3.333333), then along the profile over the bump — up to 4, along, down to 1 — along the bottom
+//    and up the rising wall to the previous level 5.666667; retract (−5, 6.666667).
+//  pass 6 (1, the lowest): down the falling side — the rim's wall to 2, along, over the bump, down to
+//    (−4, 1) —, along the bottom to (−6, 1), up to 3.333333; retract (−5, 4.333333).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: pass 5 crossed at its level straight to the rising wall, through the bump standing to 4:
+// no-gouge in the fuzz.)
+TEST(SiemensPockets, APocketPassDoesNotCrossABumpInsideThePocket) {
+  const SiemensContour c = polyline(
+      "B", {{0, 6}, {-2, 6}, {-2, 2}, {-3, 2}, {-3, 4}, {-4, 4}, {-4, 1}, {-6, 1}, {-6, 8}, {-10, 8}});
+  const double l1 = 8 - 7.0 / 3, l2 = 8 - 14.0 / 3;
+  expectMoves(roughWithCycle95(c, 2.5).moves, {
+                                                   {G0, {1, 9}, "approach"},
+                                                   {G0, {1, l1}, "pass", 1},
+                                                   {G1, {0, l1}, "pass", 1},
+                                                   {G1, {0, 6}, "pass", 1},
+                                                   {G1, {-2, 6}, "pass", 1},
+                                                   {G0, {-1, 7}, "pass", 1},
+                                                   {G0, {1, 7}, "pass", 1},
+                                                   {G0, {1, l2}, "pass", 2},
+                                                   {G1, {0, l2}, "pass", 2},
+                                                   {G0, {1, l2 + 1}, "pass", 2},
+                                                   {G0, {1, 1}, "pass", 3},
+                                                   {G1, {0, 1}, "pass", 3},
+                                                   {G0, {1, 2}, "pass", 3},
+                                                   {G0, {1, 9}, "pass", 4},
+                                                   {G0, {-2, 9}, "pass", 4},
+                                                   {G1, {-2, l1}, "pass", 4},
+                                                   {G1, {-6, l1}, "pass", 4},
+                                                   {G1, {-6, 8}, "pass", 4},
+                                                   {G0, {-5, 9}, "pass", 4},
+                                                   {G0, {-2, 9}, "pass", 5},
+                                                   {G1, {-2, l2}, "pass", 5},
+                                                   {G1, {-3, l2}, "pass", 5},
+                                                   {G1, {-3, 4}, "pass", 5},
+                                                   {G1, {-4, 4}, "pass", 5},
+                                                   {G1, {-4, 1}, "pass", 5},
+                                                   {G1, {-6, 1}, "pass", 5},
+                                                   {G1, {-6, l1}, "pass", 5},
+                                                   {G0, {-5, l1 + 1}, "pass", 5},
+                                                   {G0, {-2, l1 + 1}, "pass", 6},
+                                                   {G1, {-2, l2}, "pass", 6},
+                                                   {G1, {-2, 2}, "pass", 6},
+                                                   {G1, {-3, 2}, "pass", 6},
+                                                   {G1, {-3, 4}, "pass", 6},
+                                                   {G1, {-4, 4}, "pass", 6},
+                                                   {G1, {-4, 1}, "pass", 6},
+                                                   {G1, {-6, 1}, "pass", 6},
+                                                   {G1, {-6, l2}, "pass", 6},
+                                                   {G0, {-5, l2 + 1}, "pass", 6},
+                                                   {G0, {-5, 9}, "return"},
+                                                   {G0, {1, 9}, "return"},
+                                               });
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -350,11 +350,16 @@ class StockRemovalPlanner {
     return pathBetween(u.down, *upper, *lower);
   }
 
+  // The pocket's profile from its rim to its end: the falling side, then the rising side.
+  static std::vector<Segment> piecesOf(const Undercut& u) {
+    std::vector<Segment> pieces = u.down;
+    pieces.insert(pieces.end(), u.up.begin(), u.up.end());
+    return pieces;
+  }
+
   void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
     const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
     const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
-    const auto out = lowest ? std::optional<ProfilePoint>{ProfilePoint{0, lowPoint}}
-                            : roughingIntersection(u.up, level, std::numeric_limits<double>::infinity());
     const std::vector<std::string> rules{c_.rules.undercut};
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
@@ -368,12 +373,16 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
     }
-    if (out && !u.up.empty()) {
-      emit(MoveKind::Feed, out->at, c_.undercutFeed, MovePhase::Pass, k, rules);
-      // The rising side may step back down into a pocket of its own before the profile is back at
-      // the pocket's top (a wall returning along itself, a second groove): the pass follows it
-      // through those descents up to the previous level.
-      for (const Segment& s : cleanupAlongProfile(u.up, *out, previous, u.up.size() - 1)) {
+    // Across at the level to where it next meets the pocket's profile — the rising side, or a bump
+    // inside the pocket standing above the level —, then along the profile through its descents (the
+    // bump's far side, a groove inside the pocket, a wall returning along itself) up to the previous
+    // level. The lowest pass is at the lowest point already.
+    const std::vector<Segment> pocket = piecesOf(u);
+    const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
+                               : roughingIntersection(pocket, level, current().z - 1e-7);
+    if (across && !u.up.empty()) {
+      emit(MoveKind::Feed, across->at, c_.undercutFeed, MovePhase::Pass, k, rules);
+      for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
       }
     } else {  // the pocket stays open to the profile's end
