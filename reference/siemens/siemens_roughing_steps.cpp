@@ -97,7 +97,7 @@ double positionAlong(const Segment& s, Point p) {
 
 // Where the contour-parallel cleanup stops on `s`: where the profile reaches the previous level
 // `upper` (after its start), or where it starts to turn back down (an undercut begins) unless
-// `throughDescents` (the front stretch, frontStretchEnd).
+// `throughDescents` (in the front stretch, frontStretchEnd, and on a pocket's own profile).
 std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughDescents) {
   std::vector<Point> stops;
   for (const Point& p : intersectWithLevelX(s, upper)) {
@@ -116,8 +116,8 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughD
 // previous pass cut), turns back towards the depth axis (an undercut), or ends. A level that meets
 // the profile at an element's end goes on along the next element; a stop at an element's start
 // leaves nothing on it (no piece without length: an arc's would read as a full circle).
-// Within the front stretch (up to the element `throughDescentsUpTo`, when given) the cleanup goes on
-// through the profile's descents.
+// Up to the element `throughDescentsUpTo`, when given (the front stretch's end; a pocket's last
+// element), the cleanup goes on through the profile's descents.
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
                                          std::optional<std::size_t> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
@@ -322,7 +322,10 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, {faceZ(), c_.contourFront.x}, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
     }
     emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
-    cleanUpAlongProfile(k, foot, previous, false);
+    // Not through the front stretch's descents (CYCLE95.UNDERCUT note): that would run along a flat
+    // of the profile at this level behind the face, which tests/siemens_oracles_test.cpp
+    // (ALevelMeetsTheFaceAtTheContoursFrontNotBehindIt) holds to be a level running behind the face.
+    cleanUpAlongProfile(k, foot, previous, /*throughTheFrontStretch=*/false);
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
@@ -378,8 +381,10 @@ class StockRemovalPlanner {
     // bump's far side, a groove inside the pocket, a wall returning along itself) up to the previous
     // level. The lowest pass is at the lowest point already.
     const std::vector<Segment> pocket = piecesOf(u);
+    // Strictly beyond the point the pass came down to (on the falling side: no crossing of its own).
+    constexpr double kBeyond = 1e-7;
     const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
-                               : roughingIntersection(pocket, level, current().z - 1e-7);
+                               : roughingIntersection(pocket, level, current().z - kBeyond);
     if (across && !u.up.empty()) {
       emit(MoveKind::Feed, across->at, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
