@@ -62,11 +62,23 @@ struct ProfilePoint {
   Point at;
 };
 
+// Whether profile element `i` is a wall falling towards the depth axis among the walls the contour
+// begins with at its first point's z (before `foot`, the element where the profile leaves the
+// part's face). Such a wall has no part in front of it (nothing of the part stands beyond the
+// contour's start) nor behind it above the face's top: stock on both sides (LCYC95.ROUGH note).
+bool isFallingFrontWall(const std::vector<Segment>& profile, std::size_t i, std::size_t foot) {
+  return i < foot && profile[i].to.x < profile[i].from.x - kGeomEps;
+}
+
 // The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
-// `fromZ`, meets the profile.
-std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& profile, double level, double fromZ) {
+// `fromZ`, meets the profile — not counting the walls falling at its front (isFallingFrontWall: a
+// level between the face's top and the contour's first point runs through them into the stock
+// behind).
+std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& profile, double level, double fromZ,
+                                                 std::size_t foot = 0) {
   std::optional<ProfilePoint> best;
   for (std::size_t i = 0; i < profile.size(); ++i) {
+    if (isFallingFrontWall(profile, i, foot)) continue;
     for (const Point& p : intersectWithLevelX(profile[i], level)) {
       if (p.z > fromZ + kGeomEps) continue;
       if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
@@ -84,13 +96,14 @@ double positionAlong(const Segment& s, Point p) {
 }
 
 // Where the contour-parallel cleanup stops on `s`: where the profile reaches the previous level
-// `upper` (after its start), or where it starts to turn back down (an undercut begins).
-std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
+// `upper` (after its start), or where it starts to turn back down (an undercut begins) unless
+// `throughDescents` (in the front stretch, frontStretchEnd, and on a pocket's own profile).
+std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughDescents) {
   std::vector<Point> stops;
   for (const Point& p : intersectWithLevelX(s, upper)) {
     if (distance(p, s.from) > kGeomEps) stops.push_back(p);
   }
-  if (const auto descent = descentStartOn(s)) stops.push_back(*descent);
+  if (const auto descent = throughDescents ? std::nullopt : descentStartOn(s)) stops.push_back(*descent);
   if (stops.empty()) return std::nullopt;
   return *std::min_element(stops.begin(), stops.end(), [&](Point a, Point b) {
     return positionAlong(s, a) < positionAlong(s, b);
@@ -103,12 +116,16 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper) {
 // previous pass cut), turns back towards the depth axis (an undercut), or ends. A level that meets
 // the profile at an element's end goes on along the next element; a stop at an element's start
 // leaves nothing on it (no piece without length: an arc's would read as a full circle).
-std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper) {
+// Up to the element `throughDescentsUpTo`, when given (the front stretch's end; a pocket's last
+// element), the cleanup goes on through the profile's descents.
+std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
+                                         std::optional<std::size_t> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (hasNoLength(s)) continue;  // the hit is this element's end
-    if (const auto stop = cleanupStopOn(s, upper)) {
+    const bool throughDescents = throughDescentsUpTo && i <= *throughDescentsUpTo;
+    if (const auto stop = cleanupStopOn(s, upper, throughDescents)) {
       const Segment piece = portionOf(s, s.from, *stop);
       if (!hasNoLength(piece)) pieces.push_back(piece);
       break;
@@ -142,6 +159,26 @@ std::vector<Segment> pathBetween(const std::vector<Segment>& path, const Profile
     if (!hasNoLength(piece)) pieces.push_back(piece);
   }
   return pieces;
+}
+
+// The front stretch (CYCLE95.UNDERCUT note, interpretation): where the profile falls from its
+// first point — a wall falling down the part's face, a slope, an arc leaving it downwards — the
+// stretch from there to where the profile first rises back to the lowest level strictly above that
+// point is no undercut (findUndercuts passes over it): nothing stands before it, and the main
+// passes reach it along their levels from the start side. Their cleanup goes through the stretch's
+// descents up to the previous level. The element where the stretch ends, or nothing when the
+// profile does not fall from its first point (or never rises back).
+std::optional<std::size_t> frontStretchEnd(const std::vector<Segment>& profile, const std::vector<double>& levels) {
+  const Point first = profile.front().from;
+  const auto descent = descentStartOn(profile.front());
+  if (!descent || distance(*descent, first) > kGeomEps) return std::nullopt;
+  const double top = lowestLevelAbove(levels, first.x);
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    for (const Point& p : intersectWithLevelX(profile[i], top)) {
+      if (distance(p, first) > kGeomEps) return i;
+    }
+  }
+  return profile.size() - 1;
 }
 
 // Whether the pieces run straight along the depth axis (a wall): a plunge down them is one G1.
@@ -207,6 +244,7 @@ class StockRemovalPlanner {
   void rough() {
     const double top = start_.x - c_.clearance.x;
     const std::vector<double> levels = c_.mainLevels(top, lowestX(c_.profile), c_.maxInfeed, c_.line);
+    frontStretchEnd_ = frontStretchEnd(c_.profile, levels);
     approachStart();
     const int count = static_cast<int>(levels.size()) - 1;
     for (int k = 1; k <= count; ++k) {
@@ -255,17 +293,19 @@ class StockRemovalPlanner {
   void roughingPass(int k, double level, double previous) {
     const FrontFace face = frontFace();
     const bool meetsTheFace = level < face.top - kGeomEps;
-    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z);
+    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z, face.foot.segment);
     const double hitZ = meetsTheFace ? faceZ() : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
     if (hit) cleanUpAlongProfile(k, *hit, previous);
     if (meetsTheFace) cleanUpFromTheFace(k, face.foot, previous);
+    climbOffASteepEnd(k, previous, c_.roughingFeed, c_.rules.rough);
     retract(k);
   }
 
-  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous) {
-    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous)) {
+  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous, bool throughTheFrontStretch = true) {
+    const auto through = throughTheFrontStretch ? frontStretchEnd_ : std::nullopt;
+    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous, through)) {
       emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
     }
   }
@@ -282,7 +322,10 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, {faceZ(), c_.contourFront.x}, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
     }
     emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
-    cleanUpAlongProfile(k, foot, previous);
+    // Not through the front stretch's descents (CYCLE95.UNDERCUT note): that would run along a flat
+    // of the profile at this level behind the face, which tests/siemens_oracles_test.cpp
+    // (ALevelMeetsTheFaceAtTheContoursFrontNotBehindIt) holds to be a level running behind the face.
+    cleanUpAlongProfile(k, foot, previous, /*throughTheFrontStretch=*/false);
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
@@ -310,11 +353,16 @@ class StockRemovalPlanner {
     return pathBetween(u.down, *upper, *lower);
   }
 
+  // The pocket's profile from its rim to its end: the falling side, then the rising side.
+  static std::vector<Segment> piecesOf(const Undercut& u) {
+    std::vector<Segment> pieces = u.down;
+    pieces.insert(pieces.end(), u.up.begin(), u.up.end());
+    return pieces;
+  }
+
   void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
     const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
     const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
-    const auto out = lowest ? std::optional<ProfilePoint>{ProfilePoint{0, lowPoint}}
-                            : roughingIntersection(u.up, level, std::numeric_limits<double>::infinity());
     const std::vector<std::string> rules{c_.rules.undercut};
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
@@ -328,16 +376,40 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
     }
-    if (out && !u.up.empty()) {
-      emit(MoveKind::Feed, out->at, c_.undercutFeed, MovePhase::Pass, k, rules);
-      for (const Segment& s : cleanupAlongProfile(u.up, *out, previous)) {
+    // Across at the level to where it next meets the pocket's profile — the rising side, or a bump
+    // inside the pocket standing above the level —, then along the profile through its descents (the
+    // bump's far side, a groove inside the pocket, a wall returning along itself) up to the previous
+    // level. The lowest pass is at the lowest point already.
+    const std::vector<Segment> pocket = piecesOf(u);
+    // Strictly beyond the point the pass came down to (on the falling side: no crossing of its own).
+    constexpr double kBeyond = 1e-7;
+    const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
+                               : roughingIntersection(pocket, level, current().z - kBeyond);
+    if (across && !u.up.empty()) {
+      emit(MoveKind::Feed, across->at, c_.undercutFeed, MovePhase::Pass, k, rules);
+      for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
       }
     } else {  // the pocket stays open to the profile's end
       const Point end = u.up.empty() ? lowPoint : u.up.back().to;
       emit(MoveKind::Feed, {end.z, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     }
+    climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
     emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+  }
+
+  // A pass that ends at the profile's last z, below `height`, where the profile arrives falling more
+  // steeply than 45° (towards −z): the retract by the clearance in each axis would run back into the
+  // part across that last element. The pass first climbs with G1 along the depth axis at the end's
+  // z — beyond the profile, where no part stands — to `height` (the previous level for a main pass,
+  // the pocket's top for a pocket pass), above the profile there (interpretation, LCYC95.ROUGH and
+  // CYCLE95.UNDERCUT notes).
+  void climbOffASteepEnd(int k, double height, double feed, const std::string& rule) {
+    const Point end = c_.profile.back().to;
+    if (std::abs(current().z - end.z) > kGeomEps || current().x >= height - kGeomEps) return;
+    const Point t = unitTangentAtEnd(c_.profile.back());
+    if (!(t.x < 0 && -t.x > std::abs(t.z) + 1e-9)) return;
+    emit(MoveKind::Feed, {end.z, height}, feed, MovePhase::Pass, k, {rule});
   }
 
   // Infeed to the level at the infeed angle (R109, from the infeed axis), never beyond the
@@ -396,6 +468,7 @@ class StockRemovalPlanner {
   const StockRemoval& c_;
   Point position_;
   Point start_;
+  std::optional<std::size_t> frontStretchEnd_;  // set by rough()
   std::vector<Move> moves_;
 };
 

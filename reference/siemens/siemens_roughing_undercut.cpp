@@ -46,16 +46,6 @@ std::optional<Point> reachesLevelOn(const Segment& s, double level) {
   return std::nullopt;
 }
 
-// The lowest level strictly above the rim (the top when none is): the level through a rim stops
-// there (its cleanup turns back with the profile), so only the levels above it pass over the pocket.
-double lowestLevelAbove(const std::vector<double>& levels, double x) {
-  double best = levels.front();
-  for (double l : levels) {
-    if (l > x + kGeomEps) best = std::min(best, l);
-  }
-  return best;
-}
-
 // The pocket's pieces from the rim to where the profile is back at `top`, split at the lowest point.
 // Returns the index of the segment after the pocket and the point it ends at.
 struct PocketWalk {
@@ -111,6 +101,14 @@ Segment portionOf(const Segment& s, Point from, Point to) {
   r.from = from;
   r.to = to;
   return r;
+}
+
+double lowestLevelAbove(const std::vector<double>& levels, double x) {
+  double best = levels.front();
+  for (double l : levels) {
+    if (l > x + kGeomEps) best = std::min(best, l);
+  }
+  return best;
 }
 
 double Undercut::bottom() const {

@@ -29,6 +29,11 @@ bool hasNoLength(const Segment& portion);
 // cut axis, the circle falling away on both sides), the top of an arc inside it, or nothing.
 std::optional<Point> descentStartOn(const Segment& s);
 
+// The lowest of the levels (from the top down) strictly above `x` (the top when none is): the level
+// through a rim stops there (its cleanup turns back with the profile), so only the levels above it
+// pass over the pocket below.
+double lowestLevelAbove(const std::vector<double>& levels, double x);
+
 // The undercuts of `profile`, in order along it. `levels` are the roughing levels from the top down
 // (the top of the profile first): a pocket's stock lies below the lowest level strictly above its rim
 // (the level through a rim stops there).

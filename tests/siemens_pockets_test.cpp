@@ -1,0 +1,284 @@
+// SINUMERIK stock-removal pockets (issue 16's fuzz classes; the shared steps in
+// reference/siemens/siemens_roughing_steps.cpp): a wall falling down the part's face, the front
+// stretch — where the profile falls from its first point, up to where it rises back to the level
+// above that point — which the main passes reach along their levels, and a pocket inside a pocket
+// (LCYC95.ROUGH and CYCLE95.UNDERCUT notes in specs/rules.json). Expectations derived by hand in the
+// comments.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "reference/siemens/siemens_cycles.h"
+#include "tests/siemens_contours.h"
+
+namespace cyclecert {
+namespace {
+
+using namespace siemens_test;
+
+// CYCLE95 VARI 1 (longitudinal external roughing), no allowances, FF1 0.2, FF2 0.05, _VRT 1.
+SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid) {
+  Cycle95Parameters p;
+  p.contourName = contour.name;
+  p.infeed = mid;
+  p.roughingFeed = 0.2;
+  p.undercutFeed = 0.05;
+  p.finishingFeed = 0.1;
+  p.type = machiningTypeOf(1).value();
+  p.retract = 1;
+  SiemensCycleCall call;
+  call.line = 4;
+  call.position = {5, 15};
+  call.contour = &contour;
+  return planCycle95(call, p);
+}
+
+// The contour begins with a wall falling down its face: (0, 6) → (0, 4), then (−3, 4) → (−3, 8) →
+// (−10, 8). The part's face stands at z 0 up to x 4 (the wall's foot); the wall has stock on both
+// sides. Top 8, bottom 4, MID 1.5: 3 levels of 4/3: 6.666667, 5.333333, 4; start (1, 9).
+//  pass 1 (6.666667, above the wall): to the rising wall at −3, up it to the top 8; retract (−2, 9);
+//    back to z 1.
+//  pass 2 (5.333333, through the falling wall — it is no roughing intersection): to (−3, 5.333333), up
+//    the wall to the previous level; retract (−2, 6.333333); back.
+//  pass 3 (4, the foot): the level meets the profile at the foot (0, 4), along the bottom to (−3, 4), up
+//    to 5.333333; retract (−2, 6.333333).
+//  The axes return one after the other, X first: (−2, 9), (1, 9).
+// (Before: pass 2 stopped where its level crossed the falling wall, at z 0, leaving the band between
+// 5.333333 and 6.666667 in front of the wall at −3.)
+TEST(SiemensFrontPockets, ALevelRunsThroughAWallFallingDownTheFace) {
+  const SiemensContour c = polyline("F", {{0, 6}, {0, 4}, {-3, 4}, {-3, 8}, {-10, 8}});
+  const double l1 = 8 - 4.0 / 3, l2 = 8 - 8.0 / 3;
+  expectMoves(roughWithCycle95(c, 1.5).moves, {
+                                                   {G0, {1, 9}, "approach"},
+                                                   {G0, {1, l1}, "pass", 1},
+                                                   {G1, {-3, l1}, "pass", 1},
+                                                   {G1, {-3, 8}, "pass", 1},
+                                                   {G0, {-2, 9}, "pass", 1},
+                                                   {G0, {1, 9}, "pass", 1},
+                                                   {G0, {1, l2}, "pass", 2},
+                                                   {G1, {-3, l2}, "pass", 2},
+                                                   {G1, {-3, l1}, "pass", 2},
+                                                   {G0, {-2, l1 + 1}, "pass", 2},
+                                                   {G0, {1, l1 + 1}, "pass", 2},
+                                                   {G0, {1, 4}, "pass", 3},
+                                                   {G1, {0, 4}, "pass", 3},
+                                                   {G1, {-3, 4}, "pass", 3},
+                                                   {G1, {-3, l2}, "pass", 3},
+                                                   {G0, {-2, l2 + 1}, "pass", 3},
+                                                   {G0, {-2, 9}, "return"},
+                                                   {G0, {1, 9}, "return"},
+                                               });
+}
+
+// A groove inside the front stretch: the contour falls down its face (0, 6) → (0, 4), runs to
+// (−2, 4), up to (−2, 5.5), along to (−3, 5.5), down into a groove to (−3, 4.5), along to (−5, 4.5),
+// up to (−5, 8), along to (−10, 8). Top 8, bottom 4, MID 1.5: levels 6.666667, 5.333333, 4; start
+// (1, 9). The front stretch runs from (0, 6) to where the profile rises back to the lowest level
+// above x 6, 6.666667 (on the wall at −5): no undercut, the main passes reach it.
+//  pass 1 (6.666667): to the wall at −5, up to 8; retract (−4, 9); back to z 1.
+//  pass 2 (5.333333): through the falling wall to (−2, 5.333333), up to 5.5, along to (−3, 5.5), and
+//    on through the stretch's descent: down to (−3, 4.5), along to (−5, 4.5), up to the previous level
+//    6.666667; retract (−4, 7.666667); back.
+//  pass 3 (4): from the wall's foot (0, 4) along to (−2, 4), up to 5.333333; retract (−1, 6.333333).
+//  Return, X first: (−1, 9), (1, 9). Every feed at FF1.
+// (Before: pass 2 stopped at the groove's rim (−3, 5.5), and the groove's stock below 6.666667 stayed:
+// no undercut pass takes a pocket of the front stretch — 'complete' in the fuzz.)
+TEST(SiemensFrontPockets, AGrooveInTheFrontStretchIsCleanedUpByTheMainPass) {
+  const SiemensContour c =
+      polyline("S", {{0, 6}, {0, 4}, {-2, 4}, {-2, 5.5}, {-3, 5.5}, {-3, 4.5}, {-5, 4.5}, {-5, 8}, {-10, 8}});
+  const double l1 = 8 - 4.0 / 3, l2 = 8 - 8.0 / 3;
+  const auto out = roughWithCycle95(c, 1.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, l1}, "pass", 1},
+                             {G1, {-5, l1}, "pass", 1},
+                             {G1, {-5, 8}, "pass", 1},
+                             {G0, {-4, 9}, "pass", 1},
+                             {G0, {1, 9}, "pass", 1},
+                             {G0, {1, l2}, "pass", 2},
+                             {G1, {-2, l2}, "pass", 2},
+                             {G1, {-2, 5.5}, "pass", 2},
+                             {G1, {-3, 5.5}, "pass", 2},
+                             {G1, {-3, 4.5}, "pass", 2},
+                             {G1, {-5, 4.5}, "pass", 2},
+                             {G1, {-5, l1}, "pass", 2},
+                             {G0, {-4, l1 + 1}, "pass", 2},
+                             {G0, {1, l1 + 1}, "pass", 2},
+                             {G0, {1, 4}, "pass", 3},
+                             {G1, {0, 4}, "pass", 3},
+                             {G1, {-2, 4}, "pass", 3},
+                             {G1, {-2, l2}, "pass", 3},
+                             {G0, {-1, l2 + 1}, "pass", 3},
+                             {G0, {-1, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (const Move& m : out.moves) {
+    if (m.kind == MoveKind::Feed) {
+      EXPECT_EQ(m.feed, 0.2);
+    }
+  }
+}
+
+// A pocket whose rising side steps back down before the profile is back at the pocket's top (a
+// wall returning along itself, then a second, shallower groove): (0, 6) → (−2, 6), down the rim's
+// wall to (−2, 3), along to (−4, 3), up to (−4, 5), back down the same line to (−4, 4), along to
+// (−6, 4), up to (−6, 8), along to (−10, 8). Top 8, bottom 3, MID 2.5: main levels 5.5 and 3; start
+// (1, 9). Both main levels lie below the face's top 6.
+//  pass 1 (5.5): to the face at z 0, up it to (0, 6), along to the rim (−2, 6); retract (−1, 7); back.
+//  pass 2 (3): to the face; the face's top stands above the previous level; retract (1, 4).
+//  The pocket (CYCLE95.UNDERCUT): from the rim (−2, 6) to where the profile is back at its top 8,
+//  (−6, 8); bottom 3; its levels 5.5 and 3. G0 up to the start's height (1, 9).
+//  pass 3 (5.5): G0 along to above the rim, G1 down the wall to (−2, 5.5), across to the rising side
+//    at (−6, 5.5), up to 8; retract (−5, 9).
+//  pass 4 (3, the lowest): G0 to above the rim, G1 down to (−2, 3), along the bottom to (−4, 3), up to
+//    (−4, 5), and on through the rising side's own descent: down to (−4, 4), along to (−6, 4), up to
+//    the previous level 5.5; retract (−5, 6.5).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: pass 4 stopped at (−4, 5), where the rising side turns back down, and the second groove's
+// stock between 4 and 5.5 stayed: 'complete' in the fuzz.)
+TEST(SiemensPockets, ARisingSideThatStepsBackIsFollowedToThePreviousLevel) {
+  const SiemensContour c =
+      polyline("P", {{0, 6}, {-2, 6}, {-2, 3}, {-4, 3}, {-4, 5}, {-4, 4}, {-6, 4}, {-6, 8}, {-10, 8}});
+  const auto out = roughWithCycle95(c, 2.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 5.5}, "pass", 1},
+                             {G1, {0, 5.5}, "pass", 1},
+                             {G1, {0, 6}, "pass", 1},
+                             {G1, {-2, 6}, "pass", 1},
+                             {G0, {-1, 7}, "pass", 1},
+                             {G0, {1, 7}, "pass", 1},
+                             {G0, {1, 3}, "pass", 2},
+                             {G1, {0, 3}, "pass", 2},
+                             {G0, {1, 4}, "pass", 2},
+                             {G0, {1, 9}, "pass", 3},
+                             {G0, {-2, 9}, "pass", 3},
+                             {G1, {-2, 5.5}, "pass", 3},
+                             {G1, {-6, 5.5}, "pass", 3},
+                             {G1, {-6, 8}, "pass", 3},
+                             {G0, {-5, 9}, "pass", 3},
+                             {G0, {-2, 9}, "pass", 4},
+                             {G1, {-2, 3}, "pass", 4},
+                             {G1, {-4, 3}, "pass", 4},
+                             {G1, {-4, 5}, "pass", 4},
+                             {G1, {-4, 4}, "pass", 4},
+                             {G1, {-6, 4}, "pass", 4},
+                             {G1, {-6, 5.5}, "pass", 4},
+                             {G0, {-5, 6.5}, "pass", 4},
+                             {G0, {-5, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (std::size_t i = 10; i < 24; ++i) {
+    if (out.moves[i].kind == MoveKind::Feed) {
+      EXPECT_EQ(out.moves[i].feed, 0.05) << i;
+    }
+  }
+}
+
+// A pocket open to the contour's end whose last element falls steeply (3 down over 1 along):
+// (0, 4) up the face to (0, 6), along to the rim (−4, 6), down to the end (−5, 3). Top 6, bottom 3,
+// MID 2: main levels 4.5 and 3; start (1, 7). A retract by _VRT in each axis from the end's z below the
+// rim would run back into the part across the steep fall (from (−5, 4.5) to (−4, 5.5), under the rim
+// at 6): the pass first climbs along X at the end's z — beyond the contour — to the pocket's top 6.
+//  pass 1 (4.5): meets the face wall at (0, 4.5), up it to 6; retract (1, 7) (the start: no G0 back).
+//  pass 2 (3, below the face's top 4): to the face at z 0; retract (1, 4).
+//  The pocket: rim (−4, 6), open to the end, top 6, bottom 3, levels 4.5 and 3; G0 up to (1, 7).
+//  pass 3 (4.5): G0 to above the rim, G1 down to it, along the falling side to (−4.5, 4.5), across at
+//    4.5 to the end's z −5, climb to (−5, 6); retract (−4, 7).
+//  pass 4 (3, the lowest): G0 to above (−4.5, 4.5), G1 down to it, along the falling side to the end
+//    (−5, 3), climb to (−5, 6); retract (−4, 7).
+//  Return: X already at the start's height; Z: (1, 7).
+TEST(SiemensPockets, APassEndingUnderASteepLastFallClimbsBeforeItsRetract) {
+  const SiemensContour c = polyline("E", {{0, 4}, {0, 6}, {-4, 6}, {-5, 3}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 7}, "approach"},
+                                                 {G0, {1, 4.5}, "pass", 1},
+                                                 {G1, {0, 4.5}, "pass", 1},
+                                                 {G1, {0, 6}, "pass", 1},
+                                                 {G0, {1, 7}, "pass", 1},
+                                                 {G0, {1, 3}, "pass", 2},
+                                                 {G1, {0, 3}, "pass", 2},
+                                                 {G0, {1, 4}, "pass", 2},
+                                                 {G0, {1, 7}, "pass", 3},
+                                                 {G0, {-4, 7}, "pass", 3},
+                                                 {G1, {-4, 6}, "pass", 3},
+                                                 {G1, {-4.5, 4.5}, "pass", 3},
+                                                 {G1, {-5, 4.5}, "pass", 3},
+                                                 {G1, {-5, 6}, "pass", 3},
+                                                 {G0, {-4, 7}, "pass", 3},
+                                                 {G0, {-4.5, 7}, "pass", 4},
+                                                 {G1, {-4.5, 4.5}, "pass", 4},
+                                                 {G1, {-5, 3}, "pass", 4},
+                                                 {G1, {-5, 6}, "pass", 4},
+                                                 {G0, {-4, 7}, "pass", 4},
+                                                 {G0, {1, 7}, "return"},
+                                             });
+}
+
+// A bump inside a pocket: (0, 6) → (−2, 6), down the rim's wall to (−2, 2), along to (−3, 2), up the
+// bump to (−3, 4), along to (−4, 4), down to (−4, 1), along to (−6, 1), up to (−6, 8), along to
+// (−10, 8). Top 8, bottom 1, MID 2.5: main levels 5.666667, 3.333333, 1 (all below the face's top 6);
+// start (1, 9). The pocket runs from the rim (−2, 6) to (−6, 8), its top 8, bottom 1 (after the bump),
+// its levels the same three.
+//  pass 1 (5.666667): to the face, up to (0, 6), along to the rim; retract (−1, 7); back.
+//  pass 2 (3.333333), pass 3 (1): to the face; retract.
+//  pass 4 (5.666667): G0 up to (1, 9), along to above the rim, G1 down the wall to (−2, 5.666667),
+//    across to the rising wall at −6, up to 8; retract (−5, 9).
+//  pass 5 (3.333333): down the wall to (−2, 3.333333), across only to where the level meets the bump,
+//    (−3, 3.333333), then along the profile over the bump — up to 4, along, down to 1 — along the bottom
+//    and up the rising wall to the previous level 5.666667; retract (−5, 6.666667).
+//  pass 6 (1, the lowest): down the falling side — the rim's wall to 2, along, over the bump, down to
+//    (−4, 1) —, along the bottom to (−6, 1), up to 3.333333; retract (−5, 4.333333).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: pass 5 crossed at its level straight to the rising wall, through the bump standing to 4:
+// no-gouge in the fuzz.)
+TEST(SiemensPockets, APocketPassDoesNotCrossABumpInsideThePocket) {
+  const SiemensContour c = polyline(
+      "B", {{0, 6}, {-2, 6}, {-2, 2}, {-3, 2}, {-3, 4}, {-4, 4}, {-4, 1}, {-6, 1}, {-6, 8}, {-10, 8}});
+  const double l1 = 8 - 7.0 / 3, l2 = 8 - 14.0 / 3;
+  expectMoves(roughWithCycle95(c, 2.5).moves, {
+                                                   {G0, {1, 9}, "approach"},
+                                                   {G0, {1, l1}, "pass", 1},
+                                                   {G1, {0, l1}, "pass", 1},
+                                                   {G1, {0, 6}, "pass", 1},
+                                                   {G1, {-2, 6}, "pass", 1},
+                                                   {G0, {-1, 7}, "pass", 1},
+                                                   {G0, {1, 7}, "pass", 1},
+                                                   {G0, {1, l2}, "pass", 2},
+                                                   {G1, {0, l2}, "pass", 2},
+                                                   {G0, {1, l2 + 1}, "pass", 2},
+                                                   {G0, {1, 1}, "pass", 3},
+                                                   {G1, {0, 1}, "pass", 3},
+                                                   {G0, {1, 2}, "pass", 3},
+                                                   {G0, {1, 9}, "pass", 4},
+                                                   {G0, {-2, 9}, "pass", 4},
+                                                   {G1, {-2, l1}, "pass", 4},
+                                                   {G1, {-6, l1}, "pass", 4},
+                                                   {G1, {-6, 8}, "pass", 4},
+                                                   {G0, {-5, 9}, "pass", 4},
+                                                   {G0, {-2, 9}, "pass", 5},
+                                                   {G1, {-2, l2}, "pass", 5},
+                                                   {G1, {-3, l2}, "pass", 5},
+                                                   {G1, {-3, 4}, "pass", 5},
+                                                   {G1, {-4, 4}, "pass", 5},
+                                                   {G1, {-4, 1}, "pass", 5},
+                                                   {G1, {-6, 1}, "pass", 5},
+                                                   {G1, {-6, l1}, "pass", 5},
+                                                   {G0, {-5, l1 + 1}, "pass", 5},
+                                                   {G0, {-2, l1 + 1}, "pass", 6},
+                                                   {G1, {-2, l2}, "pass", 6},
+                                                   {G1, {-2, 2}, "pass", 6},
+                                                   {G1, {-3, 2}, "pass", 6},
+                                                   {G1, {-3, 4}, "pass", 6},
+                                                   {G1, {-4, 4}, "pass", 6},
+                                                   {G1, {-4, 1}, "pass", 6},
+                                                   {G1, {-6, 1}, "pass", 6},
+                                                   {G1, {-6, l2}, "pass", 6},
+                                                   {G0, {-5, l2 + 1}, "pass", 6},
+                                                   {G0, {-5, 9}, "return"},
+                                                   {G0, {1, 9}, "return"},
+                                               });
+}
+
+}  // namespace
+}  // namespace cyclecert
