@@ -280,5 +280,48 @@ TEST(SiemensPockets, APocketPassDoesNotCrossABumpInsideThePocket) {
                                                });
 }
 
+// The profile falls from its first point along a slope: (0, 5) → (−2, 3) → (−4, 3) → (−4, 8) →
+// (−10, 8). The face stands at z 0 up to x 5 (the first point). Top 8, bottom 3, MID 2: 3 levels of
+// 5/3: 6.333333, 4.666667, 3; start (1, 9). The front stretch runs from (0, 5) to where the profile
+// rises back to the lowest level above x 5, 6.333333 (on the wall at −4): no undercut.
+//  pass 1 (6.333333, above the first point): to the wall at −4, up it to 8; retract (−3, 9); back.
+//  pass 2 (4.666667, below the face's top): G1 to the face at z 0, up the face to the first point
+//    (0, 5), then along the profile through the stretch's descent: down the slope to (−2, 3), along to
+//    (−4, 3), up the wall to the previous level 6.333333; retract (−3, 7.333333); back.
+//  pass 3 (3): to the face at z 0; the face's top stands above the previous level; retract (1, 4).
+//  Return, X first: (1, 9) (then Z: no move). Every feed at FF1.
+// (Before: pass 2 stopped at the first point, where the slope turns down, and the band between 5 and
+// 6.333333 above the slope stayed, no pass reaching it: 'complete' in the fuzz.)
+TEST(SiemensFrontPockets, APassMeetingTheFaceFollowsTheFrontStretchDown) {
+  const SiemensContour c = polyline("S", {{0, 5}, {-2, 3}, {-4, 3}, {-4, 8}, {-10, 8}});
+  const double l1 = 8 - 5.0 / 3, l2 = 8 - 10.0 / 3;
+  const auto out = roughWithCycle95(c, 2);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, l1}, "pass", 1},
+                             {G1, {-4, l1}, "pass", 1},
+                             {G1, {-4, 8}, "pass", 1},
+                             {G0, {-3, 9}, "pass", 1},
+                             {G0, {1, 9}, "pass", 1},
+                             {G0, {1, l2}, "pass", 2},
+                             {G1, {0, l2}, "pass", 2},
+                             {G1, {0, 5}, "pass", 2},
+                             {G1, {-2, 3}, "pass", 2},
+                             {G1, {-4, 3}, "pass", 2},
+                             {G1, {-4, l1}, "pass", 2},
+                             {G0, {-3, l1 + 1}, "pass", 2},
+                             {G0, {1, l1 + 1}, "pass", 2},
+                             {G0, {1, 3}, "pass", 3},
+                             {G1, {0, 3}, "pass", 3},
+                             {G0, {1, 4}, "pass", 3},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (const Move& m : out.moves) {
+    if (m.kind == MoveKind::Feed) {
+      EXPECT_EQ(m.feed, 0.2);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -303,9 +303,8 @@ class StockRemovalPlanner {
     retract(k);
   }
 
-  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous, bool throughTheFrontStretch = true) {
-    const auto through = throughTheFrontStretch ? frontStretchEnd_ : std::nullopt;
-    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous, through)) {
+  void cleanUpAlongProfile(int k, const ProfilePoint& from, double previous) {
+    for (const Segment& s : cleanupAlongProfile(c_.profile, from, previous, frontStretchEnd_)) {
       emitAlong(s, c_.roughingFeed, MovePhase::Pass, k, c_.rules.rough);
     }
   }
@@ -313,7 +312,9 @@ class StockRemovalPlanner {
   // A level that met the part's face (interpretation, LCYC95.ROUGH): where the profile leaves the
   // face below the previous level, the pass goes on up the face (G1) to that foot and along the
   // profile up to the previous level, as a level that meets the profile does — else the band
-  // between the two levels above the profile beyond the face stays standing.
+  // between the two levels above the profile beyond the face stays standing. Through the front
+  // stretch's descents too: where the profile falls from its first point, the band between the
+  // face's top and the previous level over the stretch is reached by no other pass.
   void cleanUpFromTheFace(int k, const ProfilePoint& foot, double previous) {
     if (foot.segment >= c_.profile.size() || foot.at.x >= previous - kGeomEps) return;
     // Where the profile's start lies behind the face: up the face to the contour's first point,
@@ -322,10 +323,7 @@ class StockRemovalPlanner {
       emit(MoveKind::Feed, {faceZ(), c_.contourFront.x}, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
     }
     emit(MoveKind::Feed, foot.at, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
-    // Not through the front stretch's descents (CYCLE95.UNDERCUT note): that would run along a flat
-    // of the profile at this level behind the face, which tests/siemens_oracles_test.cpp
-    // (ALevelMeetsTheFaceAtTheContoursFrontNotBehindIt) holds to be a level running behind the face.
-    cleanUpAlongProfile(k, foot, previous, /*throughTheFrontStretch=*/false);
+    cleanUpAlongProfile(k, foot, previous);
   }
 
   // --- undercuts (CYCLE95.UNDERCUT), interpretation: after the axis-parallel passes, each pocket in
