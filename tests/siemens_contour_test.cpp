@@ -159,6 +159,48 @@ TEST(SiemensContour, ChamfersAndRoundingsAreInsertedBetweenTwoLines) {
   EXPECT_NEAR(obtuse.segments[1].to.x, std::sqrt(0.5), 1e-12);
 }
 
+// Next to an arc (SIEMENS.CORNER, interpretation): under G22 the line (0, 0) → (−10, 0) along −Z,
+// then G3 to (−20, 10) with CR=10: centre (−20, 0) (the counter-clockwise one of the two 90° arcs),
+// leaving the corner along +X — a right turn of 90°.
+TEST(SiemensContour, ChamfersAndRoundingsAreInsertedNextToAnArc) {
+  // RND=2: the centre lies 2 to the right of both: above the line (x = 2) and outside the arc's
+  // circle (12 from (−20, 0)): (z + 20)² + 2² = 12², z = −20 + √140 = −8.167840… . It touches the
+  // line below it at (−8.167840, 0) and the arc where the ray from (−20, 0) through it meets the
+  // circle: (−20, 0) + 10·(√140, 2)/12 = (−10.139867…, 1.666667). A right turn: clockwise.
+  const double fz = -20 + std::sqrt(140.0);
+  const Point onArc{-20 + 10 * std::sqrt(140.0) / 12, 20.0 / 12};
+  const SiemensContour rnd = contourOf("G1X0Z0\nZ-10RND=2\nG3X10Z-20CR=10\nM17\n", false);
+  ASSERT_EQ(rnd.segments.size(), 3u);
+  expectSegment(rnd.segments[0], SegmentKind::Line, {0, 0}, {fz, 0}, 2);
+  expectSegment(rnd.segments[1], SegmentKind::ArcCW, {fz, 0}, onArc, 2);
+  EXPECT_NEAR(rnd.segments[1].center.z, fz, 1e-9);
+  EXPECT_NEAR(rnd.segments[1].center.x, 2, 1e-9);
+  expectSegment(rnd.segments[2], SegmentKind::ArcCCW, onArc, {-20, 10}, 3);
+  EXPECT_NEAR(rnd.segments[2].center.z, -20, 1e-9);
+  EXPECT_NEAR(rnd.segments[2].center.x, 0, 1e-9);
+  // CHR=2: 2 before the corner on the line, (−8, 0); on the arc the point 2 straight from the corner:
+  // 10 − 2²/(2·10) = 9.8 from the centre towards the corner and √(10² − 9.8²) = √3.96 across, on the
+  // arc's side (x > 0): (−10.2, 1.989975).
+  const Point chamferEnd{-10.2, std::sqrt(3.96)};
+  const SiemensContour chr = contourOf("G1X0Z0\nZ-10CHR=2\nG3X10Z-20CR=10\nM17\n", false);
+  ASSERT_EQ(chr.segments.size(), 3u);
+  expectSegment(chr.segments[1], SegmentKind::Line, {-8, 0}, chamferEnd, 2);
+  expectSegment(chr.segments[2], SegmentKind::ArcCCW, chamferEnd, {-20, 10}, 3);
+  // CHF= the length of that chamfer, √(2.2² + 3.96) = √8.8: the same legs of 2.
+  const SiemensContour chf = contourOf("G1X0Z0\nZ-10CHF=" + std::to_string(std::sqrt(8.8)).substr(0, 8) + "\nG3X10Z-20CR=10\nM17\n", false);
+  ASSERT_EQ(chf.segments.size(), 3u);
+  EXPECT_NEAR(chf.segments[1].from.z, -8, 1e-5);
+  EXPECT_NEAR(chf.segments[1].to.z, chamferEnd.z, 1e-5);
+  EXPECT_NEAR(chf.segments[1].to.x, chamferEnd.x, 1e-5);
+  // An arc before the corner: G2 from (0, 0) to (−10, 10), CR=10, centre (0, 10), arriving along +X;
+  // then along −Z: a left turn. CHR=2 ends 2 along the line, (−12, 10), and on the arc at 9.8 from
+  // (0, 10) towards the corner (−1, 0) and 1.989975 across, on the arc: (−9.8, 10 − 1.989975).
+  const SiemensContour arcFirst = contourOf("G1X0Z0\nG2X10Z-10CR=10CHR=2\nG1Z-20\nM17\n", false);
+  ASSERT_EQ(arcFirst.segments.size(), 3u);
+  expectSegment(arcFirst.segments[0], SegmentKind::ArcCW, {0, 0}, {-9.8, 10 - std::sqrt(3.96)}, 2);
+  expectSegment(arcFirst.segments[1], SegmentKind::Line, {-9.8, 10 - std::sqrt(3.96)}, {-12, 10}, 2);
+}
+
 TEST(SiemensContour, ContourErrorsNameTheirLine) {
   const auto lineOfError = [](const std::string& text) {
     try {
@@ -175,7 +217,8 @@ TEST(SiemensContour, ContourErrorsNameTheirLine) {
   EXPECT_EQ(lineOfError("G1X0Z0\nZ-5\nX10CHF=1\nM17\n"), 3);  // a chamfer after the last element
   EXPECT_EQ(lineOfError("G1X0Z0\nG2X10Z-5\nM17\n"), 2);      // an arc without CR or I/K
   EXPECT_EQ(lineOfError("G1X0Z0\nG2X10Z-5CR=5K1\nM17\n"), 2);  // both
-  EXPECT_EQ(lineOfError("G1X0Z0\nZ-5CHF=1\nG2X10Z-10CR=5\nM17\n"), -2);  // next to an arc: not yet
+  // A rounding that needs more than its element: tangent to the 1 mm line beyond its start (z 3.14).
+  EXPECT_EQ(lineOfError("G1X0Z0\nZ-1RND=5\nG3X10Z-11CR=10\nM17\n"), -2);
   EXPECT_EQ(lineOfError("G1X0Z0\nG54Z-5\nM17\n"), 2);
 }
 

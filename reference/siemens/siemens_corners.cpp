@@ -1,67 +1,153 @@
 #include "reference/siemens/siemens_corners.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "reference/model/alarms.h"
 #include "reference/model/number_text.h"
+#include "reference/model/offset.h"
 
 namespace cyclecert {
 
 namespace {
 
-Point unit(Point v) {
-  const double n = std::hypot(v.z, v.x);
-  return {v.z / n, v.x / n};
-}
-
 double cross(Point a, Point b) { return a.z * b.x - a.x * b.z; }
 double dot(Point a, Point b) { return a.z * b.z + a.x * b.x; }
+Point unit(Point v) { return (1.0 / std::hypot(v.z, v.x)) * v; }
 
-// How far from the corner along each element the chamfer or rounding starts: for a turn of φ
-// between the directions, a chamfer of length c has legs c / (2 cos(φ/2)) (an isosceles triangle
-// whose apex angle is π − φ), a rounding of radius r touches the elements r·tan(φ/2) from it.
-double legOf(const CornerRequest& c, double turn) {
-  switch (c.kind) {
-    case CornerKind::ChamferLeg: return c.value;
-    case CornerKind::ChamferLength: return c.value / (2 * std::cos(turn / 2));
-    case CornerKind::Rounding: return c.value * std::tan(turn / 2);
+// Whether `p` lies on the element (within the geometry's tolerance, ends included).
+bool onElement(Point p, const Segment& s) { return distanceToSegment(p, s) <= 1e-7; }
+
+// The point of element `s` at straight distance `leg` from its end `corner` (s.to when `atEnd`,
+// else s.from): along a line, `leg` from the corner; on an arc, where the circle of radius `leg`
+// round the corner meets the arc (interpretation, SIEMENS.CORNER: a chamfer's leg next to an arc is
+// measured straight from the corner). Nothing when the element is shorter than that.
+std::optional<Point> pointAtDistanceFromCorner(const Segment& s, bool atEnd, double leg) {
+  const Point corner = atEnd ? s.to : s.from;
+  if (!s.isArc()) {
+    const Point along = unit(atEnd ? s.from - s.to : s.to - s.from);
+    if (leg > s.length() + kGeomEps) return std::nullopt;
+    return corner + leg * along;
   }
-  return 0;
+  // The circle round the corner meets the arc's circle at two points, mirror images across the line
+  // from the centre through the corner; the chamfer's end is the one on the element (of two — an arc
+  // over a half circle — the one the element leaves the corner towards).
+  const double r = s.radius();
+  if (leg > 2 * r) return std::nullopt;
+  const Point toCorner = unit(corner - s.center);
+  const Point across{-toCorner.x, toCorner.z};
+  const double along = r - leg * leg / (2 * r);  // from the centre towards the corner
+  const double side = std::sqrt(std::max(0.0, r * r - along * along));
+  const Point leaving = atEnd ? -1.0 * unitTangentAtEnd(s) : unitTangentAtStart(s);
+  std::optional<Point> found;
+  for (const double sign : {1.0, -1.0}) {
+    const Point p = s.center + along * toCorner + (sign * side) * across;
+    if (!onElement(p, s)) continue;
+    if (!found || dot(p - corner, leaving) > 0) found = p;
+  }
+  return found;
+}
+
+// SIEMENS.CORNER, CHF=: the chamfer's own length c. Between two lines it is the base of an
+// isosceles triangle: legs c / (2 cos(φ/2)) for a turn of φ. Next to an arc the legs are equal
+// straight distances from the corner (interpretation), found by bisection between c/2 (the chord
+// is at most twice the leg) and the shorter element's chord. Nothing when the elements are too short.
+std::optional<double> legOfChamferLength(const Segment& a, const Segment& b, double length, double turn) {
+  if (!a.isArc() && !b.isArc()) return length / (2 * std::cos(turn / 2));
+  const auto chord = [&](double leg) -> std::optional<double> {
+    const auto pa = pointAtDistanceFromCorner(a, true, leg), pb = pointAtDistanceFromCorner(b, false, leg);
+    if (!pa || !pb) return std::nullopt;
+    return distance(*pa, *pb);
+  };
+  double low = length / 2, high = std::min(distance(a.from, a.to), distance(b.from, b.to));
+  const auto longest = chord(high);
+  if (high < low || !longest || *longest < length) return std::nullopt;
+  for (int i = 0; i < 200 && high - low > 1e-13; ++i) {
+    const double mid = (low + high) / 2;
+    const auto c = chord(mid);
+    if (c && *c < length) low = mid; else high = mid;
+  }
+  return high;
+}
+
+// SIEMENS.CORNER, CHF=/CHR=: a line from the point `leg` before the corner on `a` to the point `leg`
+// after it on `b` (CHR: `leg` is the given width; CHF: legOfChamferLength).
+Segment chamfer(Segment& a, Segment& b, const CornerRequest& corner, double leg) {
+  const auto from = pointAtDistanceFromCorner(a, true, leg), to = pointAtDistanceFromCorner(b, false, leg);
+  if (!from || !to) {
+    throw NotSupported(corner.line, corner.text + " needs " + shortDecimalText(leg) +
+                                        " mm of each element; the controller shortens it then, which cyclecert does not model");
+  }
+  Segment between;
+  between.sourceLine = corner.line;
+  between.from = *from;
+  between.to = *to;
+  a.to = *from;
+  b.from = *to;
+  return between;
+}
+
+// Where a circle centred at `center` touches element `s`: the foot of the perpendicular on a line,
+// the point of an arc's circle on the ray from its centre through `center`.
+Point tangentPoint(const Segment& s, Point center) {
+  if (s.isArc()) return s.center + s.radius() * unit(center - s.center);
+  const Point d = unit(s.to - s.from);
+  return s.from + dot(center - s.from, d) * d;
+}
+
+// SIEMENS.CORNER, RND=: an arc of radius ρ tangent to both elements, on the inside of the turn. Its
+// centre lies ρ from both, on the side the contour turns to: where the two elements offset by ρ to
+// that side meet — offsetPath (reference/model/offset.h) trims such a concave corner to exactly that
+// point. The elements end where the rounding touches them.
+Segment rounding(Segment& a, Segment& b, const CornerRequest& corner, bool turnsLeft) {
+  const auto refuse = [&] {
+    throw NotSupported(corner.line, corner.text + " does not fit between its elements; the controller shortens it "
+                                                  "then, which cyclecert does not model");
+  };
+  std::vector<Segment> offset;
+  try {
+    offset = offsetPath({a, b}, corner.value, turnsLeft ? CompensationSide::Left : CompensationSide::Right);
+  } catch (const OffsetError&) {
+    refuse();
+  }
+  if (offset.size() != 2) refuse();  // an element shorter than the rounding vanished
+  const Point center = offset.front().to;
+  const Point from = tangentPoint(a, center), to = tangentPoint(b, center);
+  if (!onElement(from, a) || !onElement(to, b)) refuse();
+  Segment between;
+  between.sourceLine = corner.line;
+  between.kind = turnsLeft ? SegmentKind::ArcCCW : SegmentKind::ArcCW;
+  between.from = from;
+  between.to = to;
+  between.center = center;
+  a.to = from;
+  b.from = to;
+  return between;
 }
 
 }  // namespace
 
 std::optional<Segment> insertCorner(Segment& a, Segment& b, const CornerRequest& corner) {
-  if (a.isArc() || b.isArc()) {
-    throw NotSupported(corner.line, corner.text + " next to an arc: cyclecert inserts chamfers and roundings between two "
-                                                  "lines only (write the element out as G1/G2/G3)");
-  }
-  const Point da = unit(a.to - a.from);
-  const Point db = unit(b.to - b.from);
+  const Point da = unitTangentAtEnd(a);
+  const Point db = unitTangentAtStart(b);
   const double turn = std::atan2(std::abs(cross(da, db)), dot(da, db));  // 0 … π
-  if (turn <= 1e-9) return std::nullopt;  // in line: no corner
+  if (turn <= 1e-9) return std::nullopt;  // tangent: no corner
   if (turn >= M_PI - 1e-9) {
     throw NotSupported(corner.line, corner.text + " at a corner where the contour turns back on itself");
   }
-  const double leg = legOf(corner, turn);
-  if (leg > a.length() + kGeomEps || leg > b.length() + kGeomEps) {
-    throw NotSupported(corner.line, corner.text + " needs " + shortDecimalText(leg) +
-                                        " mm of each element; the controller shortens it then, which cyclecert does not model");
+  switch (corner.kind) {
+    case CornerKind::ChamferLeg: return chamfer(a, b, corner, corner.value);
+    case CornerKind::ChamferLength: {
+      const auto leg = legOfChamferLength(a, b, corner.value, turn);
+      if (!leg) {
+        throw NotSupported(corner.line, corner.text + " is longer than its elements allow; the controller shortens it "
+                                                      "then, which cyclecert does not model");
+      }
+      return chamfer(a, b, corner, *leg);
+    }
+    case CornerKind::Rounding: return rounding(a, b, corner, cross(da, db) > 0);
   }
-  const Point corner0 = a.to;
-  Segment between;
-  between.sourceLine = corner.line;
-  between.from = corner0 - leg * da;
-  between.to = corner0 + leg * db;
-  if (corner.kind == CornerKind::Rounding) {
-    const bool left = cross(da, db) > 0;  // a turn to the left (counter-clockwise, Z right, X up)
-    const Point normal = left ? Point{-da.x, da.z} : Point{da.x, -da.z};
-    between.kind = left ? SegmentKind::ArcCCW : SegmentKind::ArcCW;
-    between.center = between.from + corner.value * normal;
-  }
-  a.to = between.from;
-  b.from = between.to;
-  return between;
+  return std::nullopt;
 }
 
 }  // namespace cyclecert

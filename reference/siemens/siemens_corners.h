@@ -1,8 +1,8 @@
 #pragma once
 // Chamfers and roundings a SINUMERIK contour inserts at the corner after a block (rule
 // SIEMENS.CORNER): CHF= the chamfer's length, CHR= its leg (the width in the direction of motion),
-// RND= the radius of a rounding tangent to both elements. cyclecert inserts them between two lines;
-// next to an arc they are not read yet (NotSupported).
+// RND= the radius of a rounding tangent to both elements — between lines and arcs in any combination
+// (next to an arc, interpretations in the rule's notes).
 #include <string>
 
 #include "reference/model/geometry.h"
@@ -19,8 +19,8 @@ struct CornerRequest {
 };
 
 // The corner at a.to == b.from: trims `a` and `b` and returns the element between them (a line, or
-// an arc for a rounding); nothing for elements in line (no corner). Throws NotSupported next to an
-// arc or when the chamfer or rounding is longer than an element.
+// an arc for a rounding); nothing for elements tangent at the corner (no corner). Throws NotSupported
+// when the chamfer or rounding does not fit its elements (the controller would shorten it).
 std::optional<Segment> insertCorner(Segment& a, Segment& b, const CornerRequest& corner);
 
 }  // namespace cyclecert
