@@ -37,18 +37,30 @@ std::optional<GroovingTool> toolAt(const Toolpath& path, std::size_t i,
   return std::nullopt;
 }
 
-// The swept blade at each finding's move, drawn as one more highlight each.
-void addSweptBlades(PlotInput& plot, const SpecCase& c, const Toolpath& path, const std::vector<Finding>& findings) {
+// The moves a failure points at: each finding's, and the first divergence from the path compared.
+std::vector<std::size_t> witnessedMoves(const std::vector<Finding>& findings, const std::optional<PlotComparison>& other) {
+  std::vector<std::size_t> moves;
+  const auto add = [&](std::size_t i) {
+    if (std::find(moves.begin(), moves.end(), i) == moves.end()) moves.push_back(i);
+  };
+  for (const Finding& f : findings) {
+    if (f.move) add(*f.move);
+  }
+  if (other && other->divergence) add(*other->divergence);
+  return moves;
+}
+
+// The swept blade at each witnessed move made with a grooving tool, drawn as one more highlight each.
+void addSweptBlades(PlotInput& plot, const SpecCase& c, const Toolpath& path, const std::vector<std::size_t>& moves) {
   const auto tools = groovingToolsOf(c.program);
   if (tools.empty()) return;
-  for (const Finding& f : findings) {
-    if (!f.move || *f.move >= path.moves.size()) continue;
-    const auto tool = toolAt(path, *f.move, tools);
+  for (const std::size_t i : moves) {
+    if (i >= path.moves.size()) continue;
+    const auto tool = toolAt(path, i, tools);
     if (!tool) continue;
     Highlight h;
-    h.label = "the grooving tool's swept blade (I " + shortDecimalText(tool->width) + "): move " +
-              std::to_string(*f.move);
-    h.regions.push_back(sweptBlade(path, *f.move, *tool));
+    h.label = "the grooving tool's swept blade (I " + shortDecimalText(tool->width) + "): move " + std::to_string(i);
+    h.regions.push_back(sweptBlade(path, i, *tool));
     plot.highlights.push_back(std::move(h));
   }
 }
@@ -119,7 +131,7 @@ std::optional<PlotInput> failurePlot(const SpecCase& c, const EngineResult& r, c
     // A program the oracles cannot read still has a path to show, on the cycles the engine recorded.
     plot = plotInputFor(r.path, title);
   }
-  addSweptBlades(plot, c, r.path, findings);
+  addSweptBlades(plot, c, r.path, witnessedMoves(findings, other));
   if (other) addComparison(plot, engineName, *other);
   return plot;
 }

@@ -43,7 +43,8 @@ std::vector<Point> sweptBlade(const Toolpath& path, std::size_t i, const Groovin
 
 // The plot of engine `engineName`'s result `r` on case `c` with the findings it drew; nothing when
 // the engine gave neither a toolpath nor an alarm (an engine failure, not applicable). A finding at
-// a move of a G74.1 cycle cut with a grooving tool also draws the blade's swept rectangle there.
+// a move of a G74.1 cycle cut with a grooving tool, or the first divergence from `other` there,
+// also draws the blade's swept rectangle on that move of the engine's path.
 std::optional<PlotInput> failurePlot(const SpecCase& c, const EngineResult& r, const std::string& engineName,
                                      const std::vector<Finding>& findings, double tolerance,
                                      const std::optional<PlotComparison>& other);

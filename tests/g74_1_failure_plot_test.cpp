@@ -78,6 +78,19 @@ TEST(G74_1FailurePlot, AFindingAtAGroovingMoveDrawsTheSweptBlade) {
   for (const Highlight& h : none->highlights) EXPECT_EQ(h.label.find("swept blade"), std::string::npos) << h.label;
 }
 
+// A divergence from another path is a witness too: the blade is drawn at the engine's diverging move.
+TEST(G74_1FailurePlot, TheFirstDivergenceDrawsTheSweptBlade) {
+  const SpecCase c = grooveCase(kO0008WithTool);
+  const Toolpath path = planSpecCase(c);
+  const auto plot = failurePlot(c, EngineResult::planned(path), "mutant", {}, 1e-3, PlotComparison{"reference", path, 2});
+  ASSERT_TRUE(plot);
+  const auto blade = std::find_if(plot->highlights.begin(), plot->highlights.end(), [](const Highlight& h) {
+    return h.label.find("swept blade (I 4): move 2") != std::string::npos;
+  });
+  ASSERT_NE(blade, plot->highlights.end());
+  expectRegion(blade->regions.front(), {{0, 27.5}, {-1.5, 27.5}, {-1.5, 31.5}, {0, 31.5}});
+}
+
 // An arc of a profile pass (a round r3 of 1 mm) is followed along its length, the blade moved by its
 // width: the region's first half lies on the arc, its second half on the arc moved by r.
 TEST(G74_1FailurePlot, AnArcSweepsAlongItsLength) {
