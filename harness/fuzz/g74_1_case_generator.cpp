@@ -140,9 +140,9 @@ void chooseTheCutting(G74_1FuzzCase& g, const GrooveChoices& choice, const Cutti
 // the floor width and Δw a third of the depth, so the rough floor keeps half the width and two
 // thirds of the depth; the slope at least 10° below ∠a and low enough that the mouth stays in the
 // upper half of the rough flanks (I9); each corner (drawn 0…2 mm) scaled to within a ninth of the
-// depth and an eighth of the floor (a chamfer or round sets back at most its size from the corner: every corner angle is at
-// least 90° inside the part, as the flanks open towards the mouth); the tool within a fifth of the
-// floor, which leaves it the quarter the corners r3, r4 leave of the rough floor (I12).
+// depth and an eighth of the floor (a chamfer or round sets back at most its size from its corner:
+// the flanks open towards the mouth, so no corner is sharper than 90°); the tool within a fifth of
+// the floor, which leaves it the quarter the corners r3, r4 leave of the rough floor (I12).
 void fitTheGroove(G74_1FuzzCase& g) {
   const int h = std::abs(g.depth), floor = std::abs(g.width) / 2;
   g.allowanceX = std::clamp(g.allowanceX, -floor / 2, floor / 2);
@@ -195,7 +195,7 @@ constexpr int kFaultCount = static_cast<int>(sizeof kFaults / sizeof kFaults[0])
 // a slope as steep as the near flank (I9).
 void drawFault(G74_1FuzzCase& g, const GrooveChoices& choice) {
   if (choice.fault != 9) return;
-  g.fault = kFaults[(10 * choice.whichFault + choice.variant) % kFaultCount];  // two choices: 100 values over the faults
+  g.fault = kFaults[(10 * choice.whichFault + choice.variant) % kFaultCount];  // 100 values over the faults
   g.faultVariant = choice.variant;
   if (g.fault == G74_1Fault::DecimalPoint) g.stepsInMm = false;  // a decimal point is an alarm in increments only
   if (g.fault == G74_1Fault::ToolWiderThanFloor) g.toolWidth = std::abs(g.width) / 2 + 50 + 10 * choice.variant;
