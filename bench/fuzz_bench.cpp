@@ -118,6 +118,13 @@ BENCHMARK(BM_FuzzG73CaseReference)->Unit(benchmark::kMicrosecond);
 void BM_FuzzG71CaseReferenceGenerated(benchmark::State& state) { judgeGeneratedCases(state, kDefaultFuzzCycles); }
 BENCHMARK(BM_FuzzG71CaseReferenceGenerated)->Unit(benchmark::kMicrosecond);
 
+// `fuzz --engine reference --cycles g74.1` end to end: each G74.1 groove case generated, planned
+// and judged — judgeFuzzCase, so once the groove oracles judge these cases they are in this figure
+// with nothing changed here. Report it as a ratio to BM_FuzzG71CaseReferenceGenerated of the same
+// run (bench/README.md).
+void BM_FuzzG74_1CaseReference(benchmark::State& state) { judgeGeneratedCases(state, {FuzzCycle::G74_1}); }
+BENCHMARK(BM_FuzzG74_1CaseReference)->Unit(benchmark::kMicrosecond);
+
 // `fuzz --engine reference --cycles siemens` end to end: each SINUMERIK case (LCYC95 or CYCLE95, a
 // main program and its contour subprogram) generated, planned and judged — judgeFuzzCase, so once the
 // Siemens oracles judge these cases they are in this figure with nothing changed here (until then the

@@ -74,9 +74,12 @@ Options:
                       program and its contour subprogram L1 (lines, quarter and shallow arcs with CR=
                       or I/K, CHF=/CHR=/RND= corners, for cycle95 undercuts), machining types 1…12,
                       and one at a time a type outside 1…12, no infeed depth, the contour against the
-                      finishing direction or a half circle with the alarm expected —; all (every
-                      FANUC family: g71,g72,g73, as before the Siemens cycles, so a seed keeps its
-                      cases) and siemens (lcyc95,cycle95); all,siemens for every cycle. With g73 and
+                      finishing direction or a half circle with the alarm expected —, g74.1 (or
+                      g74_1: GSK's axial trapezoid groove, profile gsk: h and d both ways, ∠a ∠b ∠p,
+                      corners r1…r4, Δi Δk e Δv Δu Δw, the tool width I or none, J0/1/2, 182#7 both
+                      ways, and one value at a time out of its range with the alarm expected); all
+                      (every FANUC family: g71,g72,g73, as before the Siemens cycles, so a seed keeps
+                      its cases) and siemens (lcyc95,cycle95); all,siemens,g74.1 for every cycle. With g73 and
                       g71/g72, one case in three (two) is G73; each family is drawn in proportion
                       to the cycles asked of it
 Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,

@@ -9,6 +9,7 @@
 
 #include "harness/engines/engines.h"
 #include "harness/reference_plan.h"
+#include "reference/cycles/cycles.h"
 #include "reference/gcode/parser.h"
 #include "reference/gcode/writer.h"
 #include "reference/interpreter/g_codes.h"
@@ -225,6 +226,49 @@ void g73LastPassOnTheShape(Toolpath& t) {
   }
 }
 
+// --- G74.1 faults (GSK axial trapezoid groove, G74_1.*) ---
+
+// The case with `edit` applied to each G74.1 block of its program — the groove block (X, Z) when
+// `grooveBlock`, else the block that cuts it — and the program written back; a case without such a
+// block is left as it is (its text untouched).
+SpecCase withG74_1BlocksEdited(SpecCase c, bool grooveBlock, const std::function<void(Word&)>& edit) {
+  if (c.program.find("74.1") == std::string::npos) return c;
+  Program p = parseProgram(c.program, "mutant");
+  bool edited = false;
+  for (Block& b : p.blocks) {
+    if (!b.hasG(741) || isG74_1GrooveBlock(b) != grooveBlock) continue;
+    for (Word& w : b.words) edit(w);
+    edited = true;
+  }
+  if (edited) c.program = writeProgram(p);
+  return c;
+}
+
+// "g74_1-retract-to-bottom": each peck's retract e (G74_1.STEP4) made towards the groove's floor
+// instead of away from it; the next feed still ends where the reference's does.
+void g74_1RetractsTowardsTheFloor(Toolpath& t) {
+  for (std::size_t i = 0; i < t.moves.size(); ++i) {
+    Move& m = t.moves[i];
+    if (cites(m, "G74_1.STEP4")) m.to = t.from(i) + (t.from(i) - m.to);
+  }
+}
+
+// "g74_1-radial-step-full": the axial cycles stepped across by Δi instead of Δi/2 (P of the groove
+// block doubled: Δi is a diameter, G74_1.STEP7 steps its half along the radius).
+SpecCase g74_1RadialStepDoubled(SpecCase c) {
+  return withG74_1BlocksEdited(std::move(c), true, [](Word& w) {
+    if (w.letter == 'P') w = makeWord('P', 2 * w.value, w.hasDecimalPoint);
+  });
+}
+
+// "g74_1-tool-width-ignored": the grooving tool's width I read as 0 — the cycle planned for a
+// pointed tool's point (I0 in the second block), so the blade cuts r beyond the groove's start side.
+SpecCase g74_1ToolWidthIgnored(SpecCase c) {
+  return withG74_1BlocksEdited(std::move(c), false, [](Word& w) {
+    if (w.letter == 'I') w = makeWord('I', 0);
+  });
+}
+
 // --- SINUMERIK faults (LCYC95, CYCLE95): the Siemens runner with a planner that has the fault ---
 
 // A SINUMERIK case planned with `planners` in place of the real LCYC95 / CYCLE95 planners (the
@@ -412,6 +456,12 @@ const std::vector<Fault>& faults() {
        [](SpecCase c) { return planned(g73ReliefFlipped(std::move(c))); }},
       {"g73-last-pass-allowance", "cuts G73's last pass on the finish shape, without the allowance",
        [](SpecCase c) { return planned(c, g73LastPassOnTheShape); }},
+      {"g74_1-retract-to-bottom", "retracts G74.1's pecks by e towards the groove's floor instead of away from it",
+       [](SpecCase c) { return planned(c, g74_1RetractsTowardsTheFloor); }},
+      {"g74_1-radial-step-full", "steps G74.1's axial cycles across by Δi instead of Δi/2",
+       [](SpecCase c) { return planned(g74_1RadialStepDoubled(std::move(c))); }},
+      {"g74_1-tool-width-ignored", "plans G74.1 as if the grooving tool had no width (I read as 0)",
+       [](SpecCase c) { return planned(g74_1ToolWidthIgnored(std::move(c))); }},
       {"siemens-retract-45", "retracts R110 / _VRT long at 45° after each LCYC95/CYCLE95 roughing cut (R110/√2 in each axis) instead of R110 in each axis",
        [](SpecCase c) { return plannedWithSiemensPlanners(c, retract45Planners()); }},
       {"siemens-max-infeed", "steps LCYC95/CYCLE95's roughing levels down by R108 / MID with a smaller last step instead of equal steps",

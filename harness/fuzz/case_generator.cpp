@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "harness/fuzz/g74_1_case_generator.h"
 #include "harness/fuzz/generator_parts.h"
 #include "harness/fuzz/named_choices.h"
 #include "harness/fuzz/siemens_case_generator.h"
@@ -30,7 +31,8 @@ constexpr Named<FuzzCycle> kCycleNames[] = {{FuzzCycle::G71, "g71"},
                                             {FuzzCycle::G72, "g72"},
                                             {FuzzCycle::G73, "g73"},
                                             {FuzzCycle::Lcyc95, "lcyc95"},
-                                            {FuzzCycle::Cycle95, "cycle95"}};
+                                            {FuzzCycle::Cycle95, "cycle95"},
+                                            {FuzzCycle::G74_1, "g74.1"}};
 // The group names --cycles takes besides the cycles' own: "all" is every FANUC family (what it
 // meant before the Siemens cycles were drawn, so that `--cycles all` keeps a seed's cases),
 // "siemens" both SINUMERIK cycles.
@@ -38,9 +40,11 @@ struct CycleGroup {
   std::string_view name;
   std::vector<FuzzCycle> cycles;
 };
+// "g74_1" is G74.1's name as the rule IDs and folders spell it (G74_1.*, gsk/g74_1).
 const std::vector<CycleGroup>& cycleGroups() {
   static const std::vector<CycleGroup> groups = {{"all", {FuzzCycle::G71, FuzzCycle::G72, FuzzCycle::G73}},
-                                                 {"siemens", {FuzzCycle::Lcyc95, FuzzCycle::Cycle95}}};
+                                                 {"siemens", {FuzzCycle::Lcyc95, FuzzCycle::Cycle95}},
+                                                 {"g74_1", {FuzzCycle::G74_1}}};
   return groups;
 }
 
@@ -115,7 +119,8 @@ FuzzCycles parseFuzzCycles(std::string_view text) {
       } catch (const std::invalid_argument&) {
         throw std::invalid_argument("unknown cycle '" + std::string(word) + "' in '" + std::string(text) +
                                     "': give a comma-separated list of lcyc95, cycle95 or siemens (both SINUMERIK "
-                                    "cycles), g71, g72, g73 or all (every FANUC family)");
+                                    "cycles), g74.1 (or g74_1: GSK's groove), g71, g72, g73 or all (every FANUC "
+                                    "family)");
       }
     }
     from = comma + 1;
@@ -411,6 +416,9 @@ rc::Gen<FuzzCase> genPatternRepeatingCase(const CycleFormats&, const FuzzCycles&
 // cycle is one of its choices); the formats apply to G71/G72 only.
 rc::Gen<FuzzCase> genSinumerikCase(const CycleFormats&, const FuzzCycles& cycles) { return genSiemensCase(cycles); }
 
+// The G74.1 groove cases (g74_1_case_generator.cpp): the formats apply to G71/G72 only.
+rc::Gen<FuzzCase> genGrooveCase(const CycleFormats&, const FuzzCycles&) { return genG74_1Case(); }
+
 // Which generator draws each cycle family's cases: G71 and G72 share one (the cycle is one of its
 // choices), G73 has its own. A run that asks for families of more than one picks the generator
 // with RapidCheck's weightedOneOf, in this table's order, each weighted by how many of the asked
@@ -424,6 +432,7 @@ const std::vector<FamilyGenerator>& familyGenerators() {
       {{FuzzCycle::G71, FuzzCycle::G72}, genRoughingCase},
       {{FuzzCycle::G73}, genPatternRepeatingCase},
       {{FuzzCycle::Lcyc95, FuzzCycle::Cycle95}, genSinumerikCase},
+      {{FuzzCycle::G74_1}, genGrooveCase},  // last: a run without G74.1 draws as before it was added
   };
   return generators;
 }
@@ -661,6 +670,7 @@ std::string g73Program(const FuzzCase& c) {
 
 std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c) {
   if (isSiemensCase(c)) return siemensExpectedAlarm(c);
+  if (isGrooveCase(c)) return g74_1ExpectedAlarm(c);
   if (c.cycle != 73) return std::nullopt;
   // The lines of g73Program(): 1 A, 2 the first G73 block, 3 the second, 4 block ns.
   switch (c.g73Fault) {
@@ -676,6 +686,7 @@ std::optional<FuzzExpectedAlarm> expectedAlarm(const FuzzCase& c) {
 std::string fuzzProgram(const FuzzCase& c) {
   if (c.cycle == 73) return g73Program(c);
   if (isSiemensCase(c)) return siemensMainProgram(c) + kSiemensContourName + ".spf\n" + siemensContourProgram(c);
+  if (isGrooveCase(c)) return g74_1Program(c);
   // The frame's points: B, then each segment's end; C is the highest.
   // Block ns moves the depth axis only (W0 / U0 in type II), so B stands at A's cut coordinate.
   const ShapeWalk walk = walkShape(c);
@@ -774,11 +785,13 @@ std::string describeG73Case(const FuzzCase& c) {
 
 std::string fuzzCaseFolder(const FuzzCase& c) {
   if (isSiemensCase(c)) return c.profile + (c.siemens.cycle95 ? "/cycle95" : "/lcyc95");
+  if (isGrooveCase(c)) return c.profile + "/g74_1";
   return c.profile + "/g" + std::to_string(c.cycle);
 }
 
 SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
   if (isSiemensCase(c)) return specCaseFrom(siemensSpecJson(c, tag), "fuzz:" + tag);
+  if (isGrooveCase(c)) return specCaseFrom(g74_1SpecJson(c, tag), "fuzz:" + tag);
   nlohmann::json params = nlohmann::json::object();
   if (c.rf1) params["RF1"] = 1;
   if (c.dtp) params["DTP"] = 1;
@@ -824,6 +837,7 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
 std::string describeFuzzCase(const FuzzCase& c) {
   if (c.cycle == 73) return describeG73Case(c);
   if (isSiemensCase(c)) return describeSiemensCase(c);
+  if (isGrooveCase(c)) return describeG74_1Case(c);
   std::ostringstream s;
   s << "G" << c.cycle << (c.typeII ? " type II" : " type I") << ", " << (c.mirrorDepth ? "inner" : "outer") << ", cut "
     << (c.mirrorCut ? "reversed" : "forward") << ", " << c.segments.size() << " segment(s), " << c.profile;

@@ -35,7 +35,9 @@
 // G73 cases (pattern repeating) are drawn when the run asks for them (FuzzCycles, `fuzz --cycles`):
 // g73_case_generator.cpp says what is drawn; fuzzProgram() writes them in the two-block format.
 // SINUMERIK LCYC95 / CYCLE95 cases (a main program and its contour subprogram) likewise:
-// siemens_case_generator.h says what is drawn and how it is written.
+// siemens_case_generator.h says what is drawn and how it is written; GSK G74.1 groove cases
+// likewise: g74_1_case_generator.h.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -73,14 +75,16 @@ inline const CycleFormats kDefaultCycleFormats = {CycleFormat::FanucTwoBlocks};
 
 // The cycles the fuzzer draws (`cyclecert fuzz --cycles`): G71 and G72 (axis-parallel roughing,
 // drawn as they always were), G73 (pattern repeating, g73_case_generator.cpp), and SINUMERIK
-// LCYC95 (802S/C) and CYCLE95 (802D) (siemens_case_generator.cpp).
-enum class FuzzCycle { G71, G72, G73, Lcyc95, Cycle95 };
+// LCYC95 (802S/C) and CYCLE95 (802D) (siemens_case_generator.cpp), and GSK's G74.1 axial
+// trapezoid groove (g74_1_case_generator.cpp).
+enum class FuzzCycle { G71, G72, G73, Lcyc95, Cycle95, G74_1 };
 using FuzzCycles = std::vector<FuzzCycle>;
-// "g71", "g72", "g73", "lcyc95", "cycle95": the names `cyclecert fuzz --cycles` takes.
+// "g71", "g72", "g73", "lcyc95", "cycle95", "g74.1" (also spelt "g74_1"): the names `cyclecert
+// fuzz --cycles` takes.
 std::string_view fuzzCycleName(FuzzCycle c);
 // A comma-separated list of those names and of two group names: "all" (every FANUC family: g71,
 // g72, g73 — as it meant before the Siemens cycles were drawn, so that a run keeps its cases) and
-// "siemens" (lcyc95, cycle95); "all,siemens" is every cycle. Throws std::invalid_argument naming
+// "siemens" (lcyc95, cycle95); "all,siemens,g74.1" is every cycle. Throws std::invalid_argument naming
 // the word it did not know and the names it knows.
 FuzzCycles parseFuzzCycles(std::string_view text);
 // The names joined by commas, as --cycles takes them.
@@ -143,6 +147,54 @@ struct SiemensFuzzCase {
   SiemensFault fault = SiemensFault::None;
 };
 
+// A G74.1 case's one invalid value (at most one per case: docs/g74_1.md §1's ranges and alarms),
+// with the alarm it must raise (g74_1ExpectedAlarm()).
+enum class G74_1Fault {
+  None,
+  DepthOut,            // H0, H10000 or no H: PS0003 at the groove block (I3, I2)
+  WidthOut,            // D0 or D-10000: PS0003 at the groove block (I3)
+  AngleAOut,           // A0 or A95: PS0003 at the groove block
+  AngleBOut,           // B0 or B90.5: PS0003 at the groove block
+  SlopeOut,            // L90 or L-1: PS0003 at the groove block
+  StepNotPositive,     // P0 or a negative Q: PS0062 at the groove block
+  StepTooLarge,        // P over its range (increments or mm): PS0003 at the groove block
+  MissingPeck,         // no Q: PS0061 at the groove block
+  DecimalPoint,        // P with a decimal point, read in increments (182#7 = 0): PS0007 at the groove block
+  WordNotTaken,        // an R in the groove block: PS0009 there
+  RetractOut,          // R100 or R-1: PS0003 at the second block
+  LayerNotPositive,    // V0 or V-1: PS0062 at the second block
+  AllowanceOut,        // U10000 or W-10000: PS0003 at the second block
+  ToolWidthOut,        // I10000 or I-10000: PS0003 at the second block
+  PathTypeOut,         // J3 or J-1: PS0003 at the second block
+  CornerOut,           // r1 = A100 or r4 = E-1: PS0003 at the second block
+  CornerDigitOut,      // P2 or P11111 (a b d e): PS0003 at the second block
+  ToolWiderThanFloor,  // I wider than the groove's floor: PS0062 at the second block (I12)
+  SlopeNotBelowFlank,  // ∠p ≥ ∠a, no groove: PS0062 at the second block (I9)
+};
+
+// The G74.1 part of a case (FuzzCase::cycle 741, profile gsk): the groove and how to cut it, in
+// the words' own units — hundredths of a mm (X a diameter, as written; h a radius; d, Δi, Δu
+// diameters), whole degrees.
+struct G74_1FuzzCase {
+  int startX = 4000, startZ = 0;        // S: X (diameter) and Z of the groove block
+  int beforeX = 5000, beforeZ = 500;    // where the tool stands before the cycle (the G00 block)
+  int depth = -400, width = -400;       // h (radius) and d (diameter), signed: their directions
+  int angleA = 90, angleB = 90, slope = 0;
+  bool writeAngles = false;             // A90 B90 L0 written although they are the defaults
+  int radialStep = 100, peck = 200;     // Δi (diameter), Δk
+  int retract = 50;                     // e
+  int layerDepth = 0;                   // Δv; 0: no V (one layer)
+  int allowanceX = 0, allowanceZ = 0;   // Δu (diameter), Δw; written with this sign (read as magnitudes, I4)
+  int toolWidth = 0;                    // I; 0: no I (a pointed tool)
+  int pathType = 0;                     // J 0/1/2
+  bool writeJ = false;                  // J0 written although it is the default
+  std::array<int, 4> corners{};         // r1 r2 r3 r4 (A B D E of the second block), radius
+  int cornerKinds = -1;                 // P(abde) of the second block as four bits a b d e (1: round); −1: no P
+  bool stepsInMm = false;               // parameter 182#7 = 1: P and Q in mm, else in increments (IS-C)
+  G74_1Fault fault = G74_1Fault::None;
+  int faultVariant = 0;                 // which of the fault's two spellings (even/odd)
+};
+
 struct FuzzSegment {
   enum Kind { Line, ConvexArc, ConcaveArc } kind = Line;
   int along = 0;  // hundredths along −z of the frame (≥ 0)
@@ -180,13 +232,17 @@ struct FuzzCase {
   G73Fault g73Fault = G73Fault::None;
   // SINUMERIK cases (cycle 95) only; profile sinumerik-802s (LCYC95) or sinumerik-802d (CYCLE95).
   SiemensFuzzCase siemens;
+  // G74.1 cases (cycle 741) only; profile gsk.
+  G74_1FuzzCase groove;
 };
 
 // A SINUMERIK case (LCYC95 or CYCLE95).
 inline bool isSiemensCase(const FuzzCase& c) { return c.cycle == 95; }
+// A G74.1 groove case.
+inline bool isGrooveCase(const FuzzCase& c) { return c.cycle == 741; }
 
 // Where a case's spec case and regressions go: "<profile>/g71", …, "sinumerik-802s/lcyc95",
-// "sinumerik-802d/cycle95".
+// "sinumerik-802d/cycle95", "gsk/g74_1".
 std::string fuzzCaseFolder(const FuzzCase& c);
 
 // G41 or G42: the side of the shape the tool stands on in the case's quadrant (the frame's G42,
@@ -208,9 +264,11 @@ rc::Gen<FuzzCase> genG73Case();
 // The SINUMERIK cases alone (siemens_case_generator.cpp): LCYC95 or CYCLE95 as `cycles` asks (both:
 // either, one time in two).
 rc::Gen<FuzzCase> genSiemensCase(const FuzzCycles& cycles);
+// The G74.1 groove cases alone (g74_1_case_generator.cpp).
+rc::Gen<FuzzCase> genG74_1Case();
 
-// The alarm a case must raise, as its code and program line, or none (only G73 and SINUMERIK cases
-// say; the oracles judge the G71/G72 cases' alarms from the program).
+// The alarm a case must raise, as its code and program line, or none (only G73, SINUMERIK and G74.1
+// cases say; the oracles judge the G71/G72 cases' alarms from the program).
 struct FuzzExpectedAlarm {
   std::string code;
   int line = 0;
