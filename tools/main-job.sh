@@ -54,6 +54,10 @@ done
 # LinuxCNC reads no Siemens dialect.
 step "$cli" fuzz --engine reference --cycles siemens --seed 95 --time "$g73_seconds" --timeout 2 \
   --out "$runs/fuzz-siemens-reference" --regressions "$report/regressions"
+# And a G74.1 campaign (GSK's axial groove, `fuzz --cycles g74.1`) for the reference alone: LinuxCNC
+# has no G74.1.
+step "$cli" fuzz --engine reference --cycles g74.1 --seed 741 --time "$g73_seconds" --timeout 2 \
+  --out "$runs/fuzz-g74_1-reference" --regressions "$report/regressions"
 step "$cli" merge --mix-campaigns --out "$report" "$runs"/*
 step "$cli" report "$report"
 
