@@ -214,6 +214,16 @@ SpecCase specCaseFrom(json j, const std::string& file) {
 SpecCase loadSpecCase(const std::string& path) { return parseSpecCase(readInputFile(path), path); }
 
 std::vector<std::string> findSpecCaseFiles(const std::string& dir) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(dir, error)) {
+    const std::filesystem::path parent = std::filesystem::path(dir).parent_path();
+    const std::string what = std::filesystem::exists(dir, error) ? dir + ": not a directory"
+                             : std::filesystem::is_regular_file(parent, error)
+                                 ? parent.string() + ": a file, not a folder"
+                                 : dir + ": no such directory";
+    throw InputFileError(what + " (the spec cases are read from a suite's cases/ folder: --specs DIR takes the folder "
+                                "holding cases/ and rules.json, e.g. --specs specs)");
+  }
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
     if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path().string());

@@ -52,6 +52,19 @@ TEST_F(Cli, UsageErrorsExitWith2) {
   EXPECT_NE(r.err.find("0 or 1"), std::string::npos);
 }
 
+// --specs takes the suite's folder; a spec case file or a missing folder is named, not a library's
+// "recursive directory iterator" message.
+TEST_F(Cli, SpecsThatIsNoFolderIsNamed) {
+  const std::string file = write("case.json", "{}");
+  CliRun r = run("check --engine reference --specs " + file + " --out " + path("out1"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find(file + ": a file, not a folder"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--specs DIR takes the folder holding cases/ and rules.json"), std::string::npos) << r.err;
+  r = run("check --engine reference --specs " + path("nowhere") + " --out " + path("out2"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("nowhere/cases: no such directory"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, PlanWritesJsonAndAWellFormedSvg) {
   const std::string program = write("p.nc", kShaft);
   const CliRun r = run("plan " + program + " --json " + path("t.json") + " --svg " + path("t.svg"));
