@@ -2,12 +2,14 @@
 
 #include <deque>
 #include <regex>
+#include <string_view>
 #include <unordered_map>
 
 #include "reference/gcode/parser.h"
 #include "reference/model/alarms.h"
 #include "reference/model/profile.h"
 #include "reference/profiles/default_profile.h"
+#include "reference/siemens/siemens_parser.h"
 #include "reference/siemens/siemens_runner.h"
 #include "reference/siemens/siemens_signature.h"
 
@@ -24,15 +26,17 @@ std::string profileFromHeader(const std::string& text) {
 
 namespace {
 
-// The programs parsed lately on this thread, by file and text: an engine and the judge read the
-// same program, and fuzz plans a whole batch of cases (kFuzzBatch, 64) before it judges them.
-std::shared_ptr<const Program> parsedOnce(const std::string& text, const std::string& file) {
+// The texts parsed lately on this thread (the last 128 of each kind), by file and text: an engine
+// and the judge read the same program, and fuzz plans a whole batch of cases (kFuzzBatch, 64)
+// before it judges them. `parse(text, file)` parses one.
+template <class Parsed, class Parse>
+std::shared_ptr<const Parsed> parsedOnce(std::string_view text, const std::string& file, const Parse& parse) {
   constexpr std::size_t kKept = 128;
-  thread_local std::unordered_map<std::string, std::shared_ptr<const Program>> parsed;
+  thread_local std::unordered_map<std::string, std::shared_ptr<const Parsed>> parsed;
   thread_local std::deque<std::string> oldestFirst;
-  std::string key = file + '\0' + text;
+  std::string key = file + '\0' + std::string(text);
   if (const auto found = parsed.find(key); found != parsed.end()) return found->second;
-  auto program = std::make_shared<const Program>(parseProgram(text, file));
+  auto program = std::make_shared<const Parsed>(parse(text, file));
   if (oldestFirst.size() == kKept) {
     parsed.erase(oldestFirst.front());
     oldestFirst.pop_front();
@@ -59,7 +63,7 @@ namespace {
 // reader stops; the error then says which profiles read it.
 std::shared_ptr<const Program> parsedInTheFanucDialect(const PlanRequest& request, const Profile& profile) {
   try {
-    return parsedOnce(request.programText, request.file);
+    return parsedOnce<Program>(request.programText, request.file, parseProgram);
   } catch (const ParseError& e) {
     const auto siemens = siemensSignature(request.programText);
     if (!siemens) throw;
@@ -72,9 +76,7 @@ std::shared_ptr<const Program> parsedInTheFanucDialect(const PlanRequest& reques
 
 // The SINUMERIK profiles' programs go to the Siemens runner (reference/siemens/siemens_runner.h).
 Toolpath planSiemensRequest(const PlanRequest& request, const Profile& profile) {
-  return planSiemensProgram({request.programText, request.file, request.subprograms, request.subprogramDirectory,
-                             request.options.tool},
-                            profile);
+  return planSiemensProgram(siemensRunInputFor(request), profile);
 }
 
 // A program of a FANUC-dialect profile: its parameters and its parsed blocks.
@@ -87,7 +89,24 @@ ReadRequest readFanucRequest(const PlanRequest& request, const Profile& profile)
   return read;
 }
 
+// The Siemens runner's parsers, keeping what they parse as parsedInTheFanucDialect does.
+SiemensParsers siemensParsersKeepingWhatTheyParse() {
+  SiemensParsers parsers;
+  parsers.program = [](std::string_view text, const std::string& file) {
+    return parsedOnce<SiemensProgram>(text, file, parseSiemensProgram);
+  };
+  parsers.subprogram = [](std::string_view text, const std::string& file) {
+    return parsedOnce<SiemensBlocks>(text, file, parseSiemensSubprogram);
+  };
+  return parsers;
+}
+
 }  // namespace
+
+SiemensRunInput siemensRunInputFor(const PlanRequest& request) {
+  return {request.programText, request.file, request.subprograms, request.subprogramDirectory, request.options.tool,
+          siemensParsersKeepingWhatTheyParse()};
+}
 
 ReadRequest readRequest(const PlanRequest& request) { return readRequest(request, requestedProfile(request)); }
 

@@ -10,6 +10,7 @@
 #include "reference/gcode/parser.h"
 #include "reference/model/profile.h"
 #include "reference/model/toolpath.h"
+#include "reference/siemens/siemens_runner.h"
 #include "reference/siemens/siemens_subprograms.h"
 #include "reports/svg/toolpath_svg.h"
 
@@ -43,6 +44,12 @@ const Profile& requestedProfile(const PlanRequest& request);
 // std::invalid_argument; NotSupported for a SINUMERIK profile (harness/siemens_reading.h reads those).
 ReadRequest readRequest(const PlanRequest& request);
 ReadRequest readRequest(const PlanRequest& request, const Profile& profile);  // its profile found already
+
+// A SINUMERIK request as the Siemens runner's input (reference/siemens/siemens_runner.h). Its
+// parsers keep the programs and subprograms parsed lately on this thread, as readRequest keeps the
+// FANUC ones: the reference engine and the oracles' reading (harness/siemens_reading.h) read the
+// same texts, which are then parsed once.
+SiemensRunInput siemensRunInputFor(const PlanRequest& request);
 
 // Throws ParseError (malformed program), UnknownProfile, UnknownParam / std::invalid_argument
 // (bad parameter) and NotSupported; a controller alarm is part of the returned toolpath.

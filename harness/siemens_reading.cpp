@@ -109,9 +109,7 @@ ProgramSpec readSiemensProgramSpec(const PlanRequest& request, const Profile& pr
   planners.cycle95 = [&spec](const SiemensCycleCall& call, const Cycle95Parameters& p) {
     return recorded(spec, cycle95Spec(call, p), call, "MID");
   };
-  const Toolpath run = planSiemensProgram({request.programText, request.file, request.subprograms,
-                                           request.subprogramDirectory, request.options.tool},
-                                          profile, planners);
+  const Toolpath run = planSiemensProgram(siemensRunInputFor(request), profile, planners);
   spec.siemensAlarm = run.alarm;
   readProgramMoves(run, spec);
   if (!spec.siemensCycles.empty()) spec.firstCycleBlockLine = spec.siemensCycles.front().line;

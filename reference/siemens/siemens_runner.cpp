@@ -35,14 +35,14 @@ std::string controlName(SiemensControl c) { return c == SiemensControl::Sinumeri
 class SiemensRunner {
  public:
   SiemensRunner(const SiemensRunInput& input, const Profile& profile, const SiemensPlanners& planners)
-      : input_(input), profile_(profile), planners_(planners), program_(parseSiemensProgram(input.text, input.file)),
-        subprograms_(program_, input.subprograms, input.siblingDirectory) {
+      : input_(input), profile_(profile), planners_(planners), program_(parsedProgram(input)),
+        subprograms_(*program_, input.subprograms, input.siblingDirectory, input.parsers.subprogram) {
     path_.profile = profile.name;
   }
 
   Toolpath run() {
     try {
-      for (const SiemensBlock& b : program_.main.blocks) {
+      for (const SiemensBlock& b : program_->main.blocks) {
         execute(b);
         if (b.endsProgram()) break;
       }
@@ -53,6 +53,11 @@ class SiemensRunner {
   }
 
  private:
+  static std::shared_ptr<const SiemensProgram> parsedProgram(const SiemensRunInput& input) {
+    if (input.parsers.program) return input.parsers.program(input.text, input.file);
+    return std::make_shared<const SiemensProgram>(parseSiemensProgram(input.text, input.file));
+  }
+
   void execute(const SiemensBlock& b) {
     requireWordsOfTheControl(b);
     applySiemensModal(b, modal_);
@@ -206,7 +211,7 @@ class SiemensRunner {
   const SiemensRunInput& input_;
   const Profile& profile_;
   const SiemensPlanners& planners_;
-  SiemensProgram program_;
+  std::shared_ptr<const SiemensProgram> program_;
   SiemensSubprograms subprograms_;
   SiemensModal modal_;
   RParameters r_;

@@ -7,7 +7,9 @@
 // planLcyc95 / planCycle95, whose moves are appended. A controller alarm ends the run and is part
 // of the toolpath; NotSupported and ParseError are thrown.
 #include <functional>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reference/model/profile.h"
@@ -28,12 +30,21 @@ struct SiemensPlanners {
   MachiningTypeLookup typeOf = machiningTypeOf;
 };
 
+// How the runner reads texts into blocks: parseSiemensProgram and parseSiemensSubprogram when
+// empty. A caller that reads the same program twice (the reference engine, then the oracles'
+// reading of it) may pass parsers that keep what they parsed.
+struct SiemensParsers {
+  std::function<std::shared_ptr<const SiemensProgram>(std::string_view text, const std::string& file)> program = {};
+  SiemensSubprogramParser subprogram = {};
+};
+
 struct SiemensRunInput {
   std::string text;                        // the main program (and any subprograms printed after it)
   std::string file;                        // for error messages
   std::vector<GivenSubprogram> subprograms;  // a spec case's "subprograms"
   std::string siblingDirectory;            // searched for NAME.spf / NAME.SPF; empty: none
   ToolOffset tool;                         // the active tool's nose radius and tip
+  SiemensParsers parsers = {};
 };
 
 // Requires profile.dialect == Dialect::Siemens.

@@ -7,8 +7,13 @@
 namespace cyclecert {
 
 SiemensSubprograms::SiemensSubprograms(const SiemensProgram& program, std::vector<GivenSubprogram> given,
-                                       std::string siblingDirectory)
-    : program_(program), given_(std::move(given)), siblingDirectory_(std::move(siblingDirectory)) {}
+                                       std::string siblingDirectory, SiemensSubprogramParser parse)
+    : program_(program), given_(std::move(given)), siblingDirectory_(std::move(siblingDirectory)), parse_(std::move(parse)) {}
+
+std::shared_ptr<const SiemensBlocks> SiemensSubprograms::parsed(std::string_view text, const std::string& file) const {
+  if (parse_) return parse_(text, file);
+  return std::make_shared<const SiemensBlocks>(parseSiemensSubprogram(text, file));
+}
 
 const SiemensBlocks& SiemensSubprograms::find(const std::string& name, const std::string& file, int line, int column) {
   for (const PrintedSubprogram& p : program_.printed) {
@@ -19,13 +24,11 @@ const SiemensBlocks& SiemensSubprograms::find(const std::string& name, const std
   if (const auto found = read_.find(key); found != read_.end()) return *found->second;
   for (const GivenSubprogram& g : given_) {
     if (!equalIgnoringCase(g.name, name)) continue;
-    auto blocks = std::make_unique<SiemensBlocks>(parseSiemensSubprogram(g.text, g.file));
-    return *read_.emplace(key, std::move(blocks)).first->second;
+    return *read_.emplace(key, parsed(g.text, g.file)).first->second;
   }
   if (!siblingDirectory_.empty()) {
     if (const auto sibling = readSiblingSubprogram(siblingDirectory_, name)) {
-      auto blocks = std::make_unique<SiemensBlocks>(parseSiemensSubprogram(sibling->second, sibling->first));
-      return *read_.emplace(key, std::move(blocks)).first->second;
+      return *read_.emplace(key, parsed(sibling->second, sibling->first)).first->second;
     }
   }
   const std::string sibling = siblingDirectory_.empty() ? std::string("a file ") + name + ".spf next to the main program (when it is read from a file)"
