@@ -10,7 +10,8 @@ namespace cyclecert {
 namespace {
 
 // The first move of the profile passes: the start of the first run of consecutive feeds that holds
-// a feed other than an axial one towards the floor (a peck); range.end when there is none.
+// a feed across the groove (along u: the floor, a slanted flank, a corner); range.end when there is
+// none. (A feed back along w alone is no profile pass: groove-retract judges it.)
 std::size_t profileStartOf(const GrooveMoves& m) {
   std::size_t runStart = m.range.begin;
   bool inRun = false;
@@ -21,19 +22,20 @@ std::size_t profileStartOf(const GrooveMoves& m) {
     }
     if (!inRun) runStart = i;
     inRun = true;
-    // A zero-length feed is neither.
-    if (std::hypot(m.du(i), m.dw(i)) > m.tol && !m.isFeedTowardsTheFloor(i)) return runStart;
+    if (std::abs(m.du(i)) > m.tol || m.in.path.moves[i].shape != SegmentKind::Line) return runStart;
   }
   return m.range.end;
 }
 
 // STEP3…STEP6: before the profile passes, the pecks grouped by axial cycle — a cycle ends where the
-// tool moves along u.
+// tool moves along u, or rapids back to the cycle's start or above it (STEP6: the next cycle may
+// start a step shorter than the tolerance further, at Amf).
 std::vector<AxialCycle> axialCyclesOf(const GrooveMoves& m) {
   std::vector<AxialCycle> cycles;
   bool open = false;
   for (std::size_t i = m.range.begin; i < m.profileStart; ++i) {
-    if (std::abs(m.du(i)) > m.tol) {
+    const bool backAtTheStart = open && m.isRapid(i) && m.to(i).z <= cycles.back().top + m.tol;
+    if (std::abs(m.du(i)) > m.tol || backAtTheStart) {
       open = false;
       continue;
     }
@@ -48,7 +50,7 @@ std::vector<AxialCycle> axialCyclesOf(const GrooveMoves& m) {
 }  // namespace
 
 bool GrooveMoves::isAxial(std::size_t i) const {
-  return in.path.moves[i].shape == SegmentKind::Line && std::abs(du(i)) <= tol && std::abs(dw(i)) > tol;
+  return in.path.moves[i].shape == SegmentKind::Line && std::abs(du(i)) <= tol && std::abs(dw(i)) > kGeomEps;
 }
 
 Finding GrooveMoves::report(const Oracle& o, std::size_t i, std::string message) const {

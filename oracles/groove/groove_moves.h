@@ -2,8 +2,8 @@
 // The moves of a program's one G74.1 cycle as the groove oracles see them — in the groove's own
 // frame (u along d, w the depth: groove_spec.h), found by geometry and kind alone, never by the
 // engine's phase labels: the cycle's moves lie between the program's own moves (PROG.WHOLE); the
-// profile passes (STEP9, STEP10) begin with the first run of feeds that holds a feed other than an
-// axial one towards the floor; before it, each run of axial feeds towards the floor at one u is an
+// profile passes (STEP9, STEP10) begin with the first run of feeds that holds a feed across the
+// groove (along u, or an arc); before it, each run of axial feeds towards the floor at one u is an
 // axial cycle (STEP3…STEP6) and its feeds are pecks.
 #include <optional>
 #include <string>
@@ -36,10 +36,11 @@ struct GrooveMoves {
   double dw(std::size_t i) const { return to(i).z - from(i).z; }
   bool isFeed(std::size_t i) const { return in.path.moves[i].kind == MoveKind::Feed; }
   bool isRapid(std::size_t i) const { return in.path.moves[i].kind == MoveKind::Rapid; }
-  // A line along w (within the tolerance in u) that moves in w.
+  // A line along w (within the tolerance in u) that moves in w (by however little: a last peck may
+  // end a rounding step below the one before).
   bool isAxial(std::size_t i) const;
   // An axial feed towards the floor.
-  bool isFeedTowardsTheFloor(std::size_t i) const { return isFeed(i) && isAxial(i) && dw(i) > tol; }
+  bool isFeedTowardsTheFloor(std::size_t i) const { return isFeed(i) && isAxial(i) && dw(i) > kGeomEps; }
   // Move i's finding with its segment as the witness.
   Finding report(const Oracle& o, std::size_t i, std::string message) const;
   // A local point as program text: "X… Z…" (X a diameter).

@@ -89,6 +89,16 @@ class GrooveRetractOracle : public Oracle {
   }
 };
 
+// STEP2 for the first layer: from A11 along the start level to the layer's first cycle start, the
+// blade's start-side edge on the rough near flank's top — below an r1 corner, which the profile
+// passes cut (I17) — rather than a step between cycles.
+bool isFirstLayerStart(const GrooveMoves& m, std::size_t i) {
+  const GrooveOutline& rough = m.g.rough;
+  if (m.g.corners[0].size <= 0 || rough.chain.empty()) return false;
+  const double flankTop = rough.chain.front().to.x;  // the r1 piece ends on the near flank
+  return distance(m.from(i), m.g.roughStart()) <= m.tol && std::abs(m.to(i).x - (flankTop + m.g.toolWidth)) <= m.tol;
+}
+
 class GrooveRadialStepOracle : public Oracle {
  public:
   std::string id() const override { return "groove-radial-step"; }
@@ -100,6 +110,7 @@ class GrooveRadialStepOracle : public Oracle {
     // ① (the first move) may run along u; STEP8's moves back to a layer's start run against d.
     for (std::size_t i = m->range.begin + 1; i < m->profileStart; ++i) {
       if (!m->isRapid(i) || std::abs(m->dw(i)) > m->tol || m->du(i) <= m->g.radialStep + m->tol) continue;
+      if (i == m->range.begin + 1 && isFirstLayerStart(*m, i)) continue;
       std::ostringstream s;
       s << "rapid move " << i << " steps " << 2 * m->du(i) << " in X (diameter) between axial cycles; Δi = "
         << 2 * m->g.radialStep;
