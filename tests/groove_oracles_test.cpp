@@ -290,6 +290,36 @@ TEST(GrooveOracles, ABladeIsNotAPoint) {
   EXPECT_FALSE(of(all, "no-gouge").empty()) << text(all);
 }
 
+// J1 with an r1 chamfer A1 on the same groove: the finish profile starts on the mouth at u −1 and
+// chamfers down to (u 0, w 1) (I10). The blade's programmed point follows the start side shifted by
+// r = 2 (§7): from A11 (u 2) along the mouth to P0 + r (u 1, x 19), down the chamfer to (u 2, w 1),
+// down the flank to the floor, along it to u 4 and up the far flank. Rough and finish profiles are
+// the same (no allowances), so both passes run that path.
+const char* kChamfered = "G00 X50 Z5 F0.1;\nG74.1 X40 Z0 P2 Q1.5 H-4 D-8;\nG74.1 R0.5 I2 J1 A1;\n";
+
+Toolpath chamferedPath(bool withPasses) {
+  PathBuilder b;
+  b.rapid(0, 18).cycle(18).rapid(0, 17).cycle(17).rapid(0, 16).cycle(16).rapid(0, 18);
+  if (withPasses) {
+    for (int pass = 0; pass < 2; ++pass) {  // STEP9 (rough), then STEP10 (finish; its start is A11 too)
+      b.feed(0, 19).feed(-1, 18).feed(-4, 18).feed(-4, 16).feed(0, 16).rapid(0, 18);
+    }
+  }
+  b.rapid(5, 25);
+  return b.path;
+}
+
+TEST(GrooveOracles, TheFinishProfilesChamferIsCut) {
+  const std::vector<Finding> good = judged(kChamfered, chamferedPath(true));
+  EXPECT_TRUE(good.empty()) << text(good);
+  // Without the profile passes the chamfer's triangle (legs 1: 2·area/perimeter = 1/(2 + √2)) stands.
+  const std::vector<Finding> all = judged(kChamfered, chamferedPath(false));
+  const std::vector<Finding> f = of(all, "complete");
+  ASSERT_EQ(f.size(), 1u) << text(all);
+  EXPECT_NE(f.front().message.find("0.292893 mm thick"), std::string::npos) << f.front().message;
+  EXPECT_NE(f.front().message.find("finish profile"), std::string::npos) << f.front().message;
+}
+
 // Two layers (V2): each layer's cycles cut 2 deep from its top, pecks 1.5 then to the bottom.
 const char* kLayered = "G00 X50 Z5 F0.1;\nG74.1 X40 Z0 P2 Q1.5 H-4 D-8;\nG74.1 R0.5 V2 I2;\n";
 
