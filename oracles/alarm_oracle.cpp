@@ -17,8 +17,10 @@ class AlarmOracle : public Oracle {
       : id_(std::move(id)), rules_(std::move(rules)), siemens_(siemens) {}
   std::string id() const override { return id_; }
   std::vector<std::string> rules() const override { return rules_; }
-  // No alarm oracle judges G74.1 yet (its alarms are the reference's reading of seed 002).
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1 && isSiemensFamily(f) == siemens_; }
+  // `alarm` judges G74.1 too: the alarms of docs/g74_1.md I6b read from the program
+  // (oracles/groove/groove_spec.h: the ranges, missing words and blocks, words the blocks do not
+  // take, P/Q's decimal point, a groove the tool cannot cut).
+  bool judges(CycleFamily f) const override { return isSiemensFamily(f) == siemens_; }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
@@ -52,7 +54,8 @@ std::unique_ptr<Oracle> makeAlarmOracle() {
   return std::make_unique<AlarmOracle>(
       "alarm",
       std::vector<std::string>{"G71.T1.ALARM", "G71.T2.MONO", "G72.T1.MONO", "G71.HEAD.G0G1", "G71.HEAD.NOX",
-                               "G71.LIMIT.HEIGHT", "G72.RANGE", "G73.ALARMS", "G73.D.RANGE", "G73.FS10.FMT", "G73.HEAD"},
+                               "G71.LIMIT.HEIGHT", "G72.RANGE", "G73.ALARMS", "G73.D.RANGE", "G73.FS10.FMT", "G73.HEAD",
+                               "G74_1.FMT", "G74_1.RANGE"},
       false);
 }
 

@@ -128,8 +128,8 @@ class SpecReader {
       const GCodeSystem system = state_.gCodeSystem;
       const bool g70 = hasGFunction(b, 700, system), g71 = hasGFunction(b, 710, system),
                  g72 = hasGFunction(b, 720, system), g73 = hasGFunction(b, 730, system);
-      if (hasGFunction(b, 741, system)) {  // G74.1: not read by the oracles yet (hasGrooveCycle)
-        out_.hasGrooveCycle = true;
+      if (hasGFunction(b, 741, system)) {
+        readGrooveCycleBlock(i, b);
         ++i;
         continue;
       }
@@ -167,7 +167,7 @@ class SpecReader {
   void readMotionOutsideCycles(std::size_t i, const Block& b) {
     const AxisWordsMean meaning = axisWordsMeaning(b, state_.gCodeSystem);
     if (huazhongShape_) requireFollowableAfterHuazhong(b, meaning);
-    const bool moves = axisWordsMoveTheTool(meaning), beforeCycles = out_.cycles.empty();
+    const bool moves = axisWordsMoveTheTool(meaning), beforeCycles = out_.cycles.empty() && out_.grooves.empty();
     if (moves && !beforeCycles) out_.motionAfterCycles = true;
     // Before the cycles, the path starts at the first known position; from then on every move is drawn.
     const PlaneAxes axes = state_.axes();
@@ -182,6 +182,26 @@ class SpecReader {
       if (auto m = programMove(b, before)) out_.movesAfterCycles.push_back(*m);
     }
     if (huazhongShape_) recordRunAfterHuazhong(i, b, before);
+  }
+
+  // G74_1.FMT (I1): a G74.1 block with X or Z gives the groove (its own alarms are raised there); one
+  // without them runs the cycle with the nearest first block before it. Only the gsk profile has
+  // G74.1, in G18 (the reference refuses it elsewhere as not supported): there the oracles read none.
+  void readGrooveCycleBlock(std::size_t i, const Block& b) {
+    out_.hasGrooveCycle = true;
+    if (profile_.name != "gsk" || state_.axes().gCode != 18) return;
+    if (givesTheGroove(b)) {
+      grooveBlock_ = i;
+      if (auto bad = grooveBlockAlarm(b, state_, params_)) {
+        GrooveSpec forbidden;
+        forbidden.line = forbidden.grooveLine = b.line;
+        forbidden.forbiddenBy = bad;
+        out_.grooves.push_back(std::move(forbidden));
+      }
+      return;
+    }
+    startMovesAfterCycles();
+    out_.grooves.push_back(readGrooveSpec(grooveBlock_ ? &program_.blocks[*grooveBlock_] : nullptr, b, state_, params_));
   }
 
   // A cycle block (G70, or G71/G72 with P/Q) ends the moves after the cycles read so far: they were
@@ -613,6 +633,7 @@ class SpecReader {
   bool afterCycles_ = false;  // a cycle has been read: moving blocks go to movesAfterCycles  // PROG.POSITION: the axes whose work coordinates the program has given
   ProgramSpec out_;
   std::optional<Alarm> firstBlockAlarm_;  // a first cycle block outside the range table
+  std::optional<std::size_t> grooveBlock_;  // the last first G74.1 block (I1)
   // ns and nf (block indices) of the last Huazhong G71 the rules allow: the program runs on after it.
   std::optional<std::pair<std::size_t, std::size_t>> huazhongShape_;
 
@@ -671,7 +692,14 @@ std::optional<Alarm> ProgramSpec::firstAlarm() const {
   for (const Alarm& a : finishingAlarms) consider(a);
   if (blockAlarm) consider(*blockAlarm);
   if (siemensAlarm) consider(*siemensAlarm);
+  for (const GrooveSpec& g : grooves) {
+    if (g.forbiddenBy) consider(*g.forbiddenBy);
+  }
   return first;
+}
+
+const GrooveSpec* ProgramSpec::singleGroove() const {
+  return grooves.size() == 1 && !grooves.front().forbiddenBy && !firstAlarm() ? &grooves.front() : nullptr;
 }
 
 const SiemensCycleSpec* ProgramSpec::singleSiemensCycle() const {

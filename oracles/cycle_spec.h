@@ -13,6 +13,7 @@
 #include "reference/model/program.h"
 #include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
+#include "oracles/groove/groove_spec.h"
 #include "oracles/siemens/siemens_cycle_spec.h"
 
 namespace cyclecert {
@@ -95,13 +96,17 @@ struct ProgramSpec {
   std::optional<CycleFamily> siemensFamily;
   std::vector<SiemensCycleSpec> siemensCycles;
   std::optional<Alarm> siemensAlarm;
-  // A program with a G74.1 groove cycle (GSK, seed 002): its blocks are not read as moves, and no
-  // oracle judges the program yet (Oracle::judges).
+  // A program with a G74.1 groove cycle (GSK, seed 002): its blocks are not read as moves; under the
+  // gsk profile in G18 each second block (the cycle) is read into a GrooveSpec (oracles/groove/), and
+  // a first block the rules forbid by itself gives one with only its alarm.
   bool hasGrooveCycle = false;
+  std::vector<GrooveSpec> grooves;
 
   // The program's one roughing cycle when it has exactly one that the rules allow (what the
   // geometric oracles judge), else nullptr.
   const CycleSpec* singleRoughingCycle() const;
+  // The program's one G74.1 cycle when it has exactly one and the rules allow it, else nullptr.
+  const GrooveSpec* singleGroove() const;
   // The program's one SINUMERIK cycle call when it has exactly one and no alarm stops it, else nullptr.
   const SiemensCycleSpec* singleSiemensCycle() const;
   // The program's SINUMERIK calls when no alarm stops it and all of them machine one contour in one

@@ -1,5 +1,6 @@
 // feeds: cutting moves run at the cycle's F (G71.FST, G72.FST: F inside ns…nf is ignored by the
 // roughing cycle), or at an F of the finishing shape when the program has a G70 (G70.EX).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -92,9 +93,30 @@ class FeedsOracle : public Oracle {
     }
   }
 
+  // G74.1 too (judgeGroove).
+  bool judges(CycleFamily f) const override { return !isSiemensFamily(f); }
+
+  // G74_1.ADDR (I21): the groove's feeds run at the F in force before the cycle — F 0 when the
+  // program gives none (the seed's example), drawn so with a warning.
+  void judgeGroove(const JudgeInput& in, const GrooveSpec& g, std::vector<Finding>& out) const {
+    const MoveRange range{firstMoveOfTheCycles(in), firstMoveAfterTheCycles(in)};
+    for (std::size_t i = range.begin; i < range.end; ++i) {
+      const Move& m = in.path.moves[i];
+      if (m.kind != MoveKind::Feed) continue;
+      if (m.feed && std::abs(*m.feed - g.feed) <= 1e-9 * std::max(1.0, g.feed)) continue;
+      std::ostringstream s;
+      s << "cutting move " << i << " of G74.1 at F" << m.feed.value_or(0) << ", but the F in force is " << g.feed;
+      Finding f = finding(*this, i, s.str());
+      f.rules = {"G74_1.ADDR", "G74_1.STEP3", "G74_1.STEP9", "G74_1.STEP10"};
+      out.push_back(f);
+    }
+  }
+
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
-    if (in.path.alarm || in.program.cycles.empty()) return;
+    if (in.path.alarm) return;
+    if (const GrooveSpec* g = in.program.singleGroove()) judgeGroove(in, *g, out);
+    if (in.program.cycles.empty()) return;
     judgeInfeeds(in, out);
     std::vector<double> allowed;
     for (const CycleSpec& c : in.program.cycles) allowed.push_back(c.feed);

@@ -7,6 +7,7 @@
 
 #include "oracles/material/boost_geometry.h"
 
+#include "oracles/groove/groove_replay.h"
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
 #include "oracles/run_after_cycle.h"
@@ -112,16 +113,61 @@ bool isDocumentedFinishingReturn(const MaterialReplay& r, const JudgeInput& in, 
          distance(move.to, s.frame.toPlane(s.start)) <= tolerance(in);
 }
 
+// G74.1 (oracles/groove/groove_replay.h): the rules each material oracle cites for a groove, and a
+// finding on a move with the groove's crossed material as its witness (a blade's swept region met,
+// or a point's pieces).
+const std::vector<std::string> kGrooveCutRules = {"G74_1.STEP3", "G74_1.STEP9", "G74_1.STEP10"};
+const std::vector<std::string> kGrooveRapidRules = {"G74_1.STEP4", "G74_1.STEP6", "G74_1.STEP7", "G74_1.STEP8",
+                                                    "G74_1.STEP9", "G74_1.STEP10"};
+
+std::vector<std::string> withGrooveRules(std::vector<std::string> rules, const std::vector<std::string>& groove) {
+  rules.insert(rules.end(), groove.begin(), groove.end());
+  return rules;
+}
+
+Finding grooveFinding(const Oracle& o, const JudgeInput& in, const GrooveReplay& r, std::size_t i,
+                      const ToolCrossing& c, const std::string& what, const std::vector<std::string>& rules) {
+  std::ostringstream m;
+  m << what;
+  if (r.tool.isPoint()) m << " over " << c.amount << " mm";
+  else m << ": the " << r.tool.width << " mm blade sweeps " << c.amount << " mm² of it (" << c.thickness << " mm thick)";
+  Finding f = finding(o, i, m.str());
+  f.rules = rules;
+  f.witness.segment = in.path.segment(i);
+  if (r.tool.isPoint()) {
+    for (const Segment& piece : c.pieces) {
+      f.witness.regions.push_back({r.groove->toPlane(piece.from), r.groove->toPlane(piece.to)});
+    }
+  } else {
+    f.witness.regions = r.planeOutlines(c.crossed);
+  }
+  return f;
+}
+
 // no-gouge: no move enters the finish shape grown by the allowances by more than the tolerance.
+// G74.1: no move of the tool (the blade's swept rectangle, or the point) enters the part beyond the
+// groove's target profile (the finish profile with J1/J2, the rough one with J0).
 class NoGougeOracle : public Oracle {
  public:
   std::string id() const override { return "no-gouge"; }
   std::vector<std::string> rules() const override {
-    return withSiemensRules({"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD", "G73.PASS.SHIFT"}, kSiemensMaterialSteps);
+    return withGrooveRules(
+        withSiemensRules({"G71.OP", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.QUAD", "G73.PASS.SHIFT"}, kSiemensMaterialSteps),
+        kGrooveCutRules);
   }
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1; }  // also SINUMERIK
+  bool judges(CycleFamily) const override { return true; }  // also SINUMERIK and G74.1
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
+    if (const GrooveReplay* g = ctx.groove) {
+      for (std::size_t i = g->range.begin; i < g->range.end; ++i) {
+        const ToolCrossing& c = g->partCrossings[i];
+        if (!c.any()) continue;
+        std::ostringstream m;
+        m << "move " << i << " enters the part beyond the groove's " << (g->groove->finishes() ? "finish" : "rough") << " profile";
+        out.push_back(grooveFinding(*this, in, *g, i, c, m.str(), kGrooveCutRules));
+      }
+      return;
+    }
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
     for (std::size_t i = 0; i < r->judgedMoves; ++i) {
@@ -146,13 +192,27 @@ class RapidsInAirOracle : public Oracle {
  public:
   std::string id() const override { return "rapids-in-air"; }
   std::vector<std::string> rules() const override {
-    return withSiemensRules(
-        {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN", "G73.APPROACH", "G73.RETURN"},
-        kSiemensMaterialSteps);
+    return withGrooveRules(
+        withSiemensRules(
+            {"G72.STEP1", "G72.STEP5", "G72.STEP8", "G71.T2.POCKET.EXIT", "G71.T2.RETURN", "G73.APPROACH", "G73.RETURN"},
+            kSiemensMaterialSteps),
+        kGrooveRapidRules);
   }
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1; }  // also SINUMERIK
+  bool judges(CycleFamily) const override { return true; }  // also SINUMERIK and G74.1
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
+    if (const GrooveReplay* g = ctx.groove) {
+      // G74.1: the rapids inside the groove (retracts, the steps across it, the returns) cross only
+      // what earlier moves cleared — swept by the blade, or by the point.
+      for (std::size_t i = g->range.begin; i < g->range.end; ++i) {
+        const ToolCrossing& c = g->rapidCrossings[i];
+        if (!c.any()) continue;
+        std::ostringstream m;
+        m << "rapid move " << i << " crosses material still standing";
+        out.push_back(grooveFinding(*this, in, *g, i, c, m.str(), kGrooveRapidRules));
+      }
+      return;
+    }
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
     const bool programmedRapidHead = r->cycle && r->cycle->patternRepeating() && r->cycle->headIsRapid;
@@ -185,11 +245,15 @@ class CompleteOracle : public Oracle {
     std::vector<std::string> rules = withSiemensRules(
         {"G71.T1.SEMIFIN", "G72.STEP7", "G71.T2.RETURN", "G71.T2.VALLEY", "G73.PASS.SHIFT", "G73.D1"}, kSiemensMaterialSteps);
     rules.push_back("CYCLE95.UNDERCUT");
-    return rules;
+    return withGrooveRules(rules, kGrooveCutRules);
   }
-  bool judges(CycleFamily f) const override { return f != CycleFamily::G74_1; }  // also SINUMERIK
+  bool judges(CycleFamily) const override { return true; }  // also SINUMERIK and G74.1
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
     const JudgeInput& in = ctx.in;
+    if (ctx.groove) {
+      judgeGroove(*ctx.groove, tolerance(in), out);
+      return;
+    }
     const MaterialReplay* r = ctx.replay;
     if (!r) return;
     // A SINUMERIK call's roughing ends with the contour-parallel cut at the allowance (LCYC95.ROUGH,
@@ -213,6 +277,26 @@ class CompleteOracle : public Oracle {
     if (r->siemens && r->siemens->isCycle95()) f.rules.push_back("CYCLE95.UNDERCUT");
     f.witness.regions = outlinesOf(left);
     f.witness.point = thickest->where;
+    out.push_back(f);
+  }
+
+ private:
+  // G74.1 (STEP9, STEP10): after the cycle the groove is empty to its target profile — the rough
+  // profile with J0, the finish profile with its chamfers and rounds with J1/J2: no ring of what
+  // is left inside it is thicker (2·area/perimeter) than the tolerance.
+  void judgeGroove(const GrooveReplay& g, double tol, std::vector<Finding>& out) const {
+    const BgRegion left = g.leftover();
+    BgRegion solid;
+    for (const BgPolygon& p : left) {
+      if (thickestRing(BgRegion{p}) > tol) solid.push_back(p);
+    }
+    if (solid.empty()) return;
+    std::ostringstream m;
+    m << "after the last move material " << thickestRing(solid) << " mm thick is left inside the groove's "
+      << (g.groove->finishes() ? "finish" : "rough") << " profile";
+    Finding f = finding(*this, std::nullopt, m.str());
+    f.rules = kGrooveCutRules;
+    f.witness.regions = g.planeOutlines(solid);
     out.push_back(f);
   }
 };

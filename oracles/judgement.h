@@ -52,12 +52,15 @@ struct JudgeInput {
 };
 
 struct MaterialReplay;  // oracles/material_replay.h
+struct GrooveReplay;    // oracles/groove/groove_replay.h
 
 // What the oracles see: the input, and the material replay computed once for all of them (null
-// when the program is not one the geometric oracles judge).
+// when the program is not one the geometric oracles judge) — for a G74.1 program the groove's
+// replay with the tool's shape instead.
 struct JudgeContext {
   const JudgeInput& in;
   const MaterialReplay* replay = nullptr;
+  const GrooveReplay* groove = nullptr;
 };
 
 class Oracle {
@@ -69,7 +72,8 @@ class Oracle {
   // it for a program whose one roughing cycle (or SINUMERIK program) it does not judge. How it
   // judges each family is in its comment and oracles/README.md (depth-per-pass: Δd for G71/G72, the
   // division step for G73). By default the FANUC families; the SINUMERIK oracles (oracles/siemens/,
-  // siemens-alarm) judge LCYC95 and CYCLE95. No oracle judges G74.1 (the groove cycle) yet.
+  // siemens-alarm) judge LCYC95 and CYCLE95; the groove oracles (oracles/groove/) and alarm, feeds,
+  // no-gouge, rapids-in-air and complete judge G74.1.
   virtual bool judges(CycleFamily family) const { return !isSiemensFamily(family) && family != CycleFamily::G74_1; }
   virtual void judge(const JudgeContext& ctx, std::vector<Finding>& findings) const = 0;
 };

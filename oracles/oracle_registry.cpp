@@ -25,6 +25,11 @@ std::vector<std::unique_ptr<Oracle>> makeOracles() {
   all.push_back(makeSiemensFeedsOracle());
   all.push_back(makeSiemensChipBreakingOracle());
   all.push_back(makeSiemensReturnsOracle());
+  all.push_back(makeGroovePeckOracle());
+  all.push_back(makeGrooveRetractOracle());
+  all.push_back(makeGrooveRadialStepOracle());
+  all.push_back(makeGrooveLayerOracle());
+  all.push_back(makeGrooveReturnsOracle());
   return all;
 }
 

@@ -25,6 +25,12 @@ std::unique_ptr<Oracle> makeSiemensInfeedOracle();
 std::unique_ptr<Oracle> makeSiemensFeedsOracle();
 std::unique_ptr<Oracle> makeSiemensChipBreakingOracle();
 std::unique_ptr<Oracle> makeSiemensReturnsOracle();
+// GSK G74.1 (oracles/groove/).
+std::unique_ptr<Oracle> makeGroovePeckOracle();
+std::unique_ptr<Oracle> makeGrooveRetractOracle();
+std::unique_ptr<Oracle> makeGrooveRadialStepOracle();
+std::unique_ptr<Oracle> makeGrooveLayerOracle();
+std::unique_ptr<Oracle> makeGrooveReturnsOracle();
 
 std::vector<std::unique_ptr<Oracle>> makeOracles();
 

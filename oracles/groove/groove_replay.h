@@ -1,0 +1,48 @@
+#pragma once
+// The material replay of a program's one G74.1 cycle, shared by no-gouge, rapids-in-air and
+// complete (computed once per judgement, JudgeContext::groove). It works in the groove's frame
+// (u along d, w the depth: groove_spec.h) with the tool as a ToolShape (oracles/material/tool_shape.h):
+// - a grooving tool (I = r > 0) is a blade of width r whose programmed point is its corner on d's
+//   side (I12): it spans u ∈ [u − r, u], its shank runs back to the start side (−w) out of the
+//   stock. A move removes exactly what the blade sweeps;
+// - a pointed tool (no I, I13) is a point; each peck removes its shadow towards the start side of
+//   the steps (−u: the axial cycles step along +u, so what lies behind a peck down to its depth is
+//   cut), the point model's shadow in the groove's frame; a profile pass's feed (groove_moves.h)
+//   removes its shadow towards the groove's inside (+u on the start side, −u on the far side).
+// The stock (interpretation, oracles/README.md): the part in front of the face at S — the band
+// below the mouth line (the outer bottom through S at the slope ∠p) down to 1 mm below the groove's
+// floor, over the groove's span at the mouth plus the tool width and 1 mm on both sides. The part
+// no move may enter is that band without the groove the cycle must cut (its target: the finish
+// profile with J1/J2, the rough profile with J0). J2 (finish only) works on a groove roughed before:
+// its material at the start is the band without the rough profile's interior (the allowances).
+#include <optional>
+#include <vector>
+
+#include "oracles/groove/groove_spec.h"
+#include "oracles/judgement.h"
+#include "oracles/material/tool_shape.h"
+#include "oracles/run_after_cycle.h"
+
+namespace cyclecert {
+
+struct GrooveReplay {
+  const GrooveSpec* groove = nullptr;
+  ToolShape tool;
+  BladeFrame blade;          // the blade's rectangle in the groove's frame
+  MoveRange range;           // the cycle's moves
+  BgRegion stock;            // local frame
+  BgRegion target;           // the groove's interior the cycle must empty (local)
+  BgRegion part;             // the stock without the target: no move may enter it (local)
+  BgRegion remaining;        // the material after the cycle's last move (local)
+  std::vector<ToolCrossing> partCrossings;   // per move of the path (empty outside the range)
+  std::vector<ToolCrossing> rapidCrossings;  // per move: material still standing a rapid crosses
+  // What remains of the target's interior after the last move (local).
+  BgRegion leftover() const;
+  // A local region's outlines in the plane (witnesses).
+  std::vector<std::vector<Point>> planeOutlines(const BgRegion& local) const;
+};
+
+// Nothing when the program is not one G74.1 cycle the rules allow, or the engine alarmed.
+std::optional<GrooveReplay> replayGroove(const JudgeInput& in);
+
+}  // namespace cyclecert

@@ -1,0 +1,52 @@
+#pragma once
+// The cutting tool as the material model sees it. The roughing cycles' model (material_model.h)
+// takes the tool as a point with a shadow: a feed removes everything beyond it towards the start
+// side — the fast path, kept for G71/G72/G73 and SINUMERIK. A grooving tool (G74.1 with I) is a
+// blade: a rectangle of width r across the feed, with its shank running back out of the material;
+// a move removes (and may cross) exactly the region the rectangle sweeps — the Minkowski sum of the
+// move and the rectangle — not a shadow.
+#include <optional>
+
+#include "oracles/material/material_model.h"
+#include "oracles/material/region.h"
+
+namespace cyclecert {
+
+struct ToolShape {
+  double width = 0;  // 0: a point; > 0: a blade this wide
+  bool isPoint() const { return width <= 0; }
+};
+
+// A blade's rectangle placed on its programmed point: it spans `width` from the point along the unit
+// vector `across` and `length` along the unit vector `back` (the shank, towards the air).
+struct BladeFrame {
+  Point across;
+  Point back;
+  double length = 0;
+};
+
+// The Minkowski sum of `move` (arcs as chords within chordTolerance) and the parallelogram spanned
+// from the origin by a·da and b·db: the union of the convex hulls of the parallelogram at each
+// chord's two ends. With a blade frame (a = width along `across`, b = length along `back`) it is the
+// region the blade sweeps; with b = 0 it is a point's shadow of length a along da.
+BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance);
+
+// How far a tool's move enters `region` beyond `epsilon`.
+struct ToolCrossing {
+  double amount = 0;          // mm for a point (the length inside), mm² for a blade (the area)
+  double thickness = 0;       // a blade's: the thickest ring's 2·area/perimeter; a point's: its length
+  BgRegion crossed;           // a blade's crossed region
+  std::vector<Segment> pieces;  // a point's pieces inside
+  bool any() const { return amount > 0; }
+};
+
+// A point: crossingOf (material_model.h) with epsilon. A blade: the swept region ∩ region, counted
+// where a ring of it is thicker (2·area/perimeter, about the depth it goes in for a long thin
+// sliver) than epsilon.
+ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
+                          double epsilon, double chordTolerance);
+
+// The thickest ring of `region` by 2·area/perimeter (0 when empty).
+double thickestRing(const BgRegion& region);
+
+}  // namespace cyclecert
