@@ -141,10 +141,9 @@ PlotInput plotInputFor(const Toolpath& path, const std::string& title) {
   in.title = title;
   in.path = path;
   for (const CycleRecord& c : path.cycles) {
-    for (const Segment& s : c.shape) {
-      in.finish.segments.push_back(s);
-      in.rough.segments.push_back(s.shifted(c.allowance));
-    }
+    in.finish.segments.insert(in.finish.segments.end(), c.shape.begin(), c.shape.end());
+    const std::vector<Segment> rough = c.roughProfile();
+    in.rough.segments.insert(in.rough.segments.end(), rough.begin(), rough.end());
   }
   return in;
 }

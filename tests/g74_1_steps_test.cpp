@@ -284,3 +284,29 @@ TEST(G74_1Steps, AToolWiderThanTheFloorIsAlarmed) {
 
 }  // namespace
 }  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+// The cycle record's rough profile (drawn dashed in every plot) is the groove moved in by the
+// allowances (docs/g74_1.md I15), not the finish shape shifted. S = (0, 20), h −4 (towards −Z),
+// d −4 (width 2 towards −X), flanks at 90°: the finish profile (0, 20) → (−4, 20) → (−4, 18) →
+// (0, 18); U0.4 W0.2 move the near flank to x 19.8, the far one to 18.2 and the floor to z −3.8.
+TEST(G74_1Record, TheRoughProfileIsTheGrooveMovedInByTheAllowances) {
+  const Toolpath t = planGsk("G00 X50 Z5 F0.1;\nG74.1 X40 Z0 P2 Q3 H-4 D-4;\nG74.1 R0.5 U0.4 W0.2 J1;\n");
+  ASSERT_FALSE(t.alarm);
+  ASSERT_EQ(t.cycles.size(), 1u);
+  const std::vector<Segment> rough = t.cycles.front().roughProfile();
+  const std::vector<Point> corners{{0, 19.8}, {-3.8, 19.8}, {-3.8, 18.2}, {0, 18.2}};
+  ASSERT_EQ(rough.size(), corners.size() - 1);
+  for (std::size_t i = 0; i < rough.size(); ++i) {
+    EXPECT_TRUE(nearlyEqual(rough[i].from, corners[i], 1e-9)) << i;
+    EXPECT_TRUE(nearlyEqual(rough[i].to, corners[i + 1], 1e-9)) << i;
+  }
+  const PlotInput plot = plotInputFor(t, "allowances");
+  ASSERT_EQ(plot.rough.segments.size(), rough.size());
+  EXPECT_TRUE(nearlyEqual(plot.rough.segments[1].from, {-3.8, 19.8}, 1e-9));
+}
+
+}  // namespace
+}  // namespace cyclecert

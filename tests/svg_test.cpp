@@ -115,7 +115,7 @@ PlotInput example() {
                         line({-25, 15}, {-40, 27})};
   in.rough = in.finish.shifted({0.5, 0.25});
   in.path.start = {5, 30};
-  in.path.cycles.push_back(CycleRecord{"G71", 10, {5, 30}, 0, 0, {}, {}, false});
+  in.path.cycles.push_back(CycleRecord{"G71", 10, {5, 30}, 0, 0, {}, {}, false, {}});
   in.path.moves = {rapid({5.5, 30.25}),          rapid({5.5, 25.25}),
                    feed({-37, 25.25}, MovePhase::Pass, 1),  feed({-36.5, 25.75}, MovePhase::Pass, 1),
                    rapid({5.5, 25.75}),          rapid({5.5, 20.25}),
@@ -335,7 +335,7 @@ TEST(Svg, NeverWritesNanOrInf) {
   in.path.moves.push_back(arcMove(SegmentKind::ArcCW, {1, 2}, {nan, 0}));
   in.path.moves.push_back(feed({-inf, 5}, MovePhase::Pass, 3));
   in.finish.segments.push_back(line({-40, 27}, {nan, nan}));
-  in.path.cycles.push_back(CycleRecord{"G71", 20, {inf, 0}, 0, 0, {}, {}, false});
+  in.path.cycles.push_back(CycleRecord{"G71", 20, {inf, 0}, 0, 0, {}, {}, false, {}});
   const std::string svg = renderToolpathSvg(in);
   parseSvg(svg);
   EXPECT_EQ(lower(svg).find("nan"), std::string::npos);

@@ -29,6 +29,7 @@ struct CycleOutcome {
   std::vector<Segment> shape;      // finish shape A → B → C, plane coordinates
   Point allowance;                 // shift of the rough profile, plane coordinates
   bool compensated = false;        // `shape` is the compensated path (G41/G42)
+  std::vector<Segment> roughShape; // the rough profile when it is no shift of `shape` (CycleRecord)
   std::size_t resumeAt = 0;        // index of the block executed after the cycle
 };
 

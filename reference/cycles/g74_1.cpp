@@ -246,6 +246,7 @@ CycleOutcome planG74_1(const CycleCall& call) {
   try {
     out.moves = planG74_1Moves(c);
     out.shape = g74_1FinishShape(c);
+    out.roughShape = g74_1RoughShape(c);
   } catch (const GrooveDoesNotFit& e) {
     throw cycleBlockAlarm(alarm::kCuttingAmount, b.line, std::string("G74.1: ") + e.what());
   }

@@ -36,7 +36,8 @@ struct G74_1Cycle {
 // with this tool (the caller raises the cycle's alarm) and NotSupported above the plan size cap.
 std::vector<Move> planG74_1Moves(const G74_1Cycle& cycle);
 
-// The finish profile in the plane (the toolpath's cycle record draws it).
+// The finish profile and the rough profile (I15) in the plane (the toolpath's cycle record draws them).
 std::vector<Segment> g74_1FinishShape(const G74_1Cycle& cycle);
+std::vector<Segment> g74_1RoughShape(const G74_1Cycle& cycle);
 
 }  // namespace cyclecert

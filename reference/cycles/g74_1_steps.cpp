@@ -237,10 +237,20 @@ class G74_1Planner {
 
 std::vector<Move> planG74_1Moves(const G74_1Cycle& cycle) { return G74_1Planner(cycle).plan(); }
 
-std::vector<Segment> g74_1FinishShape(const G74_1Cycle& cycle) {
+namespace {
+
+std::vector<Segment> inThePlane(const G74_1Cycle& cycle, const GrooveProfile& profile) {
   std::vector<Segment> shape;
-  for (const Segment& s : buildGrooveProfile(cycle.groove, 0, 0).chain) shape.push_back(cycle.frame.toPlane(s));
+  for (const Segment& s : profile.chain) shape.push_back(cycle.frame.toPlane(s));
   return shape;
+}
+
+}  // namespace
+
+std::vector<Segment> g74_1FinishShape(const G74_1Cycle& cycle) { return inThePlane(cycle, buildGrooveProfile(cycle.groove, 0, 0)); }
+
+std::vector<Segment> g74_1RoughShape(const G74_1Cycle& cycle) {
+  return inThePlane(cycle, buildGrooveProfile(cycle.groove, cycle.flankAllowance, cycle.floorAllowance));
 }
 
 }  // namespace cyclecert

@@ -230,7 +230,8 @@ class ProgramRunner {
                                      " moves; cyclecert plans at most that many per program");
     }
     CycleRecord record{cycleName(cycle), b.line, state_.planePoint(), path_.moves.size(),
-                       out.moves.size(), std::move(out.shape), out.allowance, out.compensated};
+                       out.moves.size(), std::move(out.shape), out.allowance, out.compensated,
+                       std::move(out.roughShape)};
     path_.cycles.push_back(record);
     markSingleBlockStops(out.moves);
     for (Move& m : out.moves) path_.moves.push_back(std::move(m));

@@ -41,6 +41,14 @@ std::string phaseNamesText() {
   return text;
 }
 
+std::vector<Segment> CycleRecord::roughProfile() const {
+  if (!roughShape.empty()) return roughShape;
+  std::vector<Segment> rough;
+  rough.reserve(shape.size());
+  for (const Segment& s : shape) rough.push_back(s.shifted(allowance));
+  return rough;
+}
+
 Segment Toolpath::segment(std::size_t i) const {
   const Move& m = moves[i];
   Segment s;

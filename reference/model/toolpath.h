@@ -71,6 +71,11 @@ struct CycleRecord {
   std::vector<Segment> shape;  // the finish shape A → B → C of ns…nf
   Point allowance;             // the rough profile is `shape` shifted by this (Δw, Δu/2)
   bool compensated = false;    // `shape` is the imaginary tool-nose path under G41/G42
+  // The rough profile where it is no shift of `shape` (G74.1: each flank and the floor moved into the
+  // groove by its allowance); empty for the cycles whose rough profile roughProfile() shifts.
+  std::vector<Segment> roughShape;
+
+  std::vector<Segment> roughProfile() const;
 };
 
 // PROG.CAP.MOVES: the most moves a toolpath holds — the reference's plan of a program (each cycle

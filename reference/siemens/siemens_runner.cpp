@@ -202,7 +202,7 @@ class SiemensRunner {
       throw NotSupported(b.line, "the program would make more than " + std::to_string(kMostMovesPerToolpath) +
                                      " moves; cyclecert plans at most that many per program");
     }
-    path_.cycles.push_back({call.name, b.line, position_, path_.moves.size(), out.moves.size(), contour.segments, Point{}, false});
+    path_.cycles.push_back({call.name, b.line, position_, path_.moves.size(), out.moves.size(), contour.segments, Point{}, false, {}});
     for (Move& m : out.moves) path_.moves.push_back(std::move(m));
     for (Warning& w : out.warnings) path_.warnings.push_back(std::move(w));
     position_ = out.end;
