@@ -43,11 +43,12 @@ SiemensCycleCall callAt(Point position, const SiemensContour& contour) {
 }
 
 // FALZ 0.5, FALX 0.25, each on the stock side of its element (CYCLE95.PARAMS note): the face at z 0
-// (stock in front) moves to z 0.5 and keeps reaching down to the contour's first point (0, 0) on
-// the axis; the diameters move up by 0.25, the shoulder at z −10 (stock in front) to −9.5; the convex
-// corners close along the 0.5 × 0.25 rectangle. The profile: (0.5, 0) → (0.5, 4.25) → (−9.5, 4.25) →
-// (−9.5, 9.25) → (−20, 9.25). Start: (0.5 + 1, 9.25 + 1) = (1.5, 10.25). Depth 9.25 − 0 = 9.25, MID 4:
-// 3 passes of 3.083333, levels 6.166667, 3.083333, 0. The infeed is a G0 (CYCLE95.ROUGH).
+// (stock in front) moves to z 0.5 and up by 0.25 with the rectangle's corner on its stock side
+// (+0.5, +0.25) — the profile begins at the contour's first point so moved, (0.5, 0.25); the
+// diameters move up by 0.25, the shoulder at z −10 (stock in front) to −9.5; the convex corners close
+// along the 0.5 × 0.25 rectangle. The profile: (0.5, 0.25) → (0.5, 4.25) → (−9.5, 4.25) → (−9.5, 9.25)
+// → (−20, 9.25). Start: (0.5 + 1, 9.25 + 1) = (1.5, 10.25). Depth 9.25 − 0.25 = 9, MID 4: 3 passes of
+// 3, levels 6.25, 3.25, 0.25. The infeed is a G0 (CYCLE95.ROUGH).
 TEST(Cycle95Rough, AxisAllowancesAndTheG0Infeed) {
   const SiemensContour shaft = stepShaft();
   Cycle95Parameters p = params(1);
@@ -58,8 +59,8 @@ TEST(Cycle95Rough, AxisAllowancesAndTheG0Infeed) {
   const std::vector<Move> first(out.moves.begin(), out.moves.begin() + 6);
   expectMoves(first, {
                          {G0, {1.5, 10.25}, "approach"},
-                         {G0, {1.5, 9.25 - 9.25 / 3}, "pass", 1},
-                         {G1, {-9.5, 9.25 - 9.25 / 3}, "pass", 1},
+                         {G0, {1.5, 6.25}, "pass", 1},
+                         {G1, {-9.5, 6.25}, "pass", 1},
                          {G1, {-9.5, 9.25}, "pass", 1},
                          {G0, {-8.5, 10.25}, "pass", 1},
                          {G0, {1.5, 10.25}, "pass", 1},

@@ -355,14 +355,15 @@ TEST(SiemensAxisAllowance, FalzLiesOnTheStockSideOfEachWall) {
                 {{0.5, 0}, {0.5, 6}, {-5.5, 6}, {-5.5, 3}, {-9.5, 3}, {-9.5, 6}, {-20, 6}});
 }
 
-// FALX 0.25 as well: the diameters move up by 0.25; the convex corners are closed along the
-// rectangle (0.5 × 0.25), the concave ones trimmed: (0.5, 0) → (0.5, 6.25) → (−5.5, 6.25) →
-// (−5.5, 3.25) → (−9.5, 3.25) → (−9.5, 6.25) → (−20, 6.25).
+// FALX 0.25 as well: the face (and the contour's first point on it) moves by the rectangle's corner
+// on its stock side, (+0.5, +0.25); the diameters move up by 0.25; the convex corners are closed
+// along the rectangle (0.5 × 0.25), the concave ones trimmed: (0.5, 0.25) → (0.5, 6.25) →
+// (−5.5, 6.25) → (−5.5, 3.25) → (−9.5, 3.25) → (−9.5, 6.25) → (−20, 6.25).
 TEST(SiemensAxisAllowance, BothAllowancesGrowTheProfileByTheRectangle) {
   const std::vector<Segment> groove =
       polyline("G", {{0, 0}, {0, 6}, {-5, 6}, {-5, 3}, {-10, 3}, {-10, 6}, {-20, 6}}).segments;
   expectCorners(withAxisAllowances(groove, {0.5, 0.25}),
-                {{0.5, 0}, {0.5, 6.25}, {-5.5, 6.25}, {-5.5, 3.25}, {-9.5, 3.25}, {-9.5, 6.25}, {-20, 6.25}});
+                {{0.5, 0.25}, {0.5, 6.25}, {-5.5, 6.25}, {-5.5, 3.25}, {-9.5, 3.25}, {-9.5, 6.25}, {-20, 6.25}});
 }
 
 // A falling slope (a cone narrowing towards −z, its stock above and towards −z) moves by

@@ -31,11 +31,12 @@ Point stockNormalAt(const Segment& s, Point p) { return sideNormal(tangentAt(s, 
 int signWithin(double v) { return v > 1e-9 ? 1 : v < -1e-9 ? -1 : 0; }
 
 // The rectangle's corner on the stock side of a piece whose stock-side normal keeps its signs
-// along it: each allowance towards where the stock lies in its axis (0 along an axis it faces
-// across, e.g. FALZ on a diameter).
+// along it: FALZ towards where the stock lies in z (none on a diameter, which faces across z); FALX
+// always upwards — the part lies below its profile (the contour runs towards −z), so even a wall
+// has stock above its top end, and the profile's last point, like every other, lies FALX higher.
 Point cornerTowardsStock(const Segment& piece, Point allowance) {
   const Point n = stockNormalAt(piece, pointAt(piece, 0.5));
-  return {allowance.z * signWithin(n.z), allowance.x * signWithin(n.x)};
+  return {allowance.z * signWithin(n.z), allowance.x};
 }
 
 // Each element split where its stock normal turns across an axis (an arc at its apexes).
@@ -119,11 +120,13 @@ class AxisAllowanceBuilder {
   std::vector<Segment> build(const std::vector<Segment>& profile) {
     const std::vector<Segment> pieces = piecesOf(profile);
     if (pieces.empty()) return profile;
-    startBeforeTheFace(pieces.front());
+    // The part's face below the contour's first point, a wall rising to it (stock towards +z): its
+    // top moved by the rectangle's corner (+FALZ, +FALX) is where the profile begins.
+    faceTop_ = pieces.front().from + allowance_;
     bool onTheFace = true;  // the walls the contour begins with at its first point's z are the face's
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       onTheFace = onTheFace && isWallAt(pieces[i], pieces.front().from.z);
-      append(pieces[i], onTheFace ? allowance_ : cornerTowardsStock(pieces[i], allowance_),
+      append(pieces[i].shifted(onTheFace ? allowance_ : cornerTowardsStock(pieces[i], allowance_)),
              static_cast<int>(i));
     }
     std::vector<Segment> out;
@@ -140,55 +143,22 @@ class AxisAllowanceBuilder {
   }
 
  private:
-  // The part's face below the contour's first point, a wall rising to it (stock towards +z): moved
-  // by FALZ, it is where the profile begins when the first element's own corner lies elsewhere.
-  void startBeforeTheFace(const Segment& first) {
-    Segment face = lineBetween(first.from + Point{0, -1}, first.from, first.sourceLine);
-    last_ = face;
-    lastShift_ = allowance_;
-    grown_.clear();
-    faceEnd_ = first.from + lastShift_;
-  }
-
   static bool isWallAt(const Segment& s, double z) {
     return !s.isArc() && std::abs(s.from.z - z) <= kGeomEps && std::abs(s.to.z - z) <= kGeomEps;
   }
 
-  void append(const Segment& piece, Point shift, int index) {
-    Segment next = piece.shifted(shift);
-    const Point corner = piece.from;
-    const Point p = grown_.empty() ? faceEnd_ : grown_.back().to;
+  // Every moved piece keeps its ends' heights + FALX, so where two meet their moved ends differ in z
+  // only: a convex corner (the later piece moved less far towards +z) leaves a gap, closed along the
+  // rectangle's top edge; a concave one an overlap, trimmed.
+  void append(Segment next, int index) {
+    const Point p = grown_.empty() ? faceTop_ : grown_.back().to;
     const Point q = next.from;
-    if (distance(p, q) > kGeomEps) {
-      const Point turn = tangentAt(last_, last_.to) + tangentAt(piece, piece.from);
-      if (dot(q - p, turn) > 0) {
-        closeGap(p, q, corner, piece, shift);
-      } else if (!grown_.empty()) {
-        trimOverlap(grown_.back(), next, index);
-      } else {
-        // The first element's corner lies behind the face: it begins where it crosses the face.
-        next.from = q;
-      }
+    if (q.z < p.z - kGeomEps) {
+      grown_.push_back(lineBetween(p, q, next.sourceLine));
+    } else if (q.z > p.z + kGeomEps && !grown_.empty()) {
+      trimOverlap(grown_.back(), next, index);
     }
     grown_.push_back(next);
-    last_ = piece;
-    lastShift_ = shift;
-  }
-
-  // A convex corner: along the rectangle from one corner to the other, through the corner
-  // between them on the stock side when both axes change.
-  void closeGap(Point p, Point q, Point corner, const Segment& piece, Point shift) {
-    if (std::abs(q.z - p.z) > kGeomEps && std::abs(q.x - p.x) > kGeomEps) {
-      const Point outward = stockNormalAt(last_, last_.to) + stockNormalAt(piece, piece.from);
-      const Point viaA = corner + Point{shift.z, lastShift_.x};
-      const Point viaB = corner + Point{lastShift_.z, shift.x};
-      const Point via = dot(viaA - corner, outward) >= dot(viaB - corner, outward) ? viaA : viaB;
-      if (!grown_.empty()) grown_.push_back(lineBetween(p, via, piece.sourceLine));  // else: the face
-      grown_.push_back(lineBetween(via, q, piece.sourceLine));
-      return;
-    }
-    const bool alongTheFace = grown_.empty() && std::abs(q.z - p.z) <= kGeomEps;
-    if (!alongTheFace) grown_.push_back(lineBetween(p, q, piece.sourceLine));
   }
 
   // A concave corner: both pieces trimmed to their crossing nearest the corner.
@@ -205,9 +175,7 @@ class AxisAllowanceBuilder {
   }
 
   Point allowance_;
-  Segment last_;
-  Point lastShift_;
-  Point faceEnd_;
+  Point faceTop_;
   std::vector<Segment> grown_;
 };
 

@@ -1,14 +1,14 @@
 #pragma once
 // CYCLE95's axis-parallel finishing allowances FALZ / FALX (CYCLE95.PARAMS, CYCLE95.ROUGH notes,
 // interpretation): an allowance is left on the stock side of every element — FALZ on the faces
-// (elements whose stock lies towards +z or towards −z), FALX on the diameters (stock above). The
-// profile is the contour-parallel profile grown by the rectangle ±FALZ × ±FALX (a Minkowski sum):
-// each element moved by the rectangle's corner on its stock side (a face falling towards the axis
-// — a pocket's far wall — moves towards −z, never into the part), the gaps at convex corners
-// closed along the rectangle, the overlaps at concave corners trimmed to their intersection. The
-// part's face below the contour's first point is a wall facing +z: the profile begins FALZ in
-// front of it. In the stock-removal frame (siemens_roughing_frame.h: travel towards −z, the stock
-// above and on the right of travel).
+// (elements whose stock lies towards +z or towards −z), FALX above every element (the part lies
+// below its profile). The profile is the contour-parallel profile grown by the rectangle
+// ±FALZ × ±FALX (a Minkowski sum): each element moved by the rectangle's corner on its stock side (a
+// face falling towards the axis — a groove's near wall — moves towards −z, never into the part), the
+// gaps at convex corners closed along the rectangle's top edge, the overlaps at concave corners
+// trimmed to their crossing. The part's face below the contour's first point is a wall facing +z:
+// the profile begins at that point moved by (+FALZ, +FALX). In the stock-removal frame
+// (siemens_roughing_frame.h: travel towards −z, the stock above and on the right of travel).
 #include <vector>
 
 #include "reference/model/geometry.h"
