@@ -7,8 +7,11 @@
 // specs/rules.json). Expectations derived by hand in the comments.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
+#include "harness/reference_plan.h"
 #include "reference/model/alarms.h"
 #include "reference/siemens/siemens_axis_allowance.h"
 #include "reference/siemens/siemens_cycles.h"
@@ -406,6 +409,32 @@ TEST(SiemensAxisAllowance, TheGroovePassesKeepFalzOffBothWalls) {
   }
   EXPECT_TRUE(leftCorner);
   EXPECT_TRUE(rightCorner);
+}
+
+// Found by fuzz --cycles siemens --seed 1 once FALZ lay on each element's stock side: a dome rising to
+// its top (G3 X8.38 Z-1.49 CR=0.79 about (−1.49, 3.4), radius) and a line falling from there to
+// (−2.34, 3.79). FALZ 0.02 moves the dome by +0.02 (its top to (−1.47, 4.19)), the falling line by
+// −0.02 (its start to (−1.51, 4.19)); a flat at 4.19 joins them. Top 4.78 (the contour's end), bottom
+// 3.01 (its first point), MID 0.65: 3 steps of 0.59, levels 4.19, 3.6, 3.01. Pass 1 at 4.19 (a rounding
+// error below the dome's top) meets the dome at its top and goes on along the flat to where the
+// profile falls, z −1.51 — before, it stopped at −1.47, reading the dome's last sliver as an arc
+// starting at its top, and left the band −1.51…−1.47 above 4.19 standing (`complete`).
+TEST(SiemensAxisAllowance, ALevelAtADomesTopFollowsTheFlatFalzAddsToWhereTheProfileFalls) {
+  // Through the front end, as the fuzzer wrote it: the diameters halved and the G3's centre corrected
+  // leave the dome's end 1.8e-8 before its top and the level a rounding error below it.
+  const std::string program =
+      "T1 D1\nG0 X11.96 Z1.2\nCYCLE95(\"L1\", 0.65, 0.02, 0, 0, 0.16, 0.16, 0.06, 1, 0, 0, 0.15)\nM02\n";
+  const std::string contour =
+      "G1X6.02Z0\nG1X6.58Z0\nG1X6.8Z-0.18\nG1X6.8Z-0.7\nG3X8.38Z-1.49CR=0.79\nG1X7.58Z-2.34\n"
+      "G3X8.88Z-2.99CR=0.65\nG1X9.56Z-3.54\nRET\n";
+  PlanRequest request{program, "dome.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  double deepest = 0;
+  for (const Move& m : path.moves) {
+    if (m.phase == MovePhase::Pass && m.pass == 1 && m.kind == MoveKind::Feed) deepest = std::min(deepest, m.to.z);
+  }
+  EXPECT_NEAR(deepest, -1.51, 1e-6);
 }
 
 }  // namespace
