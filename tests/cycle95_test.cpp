@@ -42,9 +42,13 @@ SiemensCycleCall callAt(Point position, const SiemensContour& contour) {
   return c;
 }
 
-// FALZ 0.5, FALX 0.25: the profile is the step shaft shifted by (0.5, 0.25): (0.5, 0.25) → (0.5, 4.25)
-// → (−9.5, 4.25) → (−9.5, 9.25) → (−19.5, 9.25). Start: (0.5 + 1, 9.25 + 1) = (1.5, 10.25). Depth
-// 9.25 − 0.25 = 9, MID 4: 3 passes of 3, levels 6.25, 3.25, 0.25. The infeed is a G0 (CYCLE95.ROUGH).
+// FALZ 0.5, FALX 0.25, each on the stock side of its element (CYCLE95.PARAMS note): the face at z 0
+// (stock in front) moves to z 0.5 and up by 0.25 with the rectangle's corner on its stock side
+// (+0.5, +0.25) — the profile begins at the contour's first point so moved, (0.5, 0.25); the
+// diameters move up by 0.25, the shoulder at z −10 (stock in front) to −9.5; the convex corners close
+// along the 0.5 × 0.25 rectangle. The profile: (0.5, 0.25) → (0.5, 4.25) → (−9.5, 4.25) → (−9.5, 9.25)
+// → (−20, 9.25). Start: (0.5 + 1, 9.25 + 1) = (1.5, 10.25). Depth 9.25 − 0.25 = 9, MID 4: 3 passes of
+// 3, levels 6.25, 3.25, 0.25. The infeed is a G0 (CYCLE95.ROUGH).
 TEST(Cycle95Rough, AxisAllowancesAndTheG0Infeed) {
   const SiemensContour shaft = stepShaft();
   Cycle95Parameters p = params(1);
@@ -166,12 +170,15 @@ TEST(Cycle95Undercut, Lcyc95DoesNotRoughThePocket) {
 // L18 in radius: (0, 0); G03 to (−10, 10) CR=10: a quarter circle about (−10, 0); (−16, 10); (−16, 13.5);
 // (−17.5, 15); (−30.5, 15); (−30.5, 20); (−35.5, 20); G02 to (−50, 20) CR=20: the centre above the
 // chord, (−42.75, 20 + √(400 − 7.25²)) = (−42.75, 38.63968), 42.5°; (−58, 25); (−70, 25).
-// The profile: offset 0.2 (FAL), shifted 0.3 (FALZ) and 0.3 (FALX): top 25 + 0.2 + 0.3 = 25.5; the
-// lowest point the start moved 0.2 along +z and 0.3 up: (0.5, 0.3); largest z 0.5. Start
-// (0.5 + 1, 25.5 + 1) = (1.5, 26.5). Depth 25.2, MID 1.5: 16.8 → 17 passes of 1.482353.
-// The G02 is an undercut: the profile turns down at the offset flat x 20.5, under level 3
-// (25.5 − 3·1.482353 = 21.052941) and over level 4 (19.570588); its lowest point 38.63968 − 19.8 + 0.3 =
-// 19.13968; depth 21.052941 − 19.13968 = 1.913261, MID 1.5: 2 more passes at FF2.
+// The profile: offset 0.2 (FAL), then FALZ 0.3 / FALX 0.3 on each element's stock side: top 25 + 0.2 +
+// 0.3 = 25.5; the start (a quarter circle leaving the axis straight up, on the face) moved 0.2 along
+// +z, then FALZ in front of the face and FALX above its rising arc: the profile begins at (0.5, 0.3);
+// largest z 0.5. Start (0.5 + 1, 25.5 + 1) = (1.5, 26.5). Depth 25.2, MID 1.5: 16.8 → 17 passes of
+// 1.482353. The G02 is an undercut: the profile turns down at the offset flat x 20.5, under level 3
+// (25.5 − 3·1.482353 = 21.052941) and over level 4 (19.570588). Its offset circle (radius 19.8) is
+// moved by (−0.3, +0.3) where it falls and by (+0.3, +0.3) where it rises: the two halves cross below
+// the centre's z −42.75 at x 38.63968 + 0.3 − √(19.8² − 0.3²) = 38.93968 − 19.797727 = 19.141953, the
+// lowest point; depth 21.052941 − 19.141953 = 1.910988, MID 1.5: 2 more passes at FF2.
 SiemensContour l18() {
   SiemensContour c{"L18", "L18.spf", {}};
   c.segments.push_back(arc(SegmentKind::ArcCCW, {0, 0}, {-10, 10}, {-10, 0}, 2));
@@ -209,7 +216,7 @@ TEST(Cycle95Seed, L18SeventeenPassesThenTwoInTheUndercutThenFinishing) {
     k = m.pass;  // the infeed of an axis-parallel pass ends on its level
     EXPECT_NEAR(m.to.x, k == 17 ? 0.3 : 25.5 - k * 25.2 / 17, 1e-9) << "pass " << k;
   }
-  // The undercut's two levels: 21.052941 − 1.913261/2 = 20.096311 and its lowest point 19.13968 —
+  // The undercut's two levels: 21.052941 − 1.910988/2 = 20.097447 and its lowest point 19.141953 —
   // each pocket pass's lowest feed (it runs down the falling side to its level, across, and back up).
   std::vector<double> undercutLevels;
   for (const Move& m : out.moves) {
@@ -218,8 +225,8 @@ TEST(Cycle95Seed, L18SeventeenPassesThenTwoInTheUndercutThenFinishing) {
     undercutLevels[m.pass - 18] = std::min(undercutLevels[m.pass - 18], m.to.x);
   }
   ASSERT_EQ(undercutLevels.size(), 2u);
-  EXPECT_NEAR(undercutLevels[0], 20.096311, 1e-5);
-  EXPECT_NEAR(undercutLevels[1], 19.13968, 1e-5);
+  EXPECT_NEAR(undercutLevels[0], 20.097447, 1e-5);
+  EXPECT_NEAR(undercutLevels[1], 19.141953, 1e-5);
   // Complete machining: the finishing ends the cycle at the start.
   EXPECT_EQ(out.moves.back().phase, MovePhase::Return);
   EXPECT_TRUE(nearlyEqual(out.end, {1.5, 26.5}, 1e-9));

@@ -17,6 +17,7 @@
 #include "harness/rule_catalogue.h"
 #include "harness/spec_case.h"
 #include "oracles/judgement.h"
+#include "oracles/siemens/siemens_allowance_rectangle.h"
 
 namespace cyclecert {
 namespace {
@@ -508,6 +509,84 @@ TEST(SiemensOracles, ALevelBelowARaisedContourStartStopsAtThePartsFace) {
   }
   EXPECT_TRUE(grooveCutAtFf2);
   EXPECT_TRUE(judged(program, "sinumerik-802d", path, contour).empty());
+}
+
+// FALZ on each element's stock side (CYCLE95.ROUGH note): the groove L3 (above) with FALZ 0.5, FAL
+// and FALX 0, MID 3. The profile is the contour grown by 0.5 in z on the stock side of each wall: the
+// face z 0 → 0.5, the rising walls at −5, −15 and −20 → −4.5, −14.5, −19.5, the groove's near wall
+// at −10 (falling, its stock towards −z) → −10.5: (0.5, 10) → (−4.5, 10) → (−4.5, 16) → (−10.5, 16) →
+// (−10.5, 12) → (−14.5, 12) → (−14.5, 16) → (−19.5, 16) → (−19.5, 20). Start (0.5 + 1, 20 + 1); depth
+// 10 in 4 steps of 2.5 (17.5, 15, 12.5, 10); the pocket from 17.5 down to 12 in 2 steps (14.75, 12)
+// at FF2, down the near wall's allowance at −10.5. The old uniform shift by +0.5 put that wall at
+// −9.5: 0.5 into the collar (z −5 … −10 up to x 16).
+const char* kGrooveFalz = "G0 X50 Z2\nCYCLE95(\"L3\", 3, 0.5, 0, 0, 0.3, 0.15, 0.1, 1, 0, 0, 1)\nM02\n";
+
+PathBuilder grooveRoughingWithFalz(double nearWallZ) {
+  const double w = nearWallZ;
+  PathBuilder p({2, 25});
+  p.rapid(1.5, 21);
+  p.rapid(1.5, 17.5).feed(-19.5, 17.5, 0.3).feed(-19.5, 20, 0.3).rapid(-18.5, 21).rapid(1.5, 21);
+  p.rapid(1.5, 15).feed(-4.5, 15, 0.3).feed(-4.5, 16, 0.3).feed(w, 16, 0.3).rapid(w + 1, 17).rapid(1.5, 17);
+  p.rapid(1.5, 12.5).feed(-4.5, 12.5, 0.3).feed(-4.5, 15, 0.3).rapid(-3.5, 16).rapid(1.5, 16);
+  p.rapid(1.5, 10).feed(0.5, 10, 0.3).feed(-4.5, 10, 0.3).feed(-4.5, 12.5, 0.3).rapid(-3.5, 13.5);
+  p.rapid(-3.5, 21);
+  p.rapid(w, 21).feed(w, 14.75, 0.15).feed(-14.5, 14.75, 0.15).feed(-14.5, 16, 0.15).feed(-19.5, 16, 0.15);
+  p.feed(-19.5, 17.5, 0.15).rapid(-18.5, 18.5);
+  p.rapid(w, 18.5).feed(w, 12, 0.15).feed(-14.5, 12, 0.15).feed(-14.5, 14.75, 0.15).rapid(-13.5, 15.75);
+  p.rapid(-13.5, 21).rapid(1.5, 21);
+  return p;
+}
+
+TEST(SiemensOracles, FalzStaysOffAGroovesNearWall) {
+  const std::vector<Finding> f = judged(kGrooveFalz, "sinumerik-802d", grooveRoughingWithFalz(-10.5).path, kGroove, "L3");
+  EXPECT_TRUE(f.empty()) << findingsText(f);
+}
+
+TEST(SiemensOracles, FalzShiftedIntoAGroovesNearWallIsAGouge) {
+  const std::vector<Finding> all = judged(kGrooveFalz, "sinumerik-802d", grooveRoughingWithFalz(-9.5).path, kGroove, "L3");
+  EXPECT_FALSE(of(all, "no-gouge").empty()) << findingsText(all);
+}
+
+Segment lineFromTo(Point from, Point to) {
+  Segment s;
+  s.from = from;
+  s.to = to;
+  return s;
+}
+
+// The oracles' own growth by the rectangle, on a V (0, 6) → (−4, 2) → (−8, 6) with FALZ 0.5, FALX 0.5
+// (frame coordinates z, x): the face below (0, 6) moves to (0.5, 6.5), where the profile begins; the
+// falling side moves by (−0.5, +0.5) — through (−0.5, 6.5) and (−4.5, 2.5), x = z + 7 —, the rising
+// side by (+0.5, +0.5) — through (−3.5, 2.5) and (−7.5, 6.5), x = −z − 1; they cross at (−4, 3).
+TEST(SiemensAllowanceRectangle, AVsSidesMoveApartAndMeetAtTheBottom) {
+  const std::vector<Segment> grown =
+      grownByAllowanceRectangle({lineFromTo({0, 6}, {-4, 2}), lineFromTo({-4, 2}, {-8, 6})}, {0.5, 0.5});
+  const std::vector<Point> want{{0.5, 6.5}, {-0.5, 6.5}, {-4, 3}, {-7.5, 6.5}};
+  ASSERT_EQ(grown.size() + 1, want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    const Point got = i == 0 ? grown.front().from : grown[i - 1].to;
+    EXPECT_NEAR(got.z, want[i].z, 1e-9) << "corner " << i;
+    EXPECT_NEAR(got.x, want[i].x, 1e-9) << "corner " << i;
+  }
+}
+
+// A concave arc (a bowl) from (0, 5) to (−8, 5) about (−4, 8), radius 5, lowest point (−4, 3), with
+// FALZ 0.3: its falling half moves to the centre (−4.3, 8), its rising half to (−3.7, 8); the halves
+// cross at z −4, x = 8 − √(25 − 0.09) = 3.009008, the grown profile's lowest point.
+TEST(SiemensAllowanceRectangle, ABowlsHalvesCrossBelowItsCentre) {
+  Segment bowl = lineFromTo({0, 5}, {-8, 5});
+  bowl.kind = SegmentKind::ArcCW;
+  bowl.center = {-4, 8};
+  const std::vector<Segment> grown = grownByAllowanceRectangle({bowl}, {0.3, 0});
+  double lowest = 1e9;
+  Point at{};
+  for (const Segment& s : grown) {
+    for (const Point& p : {s.from, s.to}) {
+      if (p.x < lowest) lowest = p.x, at = p;
+    }
+  }
+  EXPECT_NEAR(lowest, 8 - std::sqrt(25 - 0.09), 1e-9);
+  EXPECT_NEAR(at.z, -4, 1e-9);
 }
 
 }  // namespace

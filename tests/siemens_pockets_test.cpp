@@ -1,13 +1,19 @@
 // SINUMERIK stock-removal pockets (issue 16's fuzz classes; the shared steps in
-// reference/siemens/siemens_roughing_steps.cpp): a wall falling down the part's face, the front
-// stretch — where the profile falls from its first point, up to where it rises back to the level
-// above that point — which the main passes reach along their levels, and a pocket inside a pocket
-// (LCYC95.ROUGH and CYCLE95.UNDERCUT notes in specs/rules.json). Expectations derived by hand in the
-// comments.
+// reference/siemens/siemens_roughing_steps.cpp): the axis-parallel allowances FALZ / FALX on each
+// element's stock side (reference/siemens/siemens_axis_allowance.*), a wall falling down the part's
+// face, the front stretch — where the profile falls from its first point, up to where it rises back
+// to the level above that point — which the main passes reach along their levels, and a pocket inside
+// a pocket (CYCLE95.PARAMS, CYCLE95.ROUGH, LCYC95.ROUGH and CYCLE95.UNDERCUT notes in
+// specs/rules.json). Expectations derived by hand in the comments.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
+#include "harness/reference_plan.h"
+#include "reference/model/alarms.h"
+#include "reference/siemens/siemens_axis_allowance.h"
 #include "reference/siemens/siemens_cycles.h"
 #include "tests/siemens_contours.h"
 
@@ -321,6 +327,114 @@ TEST(SiemensFrontPockets, APassMeetingTheFaceFollowsTheFrontStretchDown) {
       EXPECT_EQ(m.feed, 0.2);
     }
   }
+}
+
+std::vector<Point> cornersOf(const std::vector<Segment>& path) {
+  std::vector<Point> points{path.front().from};
+  for (const Segment& s : path) points.push_back(s.to);
+  return points;
+}
+
+void expectCorners(const std::vector<Segment>& path, const std::vector<Point>& want) {
+  const std::vector<Point> got = cornersOf(path);
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_NEAR(got[i].z, want[i].z, 1e-9) << "corner " << i;
+    EXPECT_NEAR(got[i].x, want[i].x, 1e-9) << "corner " << i;
+  }
+}
+
+// A groove from z −5 to −10, 3 deep, in a collar of radius 6 (the frame of longitudinal external).
+// FALZ 0.5 is left on the stock side of each wall: the wall at z −5 falls towards the axis with the
+// collar (part) at +z, so its allowance lies towards −z: z −5.5; the wall at −10 rises with the part
+// at −z: z −9.5; the face at z 0 (stock in front): z 0.5. The groove's bottom and the collar's top
+// face across z: no FALZ on them (FALX 0). The profile: (0.5, 0) → (0.5, 6) → (−5.5, 6) → (−5.5, 3)
+// → (−9.5, 3) → (−9.5, 6) → (−20, 6). (A uniform shift by +0.5 put the first wall at −4.5: inside
+// the collar.)
+TEST(SiemensAxisAllowance, FalzLiesOnTheStockSideOfEachWall) {
+  const std::vector<Segment> groove =
+      polyline("G", {{0, 0}, {0, 6}, {-5, 6}, {-5, 3}, {-10, 3}, {-10, 6}, {-20, 6}}).segments;
+  expectCorners(withAxisAllowances(groove, {0.5, 0}),
+                {{0.5, 0}, {0.5, 6}, {-5.5, 6}, {-5.5, 3}, {-9.5, 3}, {-9.5, 6}, {-20, 6}});
+}
+
+// FALX 0.25 as well: the face (and the contour's first point on it) moves by the rectangle's corner
+// on its stock side, (+0.5, +0.25); the diameters move up by 0.25; the convex corners are closed
+// along the rectangle (0.5 × 0.25), the concave ones trimmed: (0.5, 0.25) → (0.5, 6.25) →
+// (−5.5, 6.25) → (−5.5, 3.25) → (−9.5, 3.25) → (−9.5, 6.25) → (−20, 6.25).
+TEST(SiemensAxisAllowance, BothAllowancesGrowTheProfileByTheRectangle) {
+  const std::vector<Segment> groove =
+      polyline("G", {{0, 0}, {0, 6}, {-5, 6}, {-5, 3}, {-10, 3}, {-10, 6}, {-20, 6}}).segments;
+  expectCorners(withAxisAllowances(groove, {0.5, 0.25}),
+                {{0.5, 0.25}, {0.5, 6.25}, {-5.5, 6.25}, {-5.5, 3.25}, {-9.5, 3.25}, {-9.5, 6.25}, {-20, 6.25}});
+}
+
+// A falling slope (a cone narrowing towards −z, its stock above and towards −z) moves by
+// (−FALZ, +FALX); the rising slope after it by (+FALZ, +FALX). The V (0, 6) → (−4, 2) → (−8, 6)
+// with FALZ 0.5, FALX 0.5: the falling line through (−0.5, 6.5) and (−4.5, 2.5), the rising one
+// through (−3.5, 2.5) and (−7.5, 6.5): x = z + 7 and x = −z − 1 cross at (−4, 3). Before the falling line, the face (stock towards +z) at z 0.5
+// from x 6 up: the profile begins at the rectangle's corner (0.5, 6.5) and runs along x 6.5 to the
+// falling line's shifted start (−0.5, 6.5).
+TEST(SiemensAxisAllowance, ASlopeFallingTowardsTheAxisMovesTowardsMinusZ) {
+  const std::vector<Segment> v = polyline("V", {{0, 6}, {-4, 2}, {-8, 6}}).segments;
+  expectCorners(withAxisAllowances(v, {0.5, 0.5}), {{0.5, 6.5}, {-0.5, 6.5}, {-4, 3}, {-7.5, 6.5}});
+}
+
+// Planned (CYCLE95 VARI 1, MID 2.5, FALZ 0.5): every roughing feed below the collar's top (x < 6)
+// between the groove's walls stays between z −5.5 and −9.5 — the walls' allowances — and the
+// groove's corners (−5.5, 3) and (−9.5, 3) are reached.
+TEST(SiemensAxisAllowance, TheGroovePassesKeepFalzOffBothWalls) {
+  const SiemensContour groove = polyline("G", {{0, 0}, {0, 6}, {-5, 6}, {-5, 3}, {-10, 3}, {-10, 6}, {-20, 6}});
+  Cycle95Parameters p;
+  p.contourName = "G";
+  p.infeed = 2.5;
+  p.allowanceZ = 0.5;
+  p.roughingFeed = 0.2;
+  p.undercutFeed = 0.05;
+  p.finishingFeed = 0.1;
+  p.type = machiningTypeOf(1).value();
+  p.retract = 1;
+  SiemensCycleCall call;
+  call.line = 4;
+  call.position = {5, 15};
+  call.contour = &groove;
+  const auto out = planCycle95(call, p);
+  bool leftCorner = false, rightCorner = false;
+  for (const Move& m : out.moves) {
+    if (m.kind != MoveKind::Feed || m.to.x >= 6 - 1e-9 || m.to.z > -1) continue;
+    EXPECT_LE(m.to.z, -5.5 + 1e-9) << m.to.z << " " << m.to.x;
+    EXPECT_GE(m.to.z, -9.5 - 1e-9) << m.to.z << " " << m.to.x;
+    leftCorner = leftCorner || nearlyEqual(m.to, {-5.5, 3}, 1e-9);
+    rightCorner = rightCorner || nearlyEqual(m.to, {-9.5, 3}, 1e-9);
+  }
+  EXPECT_TRUE(leftCorner);
+  EXPECT_TRUE(rightCorner);
+}
+
+// Found by fuzz --cycles siemens --seed 1 once FALZ lay on each element's stock side: a dome rising to
+// its top (G3 X8.38 Z-1.49 CR=0.79 about (−1.49, 3.4), radius) and a line falling from there to
+// (−2.34, 3.79). FALZ 0.02 moves the dome by +0.02 (its top to (−1.47, 4.19)), the falling line by
+// −0.02 (its start to (−1.51, 4.19)); a flat at 4.19 joins them. Top 4.78 (the contour's end), bottom
+// 3.01 (its first point), MID 0.65: 3 steps of 0.59, levels 4.19, 3.6, 3.01. Pass 1 at 4.19 (a rounding
+// error below the dome's top) meets the dome at its top and goes on along the flat to where the
+// profile falls, z −1.51 — before, it stopped at −1.47, reading the dome's last sliver as an arc
+// starting at its top, and left the band −1.51…−1.47 above 4.19 standing (`complete`).
+TEST(SiemensAxisAllowance, ALevelAtADomesTopFollowsTheFlatFalzAddsToWhereTheProfileFalls) {
+  // Through the front end, as the fuzzer wrote it: the diameters halved and the G3's centre corrected
+  // leave the dome's end 1.8e-8 before its top and the level a rounding error below it.
+  const std::string program =
+      "T1 D1\nG0 X11.96 Z1.2\nCYCLE95(\"L1\", 0.65, 0.02, 0, 0, 0.16, 0.16, 0.06, 1, 0, 0, 0.15)\nM02\n";
+  const std::string contour =
+      "G1X6.02Z0\nG1X6.58Z0\nG1X6.8Z-0.18\nG1X6.8Z-0.7\nG3X8.38Z-1.49CR=0.79\nG1X7.58Z-2.34\n"
+      "G3X8.88Z-2.99CR=0.65\nG1X9.56Z-3.54\nRET\n";
+  PlanRequest request{program, "dome.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  double deepest = 0;
+  for (const Move& m : path.moves) {
+    if (m.phase == MovePhase::Pass && m.pass == 1 && m.kind == MoveKind::Feed) deepest = std::min(deepest, m.to.z);
+  }
+  EXPECT_NEAR(deepest, -1.51, 1e-6);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "oracles/siemens/siemens_allowance_rectangle.h"
 #include "reference/model/alarms.h"
 #include "reference/model/offset.h"
 
@@ -18,8 +19,9 @@ constexpr const char* kContourAlarm = "10931";  // LCYC95.ALARMS (interpretation
 
 int reflections(const SiemensFrame& f) { return (f.transposed ? 1 : 0) + (f.mirrored ? 1 : 0); }
 
-// LCYC95.ROUGH note: the allowance R106 / FAL is contour-parallel on the stock side (offset.h), then
-// FALZ / FALX shift the profile towards the stock (+z, +x in the frame).
+// LCYC95.ROUGH note: the allowance R106 / FAL is contour-parallel on the stock side (offset.h); then
+// FALZ / FALX on each element's stock side: the profile grown by the rectangle ±FALZ × ±FALX
+// (CYCLE95.ROUGH note; siemens_allowance_rectangle.h).
 std::vector<Segment> roughingProfileOf(const SiemensCycleSpec& c, const std::vector<Segment>& frameContour) {
   std::vector<Segment> profile;
   try {
@@ -30,9 +32,14 @@ std::vector<Segment> roughingProfileOf(const SiemensCycleSpec& c, const std::vec
                          std::to_string(e.sourceLine));
   }
   const Point plane{std::abs(c.allowanceZ), std::abs(c.allowanceX)};
-  const Point shift = c.frame.transposed ? transposed(plane) : plane;
-  for (Segment& s : profile) s = s.shifted(shift);
-  return profile;
+  const Point rectangle = c.frame.transposed ? transposed(plane) : plane;
+  try {
+    return grownByAllowanceRectangle(profile, rectangle);
+  } catch (const OffsetError& e) {
+    throw CycleAlarm(kContourAlarm, c.line,
+                     "the axis allowances FALZ/FALX do not fit contour " + c.contourName + " at its line " +
+                         std::to_string(e.sourceLine));
+  }
 }
 
 // LCYC95.FINISH note: the contour itself, or with a nose radius the control point's path on the

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "reference/model/offset.h"
+#include "reference/siemens/siemens_axis_allowance.h"
 
 namespace cyclecert {
 
@@ -68,10 +69,17 @@ std::vector<Segment> roughingProfile(const std::vector<Segment>& frameContour, c
                          " does not fit the contour at its line " + std::to_string(e.sourceLine) +
                          " (an arc vanishes or two offset pieces do not meet); use a smaller allowance");
   }
-  // Towards the stock: +z (the entry side) and +x (above) in the frame, whatever the plane's signs.
-  const Point planeShift{allowance.longitudinal, allowance.transverse};
-  const Point shift = frame.transposed ? Point{planeShift.x, planeShift.z} : planeShift;
-  for (Segment& s : profile) s = s.shifted(shift);
+  // FALZ / FALX in the frame's axes (face machining exchanges them), on each element's stock side.
+  const Point planeAllowance{allowance.longitudinal, allowance.transverse};
+  const Point axisAllowance = frame.transposed ? Point{planeAllowance.x, planeAllowance.z} : planeAllowance;
+  try {
+    profile = withAxisAllowances(profile, axisAllowance);
+  } catch (const OffsetError& e) {
+    throw CycleAlarm(siemens_alarm::kContour, line,
+                     "the axis allowances FALZ " + std::to_string(allowance.longitudinal) + " and FALX " +
+                         std::to_string(allowance.transverse) + " do not fit the contour at its line " +
+                         std::to_string(e.sourceLine) + " (a groove narrower than the allowances); use smaller ones");
+  }
   return profile;
 }
 

@@ -24,8 +24,12 @@ std::optional<Point> arcTopInside(const Segment& s) {
 
 // An arc that starts at its top (a dome split at its apex, a rounding leaving a flat downwards): its
 // start tangent runs along the cut axis, and from there on it falls (CYCLE95.UNDERCUT: "the top of
-// an arc").
-bool startsAtItsTop(const Segment& s) { return s.isArc() && isTopOfCircle(s, s.from); }
+// an arc"). Not a sliver of an arc rising to its top that starts within the top's tolerance of it
+// (a level a rounding error below a dome's top): it ends no lower, and the profile after it — a
+// flat where FALZ joins the dome to a falling side — decides whether it turns down.
+bool startsAtItsTop(const Segment& s) {
+  return s.isArc() && isTopOfCircle(s, s.from) && s.to.x < s.from.x - kGeomEps;
+}
 
 // The lowest point of a segment (an arc's bottom when inside it).
 Point lowestPointOf(const Segment& s) {
