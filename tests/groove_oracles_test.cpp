@@ -204,6 +204,24 @@ TEST(GrooveOracles, APeckDeeperThanDeltaKIsFound) {
   EXPECT_NE(std::find(f.front().rules.begin(), f.front().rules.end(), "G74_1.STEP3"), f.front().rules.end());
 }
 
+// A retract e longer than Δk (R2, Q1.5) rises above the cycle's start after the first peck: it is
+// still STEP4, and the next feed (Δk + e = 3.5) goes Δk deeper than reached (STEP5). Per cycle at x:
+// feed to z −1.5, rapid back 2 to z 0.5 (in the air before the face), feed 3.5 to −3, rapid to −1,
+// feed to Bmn −4 (−4.5 would pass it), rapid back to 0. Before, the rapid to 0.5 was read as the
+// cycle's end (STEP6) and the next feed as a new cycle's 3.5 mm first peck (fuzz --cycles g74.1).
+TEST(GrooveOracles, ARetractLongerThanThePeckIsStillARetract) {
+  const std::string program = "G00 X50 Z5 F0.1;\nG74.1 X40 Z0 P2 Q1.5 H-4 D-8;\nG74.1 R2 I2;\n";
+  PathBuilder b;
+  b.rapid(0, 18);
+  for (double x : {18.0, 17.0, 16.0}) {
+    if (x != 18.0) b.rapid(0, x);
+    b.feed(-1.5, x).rapid(0.5, x).feed(-3, x).rapid(-1, x).feed(-4, x).rapid(0, x);
+  }
+  b.rapid(0, 18).feed(-4, 18).feed(-4, 16).feed(0, 16).rapid(0, 18).rapid(5, 25);
+  const std::vector<Finding> f = judged(program, b.path);
+  EXPECT_TRUE(f.empty()) << text(f);
+}
+
 TEST(GrooveOracles, ARetractTowardsTheBottomIsFound) {
   PathBuilder b;
   b.rapid(0, 18).feed(-1.5, 18).rapid(-2, 18).feed(-3, 18).rapid(-2.5, 18).feed(-4, 18).rapid(0, 18);

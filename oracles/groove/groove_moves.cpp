@@ -29,12 +29,16 @@ std::size_t profileStartOf(const GrooveMoves& m) {
 
 // STEP3…STEP6: before the profile passes, the pecks grouped by axial cycle — a cycle ends where the
 // tool moves along u, or rapids back to the cycle's start or above it (STEP6: the next cycle may
-// start a step shorter than the tolerance further, at Amf).
+// start a step shorter than the tolerance further, at Amf) unless a feed towards the floor follows
+// in place: a retract e longer than the depth reached (STEP4, e > Δk) also rises above the start.
 std::vector<AxialCycle> axialCyclesOf(const GrooveMoves& m) {
   std::vector<AxialCycle> cycles;
   bool open = false;
+  const auto peckFollows = [&](std::size_t i) {
+    return i + 1 < m.profileStart && m.isFeedTowardsTheFloor(i + 1) && std::abs(m.du(i + 1)) <= m.tol;
+  };
   for (std::size_t i = m.range.begin; i < m.profileStart; ++i) {
-    const bool backAtTheStart = open && m.isRapid(i) && m.to(i).z <= cycles.back().top + m.tol;
+    const bool backAtTheStart = open && m.isRapid(i) && m.to(i).z <= cycles.back().top + m.tol && !peckFollows(i);
     if (std::abs(m.du(i)) > m.tol || backAtTheStart) {
       open = false;
       continue;
