@@ -159,10 +159,18 @@ void fitTheGroove(G74_1FuzzCase& g) {
 
 // A case of a few thousand moves at most: about 25 axial cycles a layer (Δi/2 at least a 25th of
 // the mouth's width), 10 pecks a cycle (Δk at least a tenth of the depth), 5 layers (Δv).
+// A grooving tool steps across by at most its width (Δi/2 ≤ r): wider steps leave ribs between the
+// axial cycles, which the seed's cycle does not cut and its later rapids cross (rapids-in-air flags
+// them: a program error, not what the generator is for) — the tool widened to the step where the
+// floor leaves room, else the step narrowed to the tool.
 void fitTheWork(G74_1FuzzCase& g) {
   const int h = std::abs(g.depth);
   g.radialStep = std::max(g.radialStep, static_cast<int>(std::ceil(2 * mouthFarEnd(g) / 25)));
   g.peck = std::max(g.peck, (h + 9) / 10);
+  if (g.toolWidth > 0 && g.radialStep > 2 * g.toolWidth) {
+    g.toolWidth = std::min((g.radialStep + 1) / 2, std::max(g.toolWidth, std::abs(g.width) / 2 / 5));
+    g.radialStep = std::min(g.radialStep, 2 * g.toolWidth);
+  }
 }
 
 // S and the tool's place before the cycle: every radius at least 1 mm (x = X/2 + sd·u over the
