@@ -138,6 +138,37 @@ TEST(G74_1Groove, TheBladesPathShiftsTheStartSide) {
   EXPECT_THROW(bladePath(p, 2.5), GrooveDoesNotFit);  // wider than the floor
 }
 
+TEST(G74_1Groove, WhereTheFarMouthRoundFallsTheBladesStartSideTakesOver) {
+  // I23: h 4, floor 2 wide, flanks 90°, slope ∠p 45° (the mouth w = u), r2 a round of 0.5. M2 = (u 2,
+  // w 2); the flank runs up (direction w −1), the mouth on along (1, 1)/√2: a turn of 135°, so the
+  // round touches both 0.5·tan 67.5° = 1.207107 from M2: on the flank at (2, 3.207107), on the mouth
+  // at (2.853553, 2.853553), centre (2.5, 3.207107). Its highest point (least w) is below the
+  // centre, (2.5, 2.707107); beyond it the round falls again. A 0.5 blade whose far corner rode on
+  // past it would cut 0.146 under the round at u 2.5; instead: the round to its top, level by r to
+  // (3, 2.707107), the rest of the round shifted by r to (3.353553, 2.853553) about (3, 3.207107).
+  GrooveShape g = shape(4, 2, 90, 90, 45);
+  g.corners[kCornerR2] = {0.5, GrooveCornerKind::Round};
+  const GrooveProfile p = buildGrooveProfile(g, 0, 0);
+  const std::vector<Segment> path = bladePath(p, 0.5);
+  ASSERT_GE(path.size(), 3u);
+  const Segment& level = path[path.size() - 2];
+  const Segment& rest = path.back();
+  const Segment& up = path[path.size() - 3];
+  EXPECT_TRUE(up.isArc());
+  expectPoint(up.from, 2, 3.207107);
+  expectPoint(up.to, 2.5, 2.707107);
+  EXPECT_FALSE(level.isArc());
+  expectPoint(level.to, 3, 2.707107);
+  EXPECT_TRUE(rest.isArc());
+  expectPoint(rest.to, 3.353553, 2.853553);
+  expectPoint(rest.center, 3, 3.207107);
+  // Without a slope the round ends level on the mouth: the far corner rides it to its end.
+  GrooveShape flat = shape(4, 2);
+  flat.corners[kCornerR2] = {0.5, GrooveCornerKind::Round};
+  const std::vector<Segment> flatPath = bladePath(buildGrooveProfile(flat, 0, 0), 0.5);
+  expectPoint(flatPath.back().to, 2.5, 0);
+}
+
 TEST(G74_1Groove, TheFrameMapsTheFourDirectionsAndMirrorsArcs) {
   // S (z 0, x 20). Local (u 1, w 3): h<0,d<0 → (−3, 19); h>0,d<0 → (3, 19); h<0,d>0 → (−3, 21);
   // h>0,d>0 → (3, 21). An arc keeps its direction when h·d > 0, turns when h·d < 0.

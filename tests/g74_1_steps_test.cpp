@@ -310,3 +310,34 @@ TEST(G74_1Record, TheRoughProfileIsTheGrooveMovedInByTheAllowances) {
 
 }  // namespace
 }  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+// I22: the second layer runs over the cycles of the first that reached its bottom. S = (0, 20), h −4,
+// d −8 (floor 4 wide), ∠a 45 (near flank u = w), ∠b 90 (far flank u = 8), Δi/2 0.75, Δk 5 (one
+// peck), V2 (layers 0…2, 2…4), a 1 mm blade. Layer 1 (slice at w 0: u 0…8): cycles u 1, 1.75, 2.5,
+// 3.25, … 7.75, 8; under the blade's near corner u − 1 the flank allows w = u − 1: 0, 0.75, 1.5 (short
+// of the bottom 2), then 2 from u 3.25 on. Layer 2 starts at u 3.25 (x 16.75), not at its slice's
+// near boundary + r = 3 (x 17): a plunge there would cross the flank's staircase [2, 2.25] × [1.5, 2]
+// that layer 1 left (rapids-in-air, found by fuzz --cycles g74.1). The far flank is straight down:
+// both layers end at u 8 (x 12).
+TEST(G74_1Layers, ALayerRunsOverTheCyclesOfTheLayerAboveThatReachedItsBottom) {
+  const Toolpath t = planGsk("G00 X50 Z5 F0.1;\nG74.1 X40 Z0 P1.5 Q5 H-4 D-8 A45;\nG74.1 R0.5 V2 I1;\n");
+  ASSERT_FALSE(t.alarm);
+  std::vector<Point> layerStarts, layerEnds;
+  for (std::size_t i = 0; i < t.moves.size(); ++i) {
+    const Move& m = t.moves[i];
+    if (m.rules.front() == "G74_1.STEP2") layerStarts.push_back(m.to);
+    if (m.rules.front() == "G74_1.STEP8") layerEnds.push_back(t.from(i));
+  }
+  ASSERT_FALSE(layerStarts.empty());
+  EXPECT_NEAR(layerStarts.back().z, -2, 1e-9);
+  EXPECT_NEAR(layerStarts.back().x, 16.75, 1e-9);
+  ASSERT_FALSE(layerEnds.empty());
+  EXPECT_NEAR(layerEnds.front().x, 12, 1e-9);  // layer 1's Amf: u 8
+  EXPECT_NEAR(layerEnds.back().x, 12, 1e-9);   // layer 2's
+}
+
+}  // namespace
+}  // namespace cyclecert

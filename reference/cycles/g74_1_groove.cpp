@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "reference/model/number_text.h"
@@ -196,6 +197,35 @@ double deepestUnderTheBlade(const GrooveProfile& p, double u, double toolWidth) 
   return std::min(depthAt(p, u - toolWidth), depthAt(p, u));
 }
 
+namespace {
+
+// The piece of element `s` from `a` to `b` (points on it, in its direction).
+Segment trimmedTo(Segment s, Point a, Point b) {
+  s.from = a;
+  s.to = b;
+  return s;
+}
+
+// The highest point (least w) of a far-side element of the chain, where the chain starts to fall
+// again towards the mouth beyond it (a round r2 or chamfer r2 meeting a mouth that slopes deeper,
+// ∠p > 0): for a line its start when it falls; for an arc the point below its centre when the arc
+// passes it. Nothing when the element rises (w falling) all the way.
+std::optional<Point> whereItStartsToFall(const Segment& s) {
+  if (!s.isArc()) {
+    if (s.to.z > s.from.z + kGeomEps) return s.from;
+    return std::nullopt;
+  }
+  const Point top{s.center.z - s.radius(), s.center.x};
+  // The point below the centre (least w) lies at the angle atan2(0, −1) = π around it.
+  const bool between = distance(top, s.from) > kGeomEps && distance(top, s.to) > kGeomEps &&
+                       offsetAlongArc(s, std::numbers::pi).has_value();
+  if (between) return top;
+  if (s.to.z > s.from.z + kGeomEps) return s.from;
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<Segment> bladePath(const GrooveProfile& p, double toolWidth) {
   if (p.floorTo - p.floorFrom < toolWidth - kGeomEps) {
     throw GrooveDoesNotFit("the tool width I " + mm(toolWidth) + " is wider than the groove's floor (" +
@@ -209,6 +239,12 @@ std::vector<Segment> bladePath(const GrooveProfile& p, double toolWidth) {
       path.push_back(s.shifted(shift));
     } else if (p.parts[i] == GroovePart::Floor) {
       if (distance(s.from + shift, s.to) > kGeomEps) path.push_back(line(s.from + shift, s.to));
+    } else if (const auto top = p.parts[i] == GroovePart::CornerR2 && toolWidth > 0 ? whereItStartsToFall(s) : std::nullopt) {
+      // I23: where the far mouth corner falls again towards a sloping mouth, the blade's start-side
+      // corner takes over: level across the blade's width at the top, then the rest shifted by r.
+      if (distance(s.from, *top) > kGeomEps) path.push_back(trimmedTo(s, s.from, *top));
+      path.push_back(line(*top, *top + shift));
+      if (distance(*top, s.to) > kGeomEps) path.push_back(trimmedTo(s, *top, s.to).shifted(shift));
     } else {
       path.push_back(s);
     }

@@ -182,7 +182,8 @@ class G74_1Planner {
       layer.top = c_.layerDepth ? m * *c_.layerDepth : 0.0;
       layer.bottom = c_.layerDepth ? std::min((m + 1) * *c_.layerDepth, depth) : depth;
       const GrooveSlice slice = sliceAt(rough_, layer.top);
-      const double first = slice.nearU + c_.toolWidth, last = std::max(slice.farU, first);
+      const double first = out.empty() ? slice.nearU + c_.toolWidth : nextLayerStart(out.back(), slice),
+                   last = std::max(out.empty() ? slice.farU : nextLayerEnd(out.back(), slice), first);
       const double steps = std::ceil((last - first) / c_.radialStep - kGeomEps);
       const double pecks = std::ceil((layer.bottom - layer.top) / c_.peck - kGeomEps);
       moves += (steps + 1) * (2 * pecks + 1);
@@ -192,6 +193,30 @@ class G74_1Planner {
       out.push_back(std::move(layer));
     }
     return out;
+  }
+
+  // I22: a layer below the first runs its axial cycles only over the cycles of the layer above that
+  // reached that layer's bottom: it starts (Cmf, STEP8; Am1, STEP2) at the first of them and ends
+  // (Amf, STEP7) at the last — so the plunge to it and the rapids across it run where the layer above
+  // cut out, not through the staircase that layer left along a slanted flank; at the slice's
+  // boundaries where they lie further in, or when no cycle reached the bottom.
+  double nextLayerStart(const GrooveLayer& above, const GrooveSlice& slice) const {
+    const double atTheSlice = slice.nearU + c_.toolWidth;
+    for (const AxialCycle& cycle : above.cycles) {
+      if (reachedTheBottom(above, cycle)) return std::max(cycle.u, atTheSlice);
+    }
+    return atTheSlice;
+  }
+
+  double nextLayerEnd(const GrooveLayer& above, const GrooveSlice& slice) const {
+    for (auto cycle = above.cycles.rbegin(); cycle != above.cycles.rend(); ++cycle) {
+      if (reachedTheBottom(above, *cycle)) return std::min(cycle->u, slice.farU);
+    }
+    return slice.farU;
+  }
+
+  static bool reachedTheBottom(const GrooveLayer& layer, const AxialCycle& cycle) {
+    return cycle.end >= layer.bottom - kGeomEps;
   }
 
   AxialCycle axialCycleAt(const GrooveLayer& layer, double u) const {
