@@ -17,6 +17,7 @@
 #include "harness/reference_plan.h"
 #include "harness/spec_case.h"
 #include "tests/cli_fixture.h"
+#include "tests/fuzz_fixture.h"
 
 namespace cyclecert {
 namespace {
@@ -26,17 +27,9 @@ namespace fs = std::filesystem;
 constexpr std::uint64_t kSeed = 737373;
 const FuzzCycles kG73 = {FuzzCycle::G73};
 
-std::vector<FuzzCase> g73Sample(long n) {
-  std::vector<FuzzCase> out;
-  for (long i = 0; i < n; ++i) out.push_back(generateFuzzCase(fuzzCaseSeed(kSeed, i), kDefaultCycleFormats, kG73));
-  return out;
-}
+std::vector<FuzzCase> g73Sample(long n) { return fuzzSample(kSeed, n, kG73); }
 
-std::string scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("cyclecert-fuzz-g73-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  return p.string();
-}
+std::string scratch(const std::string& name) { return scratchFolder("g73", name); }
 
 TEST(FuzzCycles, NamesParse) {
   EXPECT_EQ(parseFuzzCycles("g73"), kG73);

@@ -19,6 +19,7 @@
 #include "harness/spec_case.h"
 #include "reference/model/alarms.h"
 #include "tests/cli_fixture.h"
+#include "tests/fuzz_fixture.h"
 
 namespace cyclecert {
 namespace {
@@ -28,17 +29,9 @@ namespace fs = std::filesystem;
 constexpr std::uint64_t kSeed = 741741;
 const FuzzCycles kG74_1 = {FuzzCycle::G74_1};
 
-std::vector<FuzzCase> grooveSample(long n) {
-  std::vector<FuzzCase> out;
-  for (long i = 0; i < n; ++i) out.push_back(generateFuzzCase(fuzzCaseSeed(kSeed, i), kDefaultCycleFormats, kG74_1));
-  return out;
-}
+std::vector<FuzzCase> grooveSample(long n) { return fuzzSample(kSeed, n, kG74_1); }
 
-std::string scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("cyclecert-fuzz-g74_1-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  return p.string();
-}
+std::string scratch(const std::string& name) { return scratchFolder("g74_1", name); }
 
 bool cites(const Move& m, const char* rule) { return std::find(m.rules.begin(), m.rules.end(), rule) != m.rules.end(); }
 
