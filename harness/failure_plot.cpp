@@ -1,12 +1,9 @@
 #include "harness/failure_plot.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "harness/judging.h"
 #include "harness/reference_plan.h"
-#include "reference/cycles/cycles.h"
-#include "reference/gcode/parser.h"
 #include "reference/model/number_text.h"
 
 namespace cyclecert {
@@ -51,8 +48,9 @@ std::vector<std::size_t> witnessedMoves(const std::vector<Finding>& findings, co
 }
 
 // The swept blade at each witnessed move made with a grooving tool, drawn as one more highlight each.
-void addSweptBlades(PlotInput& plot, const SpecCase& c, const Toolpath& path, const std::vector<std::size_t>& moves) {
-  const auto tools = groovingToolsOf(c.program);
+void addSweptBlades(PlotInput& plot, const ProgramSpec& program, const Toolpath& path,
+                    const std::vector<std::size_t>& moves) {
+  const auto tools = groovingToolsOf(program);
   if (tools.empty()) return;
   for (const std::size_t i : moves) {
     if (i >= path.moves.size()) continue;
@@ -67,27 +65,10 @@ void addSweptBlades(PlotInput& plot, const SpecCase& c, const Toolpath& path, co
 
 }  // namespace
 
-std::vector<std::pair<int, GroovingTool>> groovingToolsOf(const std::string& program) {
+std::vector<std::pair<int, GroovingTool>> groovingToolsOf(const ProgramSpec& program) {
   std::vector<std::pair<int, GroovingTool>> tools;
-  if (program.find("74.1") == std::string::npos) return tools;
-  Program p;
-  try {
-    p = parseProgram(program, "plot");
-  } catch (const std::exception&) {
-    return tools;  // not a FANUC-style program: no G74.1 to draw
-  }
-  double scale = 1;  // G20: inch words (the reference reads G74.1's I in the program's unit)
-  int widthSign = -1;
-  for (const Block& b : p.blocks) {
-    if (b.hasG(200)) scale = 25.4;
-    if (b.hasG(210)) scale = 1;
-    if (!b.hasG(741)) continue;
-    if (isG74_1GrooveBlock(b)) {
-      if (const Word* d = b.find('D')) widthSign = d->value > 0 ? 1 : -1;
-      continue;
-    }
-    const Word* i = b.find('I');
-    if (i && std::abs(i->value) > 0) tools.push_back({b.line, GroovingTool{std::abs(i->value) * scale, widthSign}});
+  for (const GrooveSpec& g : program.grooves) {
+    if (g.toolWidth > 0) tools.push_back({g.line, GroovingTool{g.toolWidth, g.widthSign}});
   }
   return tools;
 }
@@ -126,12 +107,14 @@ std::optional<PlotInput> failurePlot(const SpecCase& c, const EngineResult& r, c
   try {
     JudgeRequest request = judgeRequestFor(c);
     request.settings.epsilon = tolerance;
-    plot = judgePlot(judgeInputFor(request, r.path), findings, title);
+    const JudgeInput input = judgeInputFor(request, r.path);
+    plot = judgePlot(input, findings, title);
+    addSweptBlades(plot, input.program, r.path, witnessedMoves(findings, other));
   } catch (const std::exception&) {
-    // A program the oracles cannot read still has a path to show, on the cycles the engine recorded.
+    // A program the oracles cannot read still has a path to show, on the cycles the engine recorded
+    // (and no grooving tool they read to draw).
     plot = plotInputFor(r.path, title);
   }
-  addSweptBlades(plot, c, r.path, witnessedMoves(findings, other));
   if (other) addComparison(plot, engineName, *other);
   return plot;
 }

@@ -32,10 +32,10 @@ struct GroovingTool {
   int widthSign = -1;
 };
 
-// The grooving tool of each G74.1 cycle of `program`, by the line of its second block (the line its
-// cycle record carries); a cycle without I (a pointed tool) is left out. Empty for a program the
-// FANUC reader cannot read (a SINUMERIK one) or without G74.1.
-std::vector<std::pair<int, GroovingTool>> groovingToolsOf(const std::string& program);
+// The grooving tool of each G74.1 cycle of the oracles' reading of a program (GrooveSpec), by the
+// line of its second block (the line its cycle record carries); a cycle without I (a pointed tool)
+// is left out. Empty for a program without G74.1.
+std::vector<std::pair<int, GroovingTool>> groovingToolsOf(const ProgramSpec& program);
 
 // The region a grooving tool's end face sweeps along move i of `path`: the move and the move moved
 // by the blade's width, joined (an arc followed along its length).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "harness/failure_plot.h"
+#include "harness/judging.h"
 #include "harness/reference_plan.h"
 #include "harness/spec_case.h"
 
@@ -32,18 +33,34 @@ void expectRegion(const std::vector<Point>& got, const std::vector<Point>& want)
   }
 }
 
+// The oracles' reading of a gsk program (what failurePlot reads the grooving tools from).
+ProgramSpec programSpecOf(const std::string& program) {
+  return judgeInputFor(judgeRequestFor(grooveCase(program)), Toolpath{}).program;
+}
+
 TEST(G74_1FailurePlot, TheGroovingToolComesFromTheProgram) {
-  const auto tools = groovingToolsOf(kO0008WithTool);
+  const auto tools = groovingToolsOf(programSpecOf(kO0008WithTool));
   ASSERT_EQ(tools.size(), 1u);
   EXPECT_EQ(tools.front().first, 3);  // the second block's line, which the cycle record carries
   EXPECT_DOUBLE_EQ(tools.front().second.width, 4);
   EXPECT_EQ(tools.front().second.widthSign, -1);  // D-20
-  EXPECT_EQ(groovingToolsOf("G00 X36 Z1;\nG74.1 X36 Z0 P2 Q3 H4 D4;\nG74.1 R0.5 I-1.5;\n").front().second.widthSign, 1);
-  EXPECT_DOUBLE_EQ(groovingToolsOf("G00 X36 Z1;\nG74.1 X36 Z0 P2 Q3 H4 D4;\nG74.1 R0.5 I-1.5;\n").front().second.width, 1.5);
-  EXPECT_TRUE(groovingToolsOf("G00 X70 Z10;\nG74.1 X66 Z0 P30000 Q50000 H-10 D-20;\nG74.1 R0.5;\n").empty())
+  const auto plusD = groovingToolsOf(programSpecOf("G00 X36 Z1;\nG74.1 X36 Z0 P2 Q3 H4 D4;\nG74.1 R0.5 I-1.5;\n"));
+  ASSERT_EQ(plusD.size(), 1u);
+  EXPECT_EQ(plusD.front().second.widthSign, 1);
+  EXPECT_DOUBLE_EQ(plusD.front().second.width, 1.5);
+  EXPECT_TRUE(groovingToolsOf(programSpecOf("G00 X70 Z10;\nG74.1 X66 Z0 P30000 Q50000 H-10 D-20;\nG74.1 R0.5;\n")).empty())
       << "a pointed tool (no I) has no blade";
-  EXPECT_TRUE(groovingToolsOf("G00 X40 Z2;\nG71 U1 R0.5;\nG71 P1 Q2 U0.4 W0.1 F0.2;\nN1 G00 X20;\nN2 G01 X40 Z-20;\n").empty());
-  EXPECT_TRUE(groovingToolsOf("_CNAME=\"L1\"\nLCYC95\nM02\n").empty());
+  EXPECT_TRUE(groovingToolsOf(programSpecOf("G00 X40 Z2;\nG71 U1 R0.5;\nG71 P1 Q2 U0.4 W0.1 F0.2;\nN1 G00 X20;\nN2 G01 X40 Z-20;\n")).empty());
+  // A program the oracles cannot read (a SINUMERIK text under gsk): its plot draws no blade.
+  const SpecCase unreadable = grooveCase("_CNAME=\"L1\"\nLCYC95\nM02\n");
+  Toolpath path;
+  path.moves.resize(2);
+  Finding f;
+  f.oracle = "no-gouge";
+  f.move = 1;
+  const auto plot = failurePlot(unreadable, EngineResult::planned(path), "reference", {f}, 1e-3, std::nullopt);
+  ASSERT_TRUE(plot);
+  for (const Highlight& h : plot->highlights) EXPECT_EQ(h.label.find("swept blade"), std::string::npos) << h.label;
 }
 
 // §8 (b): move 0 is ① to A11 (X58 Z0), cycle 1 (u 4) makes no move, move 1 is ⑦ to X55, move 2 the
