@@ -282,12 +282,6 @@ TEST(G74_1Steps, AToolWiderThanTheFloorIsAlarmed) {
   EXPECT_NE(t.alarm->message.find("tool width"), std::string::npos) << t.alarm->message;
 }
 
-}  // namespace
-}  // namespace cyclecert
-
-namespace cyclecert {
-namespace {
-
 // The cycle record's rough profile (drawn dashed in every plot) is the groove moved in by the
 // allowances (docs/g74_1.md I15), not the finish shape shifted. S = (0, 20), h −4 (towards −Z),
 // d −4 (width 2 towards −X), flanks at 90°: the finish profile (0, 20) → (−4, 20) → (−4, 18) →
@@ -307,12 +301,6 @@ TEST(G74_1Record, TheRoughProfileIsTheGrooveMovedInByTheAllowances) {
   ASSERT_EQ(plot.rough.segments.size(), rough.size());
   EXPECT_TRUE(nearlyEqual(plot.rough.segments[1].from, {-3.8, 19.8}, 1e-9));
 }
-
-}  // namespace
-}  // namespace cyclecert
-
-namespace cyclecert {
-namespace {
 
 // I22: the second layer runs over the cycles of the first that reached its bottom. S = (0, 20), h −4,
 // d −8 (floor 4 wide), ∠a 45 (near flank u = w), ∠b 90 (far flank u = 8), Δi/2 0.75, Δk 5 (one

@@ -143,6 +143,9 @@ void chooseTheCutting(G74_1FuzzCase& g, const GrooveChoices& choice, const Cutti
 // depth and an eighth of the floor (a chamfer or round sets back at most its size from its corner:
 // the flanks open towards the mouth, so no corner is sharper than 90°); the tool within a fifth of
 // the floor, which leaves it the quarter the corners r3, r4 leave of the rough floor (I12).
+// The widest grooving tool a case draws: a fifth of the floor (fitTheGroove).
+int widestTool(const G74_1FuzzCase& g) { return std::abs(g.width) / 2 / 5; }
+
 void fitTheGroove(G74_1FuzzCase& g) {
   const int h = std::abs(g.depth), floor = std::abs(g.width) / 2;
   g.allowanceX = std::clamp(g.allowanceX, -floor / 2, floor / 2);
@@ -154,7 +157,7 @@ void fitTheGroove(G74_1FuzzCase& g) {
   }
   const int largestCorner = std::min(h / 9, floor / 8);
   for (int& r : g.corners) r = r * largestCorner / kLargestCornerDrawn;  // as drawn, scaled to fit
-  g.toolWidth = std::min(g.toolWidth, floor / 5);
+  g.toolWidth = std::min(g.toolWidth, widestTool(g));
 }
 
 // A case of a few thousand moves at most: about 25 axial cycles a layer (Δi/2 at least a 25th of
@@ -168,7 +171,7 @@ void fitTheWork(G74_1FuzzCase& g) {
   g.radialStep = std::max(g.radialStep, static_cast<int>(std::ceil(2 * mouthFarEnd(g) / 25)));
   g.peck = std::max(g.peck, (h + 9) / 10);
   if (g.toolWidth > 0 && g.radialStep > 2 * g.toolWidth) {
-    g.toolWidth = std::min((g.radialStep + 1) / 2, std::max(g.toolWidth, std::abs(g.width) / 2 / 5));
+    g.toolWidth = std::min((g.radialStep + 1) / 2, widestTool(g));  // wider than before: it was within widestTool
     g.radialStep = std::min(g.radialStep, 2 * g.toolWidth);
   }
 }
