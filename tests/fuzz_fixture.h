@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "harness/check_run.h"
 #include "harness/fuzz/case_generator.h"
 
 namespace cyclecert {
@@ -25,6 +27,21 @@ inline std::string scratchFolder(const std::string& family, const std::string& n
       std::filesystem::temp_directory_path() / ("cyclecert-fuzz-" + family + "-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(p);
   return p.string();
+}
+
+// The spec suite (specs/) run through `engine` by `check` in `outDir`, removed afterwards: the
+// summary and the progress text (to print when an expectation on the summary fails).
+struct SpecSuiteRun {
+  CheckSummary summary;
+  std::string progress;
+};
+inline SpecSuiteRun checkTheSpecSuite(Engine& engine, const std::string& outDir) {
+  const CheckOptions options{CYCLECERT_SOURCE_DIR "/specs", "", outDir, false};
+  std::ostringstream progress;
+  SpecSuiteRun run{runCheck(engine, options, progress), {}};
+  run.progress = progress.str();
+  std::filesystem::remove_all(outDir);
+  return run;
 }
 
 }  // namespace cyclecert

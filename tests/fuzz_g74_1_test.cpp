@@ -247,11 +247,8 @@ TEST(FuzzG74_1, EveryG74_1MutantIsCaughtByCheckAndByTheOraclesOnGeneratedCases) 
     SCOPED_TRACE(name);
     auto engine = makeEngine(name);
     ASSERT_TRUE(engine);
-    CheckOptions co{CYCLECERT_SOURCE_DIR "/specs", "", scratch("check"), false};
-    std::ostringstream checkProgress;
-    const CheckSummary checked = runCheck(*engine, co, checkProgress);
-    fs::remove_all(co.outDir);
-    EXPECT_GE(checked.fail, 3) << checkProgress.str();
+    const SpecSuiteRun checked = checkTheSpecSuite(*engine, scratch("check"));
+    EXPECT_GE(checked.summary.fail, 3) << checked.progress;
 
     FuzzOptions o;
     o.seed = kSeed;

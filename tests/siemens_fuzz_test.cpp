@@ -22,6 +22,7 @@
 #include "harness/fuzz/siemens_case_generator.h"
 #include "harness/reference_plan.h"
 #include "harness/spec_case.h"
+#include "tests/fuzz_fixture.h"
 
 namespace cyclecert {
 namespace {
@@ -313,11 +314,8 @@ TEST(SiemensMutants, EachIsCaughtByCheckAndByTheDefaultFuzzBudget) {
     SCOPED_TRACE(name);
     auto engine = makeEngine(name);
     ASSERT_TRUE(engine);
-    CheckOptions co{CYCLECERT_SOURCE_DIR "/specs", "", (dir / "check").string(), false};
-    std::ostringstream checkProgress;
-    const CheckSummary checked = runCheck(*engine, co, checkProgress);
-    fs::remove_all(co.outDir);
-    EXPECT_GE(checked.fail, 3) << checkProgress.str();
+    const SpecSuiteRun checked = checkTheSpecSuite(*engine, (dir / "check").string());
+    EXPECT_GE(checked.summary.fail, 3) << checked.progress;
     std::map<std::string, int> byOracle;
     const long fails = failingCases(*engine, byOracle);
     EXPECT_GT(fails, referenceFails + 100);
