@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "oracles/groove/groove_bounds.h"
 #include "oracles/groove/groove_moves.h"
 #include "oracles/material/boost_geometry.h"
 
@@ -14,6 +15,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kStockMargin = 1;  // mm beyond the groove's span and floor
+constexpr double kBoundSlack = 1e-9;  // mm: a tool exactly on the part's top, computed two ways
 
 // The outline's interior and the air above it: its chain from the mouth on the start side to the
 // mouth on the far side, closed `above` over the mouth (straight up from both ends). Closed along
@@ -30,13 +32,16 @@ BgRegion interiorOf(const GrooveOutline& o, double above, double chordTolerance)
 
 // The stock band (interpretation): below the mouth line, over the finish groove's span at the mouth
 // widened by the tool width and kStockMargin on both sides, down to kStockMargin below the floor.
-BgRegion stockBandOf(const GrooveSpec& g) {
-  const double tp = std::tan(g.slope * kPi / 180);
+BandFrame bandFrameOf(const GrooveSpec& g) {
   const double margin = g.toolWidth + kStockMargin;
-  const double uLo = std::min(0.0, g.finish.chain.front().from.x) - margin;
-  const double uHi = g.finish.chain.back().to.x + margin;
-  const double bottom = std::max(g.depth, uHi * tp) + kStockMargin;
-  return regionFrom({grooveUW(uLo, uLo * tp), grooveUW(uHi, uHi * tp), grooveUW(uHi, bottom), grooveUW(uLo, bottom)});
+  return {std::min(0.0, g.finish.chain.front().from.x) - margin, g.finish.chain.back().to.x + margin,
+          std::tan(g.slope * kPi / 180)};
+}
+
+BgRegion stockBandOf(const GrooveSpec& g, const BandFrame& b) {
+  const double bottom = std::max(g.depth, b.mouthAt(b.uHi)) + kStockMargin;
+  return regionFrom({grooveUW(b.uLo, b.mouthAt(b.uLo)), grooveUW(b.uHi, b.mouthAt(b.uHi)), grooveUW(b.uHi, bottom),
+                     grooveUW(b.uLo, bottom)});
 }
 
 // The local segment of move i.
@@ -52,14 +57,54 @@ Segment localSegment(const JudgeInput& in, const GrooveSpec& g, std::size_t i) {
   return local;
 }
 
-// What a feed removes: the blade's sweep, or a point's shadow — along −u (behind the steps) for the
-// pecks, and for a profile pass towards the groove's inside: +u on the start side of the floor's
-// middle, −u on the far side (the pass removes the allowance layer between it and the pecks).
-BgRegion removedBy(const GrooveReplay& r, const Segment& move, bool profilePass, double shadow, double chordTolerance) {
-  if (!r.tool.isPoint()) return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+// A point's shadow runs along −u (behind the steps) for the pecks, and for a profile pass towards
+// the groove's inside: +u on the start side of the floor's middle, −u on the far side (the pass
+// removes the allowance layer between it and the pecks). +1 or −1 along u.
+int shadowSide(const GrooveReplay& r, const Segment& move, bool profilePass) {
   const GrooveOutline& target = r.groove->target();
   const bool startSide = profilePass && 0.5 * (move.from.x + move.to.x) < 0.5 * (target.floorFrom + target.floorTo);
-  return sweptRegion(move, grooveUW(startSide ? 1 : -1, 0), shadow, grooveUW(0, -1), 0, chordTolerance);
+  return startSide ? 1 : -1;
+}
+
+// What a feed removes: the blade's sweep, or a point's shadow.
+BgRegion removedBy(const GrooveReplay& r, const Segment& move, int side, double shadow, double chordTolerance) {
+  if (!r.tool.isPoint()) return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+  return sweptRegion(move, grooveUW(side, 0), shadow, grooveUW(0, -1), 0, chordTolerance);
+}
+
+// A feed whose removal unites with the staircase exactly (groove_bounds.h) is added to it: a straight
+// move along u or w — the blade's rectangle reaching back out of the band, or a point's shadow
+// rectangle over material gone above it (a move along u: a shadow of no area, nothing). False for
+// any other move (its removal stays a region).
+bool clearsAStep(ClearedStaircase& cleared, const GrooveReplay& r, const Segment& move, int side, double shadow,
+                 const ToolExtent& e) {
+  if (move.isArc()) return false;
+  const bool alongU = std::abs(move.from.z - move.to.z) <= kGeomEps;
+  const bool alongW = std::abs(move.from.x - move.to.x) <= kGeomEps;
+  if (!alongU && !alongW) return false;
+  if (!r.tool.isPoint()) {
+    if (!cleared.goneAbove(e.uFrom, e.uTo, e.wShallowest - r.blade.length)) return false;
+    cleared.clearDownTo(e.uFrom, e.uTo, e.wDeepest);
+    return true;
+  }
+  if (alongU) return true;
+  const double u = move.from.x;
+  const double uFrom = side > 0 ? u : u - shadow, uTo = side > 0 ? u + shadow : u;
+  if (!cleared.goneAbove(uFrom, uTo, e.wShallowest)) return false;
+  cleared.clearDownTo(uFrom, uTo, e.wDeepest);
+  return true;
+}
+
+// The material at a moment: what was there at the start without the other removals so far
+// (applied as they come) and without the staircase (set difference: the order does not matter).
+BgRegion materialNow(const BgRegion& withoutTheOthers, const ClearedStaircase& cleared, double top) {
+  if (cleared.empty()) return withoutTheOthers;
+  BgRegion steps;
+  for (const std::vector<Point>& ring : cleared.outlines(top)) {
+    const BgRegion one = regionFrom(ring);
+    steps.insert(steps.end(), one.begin(), one.end());
+  }
+  return without(withoutTheOthers, steps);
 }
 
 }  // namespace
@@ -82,7 +127,8 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   r.groove = g;
   r.tool.width = g->toolWidth;
   r.range = {firstMoveOfTheCycles(in), firstMoveAfterTheCycles(in)};
-  r.stock = stockBandOf(*g);
+  const BandFrame band = bandFrameOf(*g);
+  r.stock = stockBandOf(*g, band);
   bg::model::box<BgPoint> box;
   bg::envelope(r.stock, box);
   const double span = std::max(box.max_corner().x() - box.min_corner().x(), box.max_corner().y() - box.min_corner().y());
@@ -92,21 +138,35 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   r.part = without(r.stock, r.target);
   // J2 finishes a groove roughed before (interpretation): its material is the allowance between the
   // rough and the finish profile.
-  r.remaining = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
+  BgRegion withoutTheOthers = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
   const std::optional<GrooveMoves> moves = grooveMoves(in);  // where the profile passes begin
   r.partCrossings.resize(in.path.moves.size());
   r.rapidCrossings.resize(in.path.moves.size());
+  // The bounds (groove_bounds.h) answer most moves; the exact regions the rest.
+  const std::optional<PartTop> partTop = PartTop::of(g->target(), band, chord);
+  ClearedStaircase cleared(band);
+  const double aboveTheBand = box.min_corner().x() - 2 * kStockMargin;  // w above the band's top
+  const double shadow = span + 2 * kStockMargin;
   for (std::size_t i = r.range.begin; i < r.range.end; ++i) {
     const Segment move = localSegment(in, *g, i);
     if (distance(move.from, move.to) <= kGeomEps && !move.isArc()) continue;
-    r.partCrossings[i] = toolCrossing(r.part, move, r.tool, r.blade, eps, chord);
+    const ToolExtent e = toolExtent(move, r.tool.width, chord);
+    if (!partTop || e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack) {
+      r.partCrossings[i] = toolCrossing(r.part, move, r.tool, r.blade, eps, chord);
+    }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
-      r.rapidCrossings[i] = toolCrossing(r.remaining, move, r.tool, r.blade, eps, chord);
+      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest)) {
+        const BgRegion material = materialNow(withoutTheOthers, cleared, aboveTheBand);
+        r.rapidCrossings[i] = toolCrossing(material, move, r.tool, r.blade, eps, chord);
+      }
     } else {
-      const bool profilePass = moves && i >= moves->profileStart;
-      r.remaining = without(r.remaining, removedBy(r, move, profilePass, span + 2 * kStockMargin, chord));
+      const int side = shadowSide(r, move, moves && i >= moves->profileStart);
+      if (!clearsAStep(cleared, r, move, side, shadow, e)) {
+        withoutTheOthers = without(withoutTheOthers, removedBy(r, move, side, shadow, chord));
+      }
     }
   }
+  r.remaining = materialNow(withoutTheOthers, cleared, aboveTheBand);
   return r;
 }
 

@@ -1,0 +1,80 @@
+#pragma once
+// Bounds that spare the G74.1 replay its Boost booleans where they prove the exact answer
+// (groove_replay.h). Both are functions of u in the groove's frame (u = x, w = z: depth, down):
+// - PartTop: where the part begins below each u — the target's chain where the groove is, the
+//   mouth line beside it, nothing beyond the stock band. A move whose tool stays at or above it over
+//   its whole span touches no part: no crossing, without intersecting regions.
+// - ClearedStaircase: the union of the removals that reach up out of the material (a blade's sweep:
+//   its shank runs back out of the stock; a point's peck that starts where the material is already
+//   gone), which is {w ≤ C(u)} within the band for a step function C. The material still standing
+//   lies below C, so a rapid whose tool stays at or above max(C, mouth) crosses none; and the
+//   material after many pecks is the band without one staircase polygon, not hundreds of
+//   differences. Removals of any other shape (a pass along a flank) stay exact regions.
+// Both bounds are conservative: where they cannot prove "nothing", the exact computation runs.
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "oracles/groove/groove_spec.h"
+#include "oracles/material/region.h"
+
+namespace cyclecert {
+
+// The extent of a tool's move in the groove's frame: u from uFrom to uTo, at most wDeepest deep.
+struct ToolExtent {
+  double uFrom = 0, uTo = 0;
+  double wShallowest = 0, wDeepest = 0;
+};
+// A move's extent with the tool spanning `width` towards −u from its programmed point (0: a point);
+// arcs through their chords within chordTolerance.
+ToolExtent toolExtent(const Segment& localMove, double width, double chordTolerance);
+
+// The stock band's u range and its top (the mouth line w = u·tan∠p).
+struct BandFrame {
+  double uLo = 0, uHi = 0;
+  double tanSlope = 0;
+  double mouthAt(double u) const { return u * tanSlope; }
+  double shallowestMouth(double u0, double u1) const { return std::min(mouthAt(u0), mouthAt(u1)); }
+};
+
+class PartTop {
+ public:
+  // Nothing when the target's chain is no graph over u (then no bound: every move is exact).
+  static std::optional<PartTop> of(const GrooveOutline& target, const BandFrame& band, double chordTolerance);
+  // The shallowest depth at which the part begins over [u0, u1] (+∞ where there is none). A span
+  // of some width ignores walls at its ends (a blade beside a wall overlaps none of it); a point
+  // (u0 = u1) is judged by the deeper of its two sides: on a wall or an edge, it touches the part
+  // only when both sides do (the point crossings count what lies deeper than ε inside).
+  double shallowestOver(double u0, double u1) const;
+
+ private:
+  double sideOf(double u, int side) const;  // where the part begins just left (−1) or right (+1) of u
+  std::vector<Point> chain_;  // flattened, u non-decreasing
+  BandFrame band_;
+};
+
+class ClearedStaircase {
+ public:
+  explicit ClearedStaircase(BandFrame band) : band_(band) {}
+  // C := max(C, w) on [u0, u1].
+  void clearDownTo(double u0, double u1, double w);
+  // Whether everything in the band above depth w over [u0, u1] is gone (cleared, or air above the
+  // mouth): then a removal from w down unites with the staircase exactly.
+  bool goneAbove(double u0, double u1, double w) const;
+  // Whether a tool over [u0, u1] no deeper than w crosses nothing of the band still standing. A
+  // point (u0 = u1) on a step's edge stands on the boundary: nothing when either side is gone.
+  bool clearOver(double u0, double u1, double w) const;
+  bool empty() const { return steps_.empty(); }
+  // The cleared region within the band's u range, from `top` (above the band) down to C: one ring
+  // per run of steps.
+  std::vector<std::vector<Point>> outlines(double top) const;
+
+ private:
+  // For a step starting at u (key): its depth up to the next key; −∞ marks "not cleared" from there.
+  std::map<double, double> steps_;
+  BandFrame band_;
+  double depthAt(std::map<double, double>::const_iterator it) const;
+  double snapped(double u) const;  // an existing step's edge within a nanometre, else u
+};
+
+}  // namespace cyclecert
