@@ -282,6 +282,23 @@ TEST(G74_1Steps, AToolWiderThanTheFloorIsAlarmed) {
   EXPECT_NE(t.alarm->message.find("tool width"), std::string::npos) << t.alarm->message;
 }
 
+TEST(G74_1Steps, TheToolMustFitTheFloorsOfTheProfilesTheCycleCuts) {
+  // I24. h −2, d −2: a finish floor 1 wide (radius); ∠a 45 and W0.5 raise the rough floor to z −1.5
+  // and widen it by 0.5·cot 45° = 0.5 on the near flank's side (∠b 90: none on the far one): 1.5
+  // wide. A 1.2 mm blade fits the rough floor and not the finish one: J0 (rough only) plans, J1 and
+  // J2 (which cut the finish profile) alarm PS0062 naming the finish floor.
+  const std::string groove = "G00 X50 Z5 F0.1;\nG74.1 X40 Z0 P0.5 Q1 H-2 D-2 A45;\n";
+  const Toolpath rough = planGsk(groove + "G74.1 R0.2 W0.5 I1.2 J0;\n");
+  EXPECT_FALSE(rough.alarm) << rough.alarm->message;
+  EXPECT_FALSE(rough.moves.empty());
+  for (const char* j : {"J1", "J2"}) {
+    const Toolpath t = planGsk(groove + "G74.1 R0.2 W0.5 I1.2 " + j + ";\n");
+    ASSERT_TRUE(t.alarm) << j;
+    EXPECT_EQ(t.alarm->code, "PS0062") << j;
+    EXPECT_NE(t.alarm->message.find("finish groove's floor"), std::string::npos) << t.alarm->message;
+  }
+}
+
 // The cycle record's rough profile (drawn dashed in every plot) is the groove moved in by the
 // allowances (docs/g74_1.md I15), not the finish shape shifted. S = (0, 20), h −4 (towards −Z),
 // d −4 (width 2 towards −X), flanks at 90°: the finish profile (0, 20) → (−4, 20) → (−4, 18) →

@@ -201,6 +201,16 @@ constexpr G74_1Fault kFaults[] = {
     G74_1Fault::SlopeNotBelowFlank};
 constexpr int kFaultCount = static_cast<int>(sizeof kFaults / sizeof kFaults[0]);
 
+// The wider of the groove's two floors, hundredths (radius): the finish floor |d|/2, the rough one
+// raised by Δw and so widened along sloping flanks by Δw·(cot ∠a + cot ∠b) (less Δu, which moves
+// the flanks in). A blade wider than both does not fit whichever the cycle cuts (I12, I24).
+int widestFloor(const G74_1FuzzCase& g) {
+  constexpr double kDegree = 3.14159265358979323846 / 180;
+  const auto cot = [&](int degrees) { return degrees == 90 ? 0.0 : 1 / std::tan(degrees * kDegree); };
+  const double widening = std::abs(g.allowanceZ) * (cot(g.angleA) + cot(g.angleB));
+  return std::abs(g.width) / 2 + static_cast<int>(std::ceil(widening));
+}
+
 // One invalid value, one case in ten. Most faults are one word spelt out of range as the program
 // is written; two are values in range the groove cannot take: a tool wider than the floor (I12),
 // a slope as steep as the near flank (I9).
@@ -209,7 +219,7 @@ void drawFault(G74_1FuzzCase& g, const GrooveChoices& choice) {
   g.fault = kFaults[(10 * choice.whichFault + choice.variant) % kFaultCount];  // 100 values over the faults
   g.faultVariant = choice.variant;
   if (g.fault == G74_1Fault::DecimalPoint) g.stepsInMm = false;  // a decimal point is an alarm in increments only
-  if (g.fault == G74_1Fault::ToolWiderThanFloor) g.toolWidth = std::abs(g.width) / 2 + 50 + 10 * choice.variant;
+  if (g.fault == G74_1Fault::ToolWiderThanFloor) g.toolWidth = widestFloor(g) + 50 + 10 * choice.variant;
   if (g.fault == G74_1Fault::SlopeNotBelowFlank) {
     if (g.angleA == 90) g.angleA = 60;
     g.slope = std::min(89, g.angleA + choice.variant % 3);

@@ -223,10 +223,13 @@ class G74_1Planner {
     return {u, std::min(layer.bottom, deepestUnderTheBlade(rough_, u, c_.toolWidth))};
   }
 
-  // I12: the blade must fit on the floor between its corners (the profile passes ride on it).
+  // I12: the blade must fit on the floor between its corners of each profile the cycle cuts (its
+  // profile pass rides on it): the rough one unless J2, the finish one unless J0. A J0 roughing
+  // leaves the finish floor to another cycle (I24).
   void requireTheToolFitsTheFloor() const {
     for (const GrooveProfile* p : {&rough_, &finish_}) {
-      if (p->floorTo - p->floorFrom >= c_.toolWidth - kGeomEps) continue;
+      const bool cut = p == &rough_ ? c_.pathType != GroovePathType::FinishOnly : c_.pathType != GroovePathType::RoughOnly;
+      if (!cut || p->floorTo - p->floorFrom >= c_.toolWidth - kGeomEps) continue;
       throw GrooveDoesNotFit("the tool width I " + mm(c_.toolWidth) + " is wider than the " +
                              (p == &rough_ ? "rough" : "finish") + " groove's floor (" +
                              mm(p->floorTo - p->floorFrom) + " mm between its corners)");
