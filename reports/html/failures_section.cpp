@@ -122,9 +122,9 @@ std::string engineFailures(const EngineIndex& engine, std::size_t engineNumber, 
   if (engineFailed > 0) out += ", of which " + std::to_string(engineFailed) + " engine failure" + (engineFailed == 1 ? "" : "s");
   out += "</span></h3>\n";
   if (!expected.empty()) {
-    out += "<p>" + verdictPill("expected-failure", expected.size()) + " " + verdictPill("fail", unexpected.size()) +
-           " not expected. Expected failures are the run's expectation file's (--expectations): they did not fail "
-           "the run, and are listed after the others.</p>\n";
+    out += "<p>" + verdictPill("expected-failure", expected.size()) + ", " + std::to_string(unexpected.size()) +
+           " not expected. Expected failures are those the run's expectation file (--expectations) lists: they did "
+           "not fail the run, and are listed after the others.</p>\n";
   }
   if (engine.failures.empty()) {
     return out + "<p class=\"muted\">No failure: every listed case passed or was not applicable.</p>\n</section>\n";
