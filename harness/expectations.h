@@ -34,6 +34,8 @@ struct Expectation {
   std::string source;   // FILE:LINE (text) or FILE: /expectations/N (JSON), for messages
 };
 
+const char* keyName(Expectation::Key k);  // "case", "rule", "kind"
+
 struct Expectations {
   std::string file;
   std::vector<Expectation> entries;

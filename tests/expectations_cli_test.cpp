@@ -78,6 +78,13 @@ TEST_F(ExpectationsCli, ABaselineOfARunMakesTheSameRunGreen) {
   // The report shows them apart: a field and counts in report.json, skipped in JUnit, a section in HTML.
   const json report = json::parse(read(path("second/report.json")));
   EXPECT_EQ(report["engines"][0]["expectations"], (json{{"expected_failure", 2}, {"new_failure", 0}, {"unexpected_pass", 0}}));
+  if (std::system("python3 -c 'import jsonschema' 2>/dev/null") == 0) {  // the expectation fields are in the schema
+    const std::string schema = std::string(CYCLECERT_SOURCE_DIR) + "/specs/schema/";
+    EXPECT_EQ(std::system(("python3 " + schema + "validate_report.py " + schema + "report.schema.json " +
+                           path("second/report.json") + " >/dev/null")
+                              .c_str()),
+              0);
+  }
   const std::string junit = read(path("second/junit.xml"));
   EXPECT_NE(junit.find("failures=\"0\" errors=\"0\" skipped=\"2\""), std::string::npos) << junit.substr(0, 600);
   EXPECT_NE(junit.find("<skipped message=\"expected failure: expectation, retract"), std::string::npos);
