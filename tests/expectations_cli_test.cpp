@@ -176,6 +176,18 @@ TEST_F(ExpectationsCli, FuzzExpectsFailuresByKind) {
   EXPECT_EQ(expected.err.find("FAIL returns-to-start"), std::string::npos) << "expected failures are not shrunk and kept";
 }
 
+TEST_F(ExpectationsCli, FuzzWarnsOfACaseSeedThatPassesNowAndFailsWithStrict) {
+  // Case 0 of seed 1 is case seed 1: the reference passes it.
+  const std::string file = write("e.txt", "fuzz-0000000000000001 fail # it failed once\n");
+  const std::string command = "fuzz --engine reference --seed 1 --cases 1 --no-save --expectations " + file;
+  const CliRun warned = run(command + " --out " + path("a"));
+  EXPECT_EQ(warned.exitCode, 0) << warned.out << warned.err;
+  EXPECT_NE(warned.err.find("unexpectedly passing: fuzz-0000000000000001 is pass now; " + file + ":1"), std::string::npos)
+      << warned.err;
+  EXPECT_NE(warned.out.find("1 unexpectedly passing"), std::string::npos) << warned.out;
+  EXPECT_EQ(run(command + " --strict --out " + path("b")).exitCode, 1);
+}
+
 // ---- LinuxCNC ------------------------------------------------------------------------------------
 
 std::string buildDir() {
