@@ -201,7 +201,7 @@ class FuzzCampaign {
     CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
                  caseSeed, "", vs_ ? vs_->name() : "", std::nullopt, ""};
     const ExpectationStatus expected = matcher_ ? matcher_->apply(r, v.kind) : ExpectationStatus::None;
-    const bool known = expected == ExpectationStatus::Expected && v.verdict != "not-applicable";
+    const bool known = expected == ExpectationStatus::Expected && v.verdict != "not-applicable";  // an expected failure
     ++summary_.run;
     if (expected == ExpectationStatus::UnexpectedPass) {
       ++summary_.unexpectedPasses;
