@@ -154,6 +154,8 @@ CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream&
   if (!options.regressionsDir.empty() && std::filesystem::is_directory(options.regressionsDir)) {
     for (auto& f : findSpecCaseFiles(options.regressionsDir)) files.push_back(std::move(f));
   }
+  std::optional<ExpectationMatcher> matcher;
+  if (options.expectations) matcher.emplace(*options.expectations);
   const auto started = std::chrono::steady_clock::now();
   auto lastReport = started;
   for (std::size_t i = 0; i < files.size(); ++i) {
@@ -162,18 +164,30 @@ CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream&
       ++s.skipped;
       continue;
     }
-    const CaseResult r = checkCase(engine, c);
+    CaseResult r = checkCase(engine, c);
+    const ExpectationStatus expected = matcher ? matcher->apply(r) : ExpectationStatus::None;
     results.append(r);  // a killed run keeps every result written so far
-    if (r.verdict == "pass") ++s.pass;
+    if (expected == ExpectationStatus::UnexpectedPass) {
+      ++s.unexpectedPasses;
+      progress << unexpectedPassText(r) << "\n";
+    }
+    const bool known = expected == ExpectationStatus::Expected && r.verdict != "not-applicable";  // an expected failure
+    if (known) ++s.expectedFailures;
+    else if (r.verdict == "pass") ++s.pass;
     else if (r.verdict == "fail") ++s.fail;
     else if (r.verdict == "not-applicable") ++s.notApplicable;
     else ++s.engineFailure;
-    if (r.verdict == "fail" || r.verdict == "engine-failure") progress << r.verdict << ": " << c.id << ": " << r.detail << "\n";
+    if ((r.verdict == "fail" || r.verdict == "engine-failure") && !known) {
+      progress << r.verdict << ": " << c.id << ": " << r.detail << "\n";
+    }
     const auto now = std::chrono::steady_clock::now();
     if (now - lastReport > std::chrono::seconds(2)) {
       progress << "  " << i + 1 << "/" << files.size() << " cases, " << s.fail << " failing\n";
       lastReport = now;
     }
+  }
+  if (matcher && s.skipped == 0) {
+    for (const Expectation* x : matcher->unused()) s.unusedExpectations.push_back(*x);
   }
   return s;
 }

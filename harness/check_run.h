@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "harness/engines/engine.h"
+#include "harness/expectations.h"
 #include "harness/results_file.h"
 
 namespace cyclecert {
@@ -19,11 +20,16 @@ struct CheckOptions {
   std::string regressionsDir;  // shrunk fuzz failures (spec cases) run after the specs; "" for none
   std::string outDir;    // results.jsonl goes here
   bool resume = false;
+  const Expectations* expectations = nullptr;  // --expectations: known failures do not fail the run
 };
 
 struct CheckSummary {
   int pass = 0, fail = 0, notApplicable = 0, engineFailure = 0, skipped = 0;
+  // With expectations: fail and engineFailure count only the failures no entry covers.
+  int expectedFailures = 0, unexpectedPasses = 0;
+  std::vector<Expectation> unusedExpectations;  // entries no result of a whole run matched (not with --resume)
   bool clean() const { return fail == 0 && engineFailure == 0; }
+  bool strictClean() const { return clean() && unexpectedPasses == 0 && unusedExpectations.empty(); }
 };
 
 // Runs the cases, reporting progress on `progress` for runs longer than a few seconds.

@@ -22,6 +22,11 @@ std::string resultLine(const CaseResult& r) {
   if (!r.vs.empty()) j["vs"] = r.vs;
   if (r.plot) j["plot"] = *r.plot;
   if (!r.reproduce.empty()) j["reproduce"] = r.reproduce;
+  if (r.expectation) {
+    j["expectation"] = {{"status", r.expectation->status}};
+    if (!r.expectation->reason.empty()) j["expectation"]["reason"] = r.expectation->reason;
+    if (!r.expectation->source.empty()) j["expectation"]["source"] = r.expectation->source;
+  }
   // An engine's reply may hold anything (a process engine's message); the line must stay JSON.
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

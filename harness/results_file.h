@@ -16,6 +16,12 @@
 
 namespace cyclecert {
 
+// What a run's expectation file (harness/expectations.h) made of a result: "expected-failure",
+// "new-failure" or "unexpected-pass", the entry's reason and where it stands (FILE:LINE, FILE: /path).
+struct ResultExpectation {
+  std::string status, reason, source;
+};
+
 struct CaseResult {
   std::string engine, caseId, file;
   std::vector<std::string> rules;
@@ -28,6 +34,7 @@ struct CaseResult {
   std::string vs;                     // fuzz --vs: the engine compared with
   std::optional<nlohmann::json> plot;  // failures: the picture (reports/svg/plot_json.h)
   std::string reproduce;              // failures: the command that shows it again
+  std::optional<ResultExpectation> expectation = std::nullopt;  // runs with --expectations
 };
 
 std::string resultLine(const CaseResult& r);  // one JSON line, with its newline

@@ -5,6 +5,7 @@
 #include "harness/check_run.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
+#include "harness/expectations.h"
 #include "harness/rule_catalogue.h"
 #include "harness/run_lock.h"
 #include "harness/run_record.h"
@@ -14,7 +15,7 @@ namespace cyclecert::cli {
 namespace {
 
 const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]]
-                       [--timeout S]
+                       [--timeout S] [--expectations FILE [--strict]]
 
 Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
 failure kept as a spec case under corpus/regressions/, against engine E
@@ -38,8 +39,15 @@ Options:
   --timeout S    per-case timeout for engines in another process (default 10)
   --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
   --no-regressions    run the spec cases only
-Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage,
-unreadable input, OUT in use by another run, another campaign in OUT, or a result not written.
+  --expectations FILE the engine's known failures (JSON or `ID OUTCOME # reason` lines; README
+                 "Expectation files"; `cyclecert baseline` writes one): a case failing as its entry
+                 says is an expected failure, counted apart, and does not fail the run; an entry
+                 whose case passes now, or that matches nothing, is reported as unexpectedly passing
+  --strict       with --expectations: exit 1 on an unexpectedly passing entry too
+Exit: 0 every case passes (or is not applicable, or fails as expected), 1 a case fails or the engine
+failed (not as expected), or with --strict an entry passes unexpectedly, 2 bad usage, unreadable
+input or expectation file, OUT in use by another run, another campaign in OUT, or a result not
+written.
 )HELP";
 
 const char* kEnginesHelp = R"HELP(Usage: cyclecert engines
@@ -54,7 +62,8 @@ static int commandCheck(const std::vector<std::string>& args) {
   std::string engineName;
   CheckOptions options{defaultSpecsDir(), defaultRegressionsDir(), "build/check", false};
   EngineOptions engineOptions;
-  bool mixCampaigns = false;
+  bool mixCampaigns = false, strict = false;
+  std::optional<Expectations> expectations;
   const auto positional = parseOptions(
       args,
       {{"--engine", [&](const std::string& v) { engineName = v; }},
@@ -64,11 +73,15 @@ static int commandCheck(const std::vector<std::string>& args) {
        {"--no-regressions", [&] { options.regressionsDir.clear(); }},
        {"--resume", [&] { options.resume = true; }},
        {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
+       {"--expectations", [&](const std::string& v) { expectations = readExpectations(v); }},
+       {"--strict", [&] { strict = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
       "check");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
   if (mixCampaigns && !options.resume) throw UsageError(std::string(kMixCampaignsFlag) + " goes with --resume");
+  if (strict && !expectations) throw UsageError("--strict goes with --expectations FILE");
+  if (expectations) options.expectations = &*expectations;
   const auto engine = makeEngine(engineName, engineOptions);
   std::vector<std::string> argv{"cyclecert", "check"};
   argv.insert(argv.end(), args.begin(), args.end());
@@ -77,11 +90,13 @@ static int commandCheck(const std::vector<std::string>& args) {
             mixCampaigns);
   const CheckSummary s = runCheck(*engine, options, std::cerr);
   std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable
-            << " not applicable, " << s.engineFailure << " engine failure(s)";
+            << " not applicable, " << s.engineFailure << " engine failure(s)"
+            << expectationCountsText(s.expectedFailures, s.unexpectedPasses + static_cast<long>(s.unusedExpectations.size()));
   if (s.skipped) std::cout << ", " << s.skipped << " already done";
   std::cout << "; results in " << options.outDir << "/results.jsonl\n";
+  for (const Expectation& x : s.unusedExpectations) std::cerr << unusedExpectationText(x) << "\n";
   writeRunReport(options.outDir, options.specsDir);
-  return s.clean() ? kExitOk : kExitAlarm;
+  return (strict ? s.strictClean() : s.clean()) ? kExitOk : kExitAlarm;
 }
 
 static int commandEngines(const std::vector<std::string>& args) {

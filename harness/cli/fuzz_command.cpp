@@ -9,6 +9,7 @@
 #include "harness/campaign.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
+#include "harness/expectations.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/results_file.h"
 #include "harness/rule_catalogue.h"
@@ -21,7 +22,7 @@ namespace {
 
 const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
                       [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
-                      [--timeout S] [--formats LIST] [--cycles LIST]
+                      [--timeout S] [--formats LIST] [--cycles LIST] [--expectations FILE [--strict]]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
@@ -82,8 +83,17 @@ Options:
                       its cases) and siemens (lcyc95,cycle95); all,siemens,g74.1 for every cycle. With g73 and
                       g71/g72, one case in three (two) is G73; each family is drawn in proportion
                       to the cycles asked of it
-Exit: 0 no failure, 1 a case failed or the engine failed, 2 bad usage, OUT in use by another run,
-another campaign in OUT, or a result not written.
+  --expectations FILE the engine's known failures (JSON or `ID OUTCOME # reason` lines; README
+                      "Expectation files"): entries by failure kind ("kind": "pass-levels",
+                      "diverges", "engine-failure", …; `kind:KIND` in text), rule, or case id
+                      (fuzz-<case seed>, as `cyclecert baseline` writes them). A case failing as an
+                      entry says is an expected failure: counted apart, not shrunk, not kept, and
+                      it does not fail the run; a case an entry names that passes now is reported
+                      as unexpectedly passing
+  --strict            with --expectations: exit 1 on an unexpectedly passing case too
+Exit: 0 no failure (or only expected ones), 1 a case failed or the engine failed (not as expected),
+or with --strict a case passed unexpectedly, 2 bad usage, an unreadable expectation file, OUT in
+use by another run, another campaign in OUT, or a result not written.
 )HELP";
 
 const char* kMergeHelp = R"HELP(Usage: cyclecert merge --out DIR [--mix-campaigns] SHARD_DIR...
@@ -125,10 +135,13 @@ static int commandFuzz(const std::vector<std::string>& args) {
   options.regressionsDir = defaultRegressionsDir();
   std::optional<std::uint64_t> seed;
   EngineOptions engineOptions;
-  bool mixCampaigns = false;
+  bool mixCampaigns = false, strict = false;
+  std::optional<Expectations> expectations;
   const auto positional = parseOptions(
       args,
       {{"--engine", [&](const std::string& v) { engineName = v; }},
+       {"--expectations", [&](const std::string& v) { expectations = readExpectations(v); }},
+       {"--strict", [&] { strict = true; }},
        {"--vs", [&](const std::string& v) { vsName = v; }},
        {"--cases", [&](const std::string& v) { options.cases = static_cast<long>(numberArg("--cases", v, 1, 1e12)); }},
        {"--time", [&](const std::string& v) { options.seconds = numberArg("--time", v, 0.001, 1e7); }},
@@ -174,6 +187,8 @@ static int commandFuzz(const std::vector<std::string>& args) {
       "fuzz");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
+  if (strict && !expectations) throw UsageError("--strict goes with --expectations FILE");
+  if (expectations) options.expectations = &*expectations;
   options.seed = seed ? *seed : randomSeed();
   const auto engine = makeEngine(engineName, engineOptions);
   const auto vs = vsName.empty() ? nullptr : makeEngine(vsName, engineOptions);
@@ -194,7 +209,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
             << s.seconds << " s (" << static_cast<long>(s.run / std::max(s.seconds, 1e-9)) << "/s): " << s.pass
             << " pass, " << s.fail << " fail, " << s.notApplicable << " not applicable, " << s.engineFailure
-            << " engine failure(s)";
+            << " engine failure(s)" << expectationCountsText(s.expectedFailures, s.unexpectedPasses);
   if (s.skipped) std::cout << ", " << s.skipped << " already done";
   std::cout << "; seed " << options.seed << "; results in " << options.outDir << "/results.jsonl\n";
   for (const FuzzFailure& f : s.failures) {
@@ -202,7 +217,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
               << "\n";
   }
   writeRunReport(options.outDir, defaultSpecsDir());
-  return s.clean() ? kExitOk : kExitAlarm;
+  return s.clean() && !(strict && s.unexpectedPasses) ? kExitOk : kExitAlarm;
 }
 
 static int commandMerge(const std::vector<std::string>& args) {

@@ -9,6 +9,10 @@
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
 
+namespace cyclecert::cli {
+extern const Command kBaselineCommand;  // baseline_command.cpp
+}
+
 namespace {
 
 using namespace cyclecert;
@@ -28,6 +32,7 @@ Commands:
              engine); failures shrunk, printed with their seed, kept in corpus/regressions
   merge      join the results.jsonl of several runs (fuzz shards)
   report     write a run's report.json, junit.xml and index.html from its results
+  baseline   write an expectation file (the known failures) from a run's results
   judge      judge a toolpath (any engine's, as JSON) with every oracle
   rules      list the rule catalogue with, per rule, how many spec cases cite it
   params     list the machine parameters, their defaults and the rules they serve
@@ -60,7 +65,7 @@ int run(const std::vector<std::string>& argv) {
   }
   for (const Command* c : {&kPlanCommand, &kParamsCommand, &kRulesCommand, &kJudgeCommand, &kCheckCommand,
                            &kEnginesCommand, &kDiffCommand, &kFuzzCommand, &kMergeCommand, &kReportCommand,
-                           &kProfilesCommand}) {
+                           &kProfilesCommand, &kBaselineCommand}) {
     if (command != c->name) continue;
     if (wantsHelp(args)) {
       std::cout << c->help;

@@ -161,7 +161,9 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
 class FuzzCampaign {
  public:
   FuzzCampaign(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress)
-      : engine_(engine), vs_(vs), options_(options), progress_(progress), results_(options.outDir, options.resume) {}
+      : engine_(engine), vs_(vs), options_(options), progress_(progress), results_(options.outDir, options.resume) {
+    if (options.expectations) matcher_.emplace(*options.expectations);
+  }
 
   FuzzSummary run() {
     const long total = options_.cases ? *options_.cases : options_.seconds ? LONG_MAX : kDefaultFuzzCases;
@@ -198,13 +200,20 @@ class FuzzCampaign {
     const FuzzVerdict v = judgeFuzzResult(std::move(planned), engine_, vs_, c, options_.tolerance);
     CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
                  caseSeed, "", vs_ ? vs_->name() : "", std::nullopt, ""};
+    const ExpectationStatus expected = matcher_ ? matcher_->apply(r, v.kind) : ExpectationStatus::None;
+    const bool known = expected == ExpectationStatus::Expected && v.verdict != "not-applicable";  // an expected failure
     ++summary_.run;
-    if (v.verdict == "pass") ++summary_.pass;
+    if (expected == ExpectationStatus::UnexpectedPass) {
+      ++summary_.unexpectedPasses;
+      progress_ << unexpectedPassText(r) << "\n";
+    }
+    if (known) ++summary_.expectedFailures;
+    else if (v.verdict == "pass") ++summary_.pass;
     else if (v.verdict == "not-applicable") ++summary_.notApplicable;
     else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
     if (v.verdict == "fail" || v.verdict == "engine-failure") {
       r.reproduce = reproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed, options_);
-      if (shrunkKinds_.insert(v.kind).second) keepFailure(caseSeed, c, v, r);
+      if (!known && shrunkKinds_.insert(v.kind).second) keepFailure(caseSeed, c, v, r);
     }
     results_.append(r);  // a killed run keeps every result written so far
     reportProgress();
@@ -272,6 +281,7 @@ class FuzzCampaign {
   std::ostream& progress_;
   ResultsFile results_;
   FuzzSummary summary_;
+  std::optional<ExpectationMatcher> matcher_;  // --expectations
   std::set<std::string> shrunkKinds_;  // each kind of failure is shrunk (and kept) once per run
   const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point lastReport_ = started_;

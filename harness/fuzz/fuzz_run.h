@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "harness/engines/engine.h"
+#include "harness/expectations.h"
 #include "harness/fuzz/case_generator.h"
 #include "harness/results_file.h"
 
@@ -32,6 +33,7 @@ struct FuzzOptions {
   double tolerance = 1e-3;        // mm, for the oracles and the comparison with --vs
   CycleFormats formats = kDefaultCycleFormats;  // the cycle formats drawn (--formats)
   FuzzCycles cycles = kDefaultFuzzCycles;       // the cycles drawn (--cycles)
+  const Expectations* expectations = nullptr;   // --expectations: known failures are neither counted as failing nor shrunk
 };
 
 inline constexpr long kDefaultFuzzCases = 2000;
@@ -48,6 +50,7 @@ struct FuzzFailure {
 
 struct FuzzSummary {
   long run = 0, pass = 0, fail = 0, notApplicable = 0, engineFailure = 0, skipped = 0;
+  long expectedFailures = 0, unexpectedPasses = 0;  // with expectations (fail, engineFailure: the others)
   double seconds = 0;
   std::vector<FuzzFailure> failures;  // one per failing case, shrunk
   bool clean() const { return fail == 0 && engineFailure == 0; }

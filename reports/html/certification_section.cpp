@@ -81,6 +81,12 @@ std::string headline(const nlohmann::json& report) {
     text += "; " + std::to_string(engineFailures) + " case" + (engineFailures == 1 ? "" : "s") +
             " ended in an engine failure";
   }
+  std::uint64_t expected = 0;
+  for (const nlohmann::json& e : listMember(report, "engines")) expected += countMember(member(e, "expectations"), "expected_failure");
+  if (expected > 0) {
+    text += "; " + std::to_string(expected) + " failing case" + (expected == 1 ? " was" : "s were") +
+            " expected (--expectations: listed apart under Failures)";
+  }
   return "<p class=\"headline v-fail\">\u2717 " + text + ".</p>\n";
 }
 

@@ -1,5 +1,6 @@
 // The summary per engine: one row per engine, so that engines compare down a column, with three
 // column groups — spec and regression cases, the fuzz campaign (with its seeds), rule verdicts.
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -7,6 +8,7 @@
 #include "reports/html/report_fields.h"
 #include "reports/html/sections.h"
 #include "reports/html/verdict_style.h"
+#include "reports/model/report_model.h"
 
 namespace cyclecert::html {
 
@@ -86,6 +88,13 @@ std::string ruleCounts(const EngineIndex& e) {
   return out;
 }
 
+// " (3 expected)" when the run's expectation file expected some of the failures.
+std::string expectedNote(const EngineIndex& e) {
+  const auto n = std::count_if(e.failures.begin(), e.failures.end(),
+                               [&](const FailureRef& f) { return expectedFailure(e.cases()[f.caseIndex]); });
+  return n == 0 ? "" : " <span class=\"muted\">(" + std::to_string(n) + " expected)</span>";
+}
+
 std::string engineRow(const EngineIndex& e) {
   const std::string version = textMember(*e.engine, "version");
   std::string out = "<tr><th scope=\"row\" class=\"engine\">" + htmlEscape(e.name) +
@@ -96,7 +105,7 @@ std::string engineRow(const EngineIndex& e) {
   out += "<td class=\"num group-start\">" +
          (e.failures.empty() ? std::string("<span class=\"muted\">none</span>")
                              : "<a href=\"#" + e.failures.front().anchor + "\">" + std::to_string(e.failures.size()) +
-                                   " \u2193</a>") +
+                                   " \u2193</a>" + expectedNote(e)) +
          "</td></tr>\n";
   return out;
 }

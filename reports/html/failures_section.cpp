@@ -1,11 +1,14 @@
 // Per engine, every case that failed or hit an engine failure, as the person fixing the engine
 // needs it: the findings, the picture (contour, stock, the engine's path over the expected one,
 // the witnesses and the first divergence), the program and the command that reproduces it.
+#include <vector>
+
 #include "reports/html/html_text.h"
 #include "reports/html/inline_plot.h"
 #include "reports/html/report_fields.h"
 #include "reports/html/sections.h"
 #include "reports/html/verdict_style.h"
+#include "reports/model/report_model.h"
 
 namespace cyclecert::html {
 
@@ -75,12 +78,19 @@ std::string failureArticle(const nlohmann::json& c, const FailureRef& f, const R
   const std::string detail = textMember(c, "detail");
   const std::string program = textMember(c, "program");
   const std::string reproduce = textMember(c, "reproduce");
-  std::string out = "<article class=\"failure " + std::string(verdictStyle(verdict).cssClass) + "\" id=\"" +
-                    f.anchor + "\">\n<header><a class=\"fid\" href=\"#" + f.anchor + "\">F" +
-                    std::to_string(f.number) + "</a> " + verdictBadge(verdict) + " <code class=\"case-id\">" +
+  const bool expected = expectedFailure(c);
+  std::string out = "<article class=\"failure " + std::string(verdictStyle(verdict).cssClass) +
+                    (expected ? " v-expected" : "") + "\" id=\"" + f.anchor + "\">\n<header><a class=\"fid\" href=\"#" +
+                    f.anchor + "\">F" + std::to_string(f.number) + "</a> " + verdictBadge(verdict) +
+                    (expected ? " " + verdictBadge("expected-failure") : "") + " <code class=\"case-id\">" +
                     htmlEscape(textMember(c, "id")) + "</code> <span class=\"kind\">" +
                     htmlEscape(textMember(c, "kind", "case")) + "</span></header>\n";
   out += "<div class=\"failure-body\">\n<div class=\"failure-text\">\n<dl class=\"case-facts\">\n";
+  if (expected) {
+    const nlohmann::json& e = member(c, "expectation");
+    out += "<dt>Expected</dt><dd>" + htmlEscape(textMember(e, "reason")) + " <span class=\"muted\">(" +
+           htmlEscape(textMember(e, "source")) + ")</span></dd>\n";
+  }
   out += "<dt>Rules</dt><dd>" + ruleLinks(listMember(c, "rules"), index) + "</dd>\n";
   if (!file.empty()) out += "<dt>File</dt><dd><code>" + htmlEscape(file) + "</code></dd>\n";
   if (!seed.empty()) out += "<dt>Seed</dt><dd><code>" + htmlEscape(seed) + "</code></dd>\n";
@@ -100,15 +110,22 @@ std::string engineFailures(const EngineIndex& engine, std::size_t engineNumber, 
   const nlohmann::json& cases = engine.cases();
   std::size_t withPlot = 0;
   std::size_t engineFailed = 0;
+  std::vector<const FailureRef*> unexpected, expected;  // expected failures are shown apart, after the others
   for (const FailureRef& f : engine.failures) {
     if (!member(cases[f.caseIndex], "plot").is_null()) ++withPlot;
     if (textMember(cases[f.caseIndex], "verdict") == "engine-failure") ++engineFailed;
+    (expectedFailure(cases[f.caseIndex]) ? expected : unexpected).push_back(&f);
   }
   std::string out = "<section class=\"engine-failures\" id=\"failures-" + std::to_string(engineNumber) +
                     "\">\n<h3>" + htmlEscape(engine.name) + " <span class=\"muted\">\u00b7 " +
                     std::to_string(engine.failures.size()) + " failure" + (engine.failures.size() == 1 ? "" : "s");
   if (engineFailed > 0) out += ", of which " + std::to_string(engineFailed) + " engine failure" + (engineFailed == 1 ? "" : "s");
   out += "</span></h3>\n";
+  if (!expected.empty()) {
+    out += "<p>" + verdictPill("expected-failure", expected.size()) + ", " + std::to_string(unexpected.size()) +
+           " not expected. Expected failures are those the run's expectation file (--expectations) lists: they did "
+           "not fail the run, and are listed after the others.</p>\n";
+  }
   if (engine.failures.empty()) {
     return out + "<p class=\"muted\">No failure: every listed case passed or was not applicable.</p>\n</section>\n";
   }
@@ -118,7 +135,11 @@ std::string engineFailures(const EngineIndex& engine, std::size_t engineNumber, 
            " left out (the failures are all listed, and every plot is kept in report.json).</p>\n";
   }
   PlotBudget budget{cap};
-  for (const FailureRef& f : engine.failures) out += failureArticle(cases[f.caseIndex], f, index, budget, cap);
+  for (const FailureRef* f : unexpected) out += failureArticle(cases[f->caseIndex], *f, index, budget, cap);
+  if (!expected.empty()) {
+    out += "<h4 class=\"expected-failures\">Expected failures \u00b7 " + std::to_string(expected.size()) + "</h4>\n";
+  }
+  for (const FailureRef* f : expected) out += failureArticle(cases[f->caseIndex], *f, index, budget, cap);
   return out + "</section>\n";
 }
 

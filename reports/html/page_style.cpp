@@ -5,7 +5,7 @@ namespace cyclecert::html {
 const std::string_view kPageStyle = R"css(
 :root{--fg:#1d2330;--muted:#6b7280;--line:#d9dde3;--bg:#f4f5f7;--card:#fff;--head:#eef1f5;
 --pass-bg:#d3efda;--pass-fg:#155d2b;--fail-bg:#f8d0d0;--fail-fg:#a01616;--ef-bg:#ffdcb0;--ef-fg:#8f4300;
---na-bg:#e4e6ea;--na-fg:#505866;--ut-fg:#858b95;--witness:#b0126f}
+--xf-bg:#dbe4f3;--xf-fg:#2c4a7c;--na-bg:#e4e6ea;--na-fg:#505866;--ut-fg:#858b95;--witness:#b0126f}
 *{box-sizing:border-box}
 html{font:14px/1.45 system-ui,-apple-system,"Segoe UI","DejaVu Sans","Liberation Sans",sans-serif;color:var(--fg);background:var(--bg)}
 body{margin:0}
@@ -94,6 +94,9 @@ tr.rule:target th,tr.rule:target td.summary{background:#fff6c9}
 .note{background:#fff8e1;border:1px solid #f1dca0;padding:.45em .8em;border-radius:6px}
 article.failure{background:var(--card);border:1px solid var(--line);border-left:5px solid var(--fail-fg);border-radius:8px;margin:1em 0;padding:.8em 1em}
 article.failure.v-engine-failure{border-left-color:var(--ef-fg)}
+article.failure.v-expected{border-left-color:var(--xf-fg)}
+.pill.v-expected,.badge.v-expected{background:var(--xf-bg);color:var(--xf-fg)}
+h4.expected-failures{color:var(--xf-fg)}
 article.failure:target{box-shadow:0 0 0 3px #f3d36b}
 article.failure header{display:flex;align-items:center;gap:.6em;flex-wrap:wrap}
 .fid{font-weight:700;color:var(--fg);text-decoration:none;font-size:1.05em}

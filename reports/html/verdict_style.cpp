@@ -7,6 +7,7 @@ VerdictStyle verdictStyle(std::string_view verdict) {
   if (verdict == "fail") return {"v-fail", "\u2717", "fail", "fail"};
   if (verdict == "engine-failure") return {"v-engine-failure", "\u26a0", "engine failure", "eng. failure"};
   if (verdict == "not-applicable") return {"v-not-applicable", "\u2013", "not applicable", "n/a"};
+  if (verdict == "expected-failure") return {"v-expected", "\u2298", "expected failure", "expected"};
   if (verdict == "untested") return {"v-untested", "\u25cb", "untested", "untested"};
   return {"v-unknown", "?", "unknown verdict", "unknown"};
 }

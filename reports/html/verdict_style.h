@@ -8,13 +8,14 @@
 namespace cyclecert::html {
 
 struct VerdictStyle {
-  std::string_view cssClass;    // v-pass, v-fail, v-engine-failure, v-not-applicable, v-untested, v-unknown
+  std::string_view cssClass;    // v-pass, v-fail, v-engine-failure, v-not-applicable, v-untested, v-expected, v-unknown
   std::string_view symbol;
   std::string_view label;       // "engine failure"
   std::string_view shortLabel;  // for the matrix cells: "eng. failure", "n/a"
 };
 
-// "pass", "fail", "engine-failure", "not-applicable", "untested"; anything else is v-unknown.
+// "pass", "fail", "engine-failure", "not-applicable", "untested", "expected-failure" (a failure the
+// run's expectation file names); anything else is v-unknown.
 VerdictStyle verdictStyle(std::string_view verdict);
 
 // <span class="badge v-…">✗ fail</span>

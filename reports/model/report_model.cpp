@@ -67,6 +67,37 @@ json reportFinding(const json& finding, std::size_t i) {
   return out;
 }
 
+constexpr const char* kExpectationStatuses[] = {"expected-failure", "new-failure", "unexpected-pass"};
+
+// What a run's expectation file made of the case (harness/expectations.h), as the report keeps it.
+json reportExpectation(const json& value) {
+  if (!value.is_object()) invalid("expectation", "an object {\"status\", \"reason\"?, \"source\"?}");
+  const std::string status = value.contains("status") && value["status"].is_string() ? value["status"].get<std::string>() : "";
+  if (std::find(std::begin(kExpectationStatuses), std::end(kExpectationStatuses), status) == std::end(kExpectationStatuses)) {
+    invalid("expectation/status", "expected-failure, new-failure or unexpected-pass");
+  }
+  json out{{"status", status}};
+  for (const char* key : {"reason", "source"}) {
+    if (value.contains(key) && value[key].is_string() && !value[key].get<std::string>().empty()) out[key] = value[key];
+  }
+  return out;
+}
+
+// Per engine, how many listed cases each expectation status has; null when none has one.
+json expectationCounts(const std::vector<const json*>& cases) {
+  long counts[3] = {0, 0, 0};
+  bool any = false;
+  for (const json* c : cases) {
+    if (!c->contains("expectation")) continue;
+    const std::string status = (*c)["expectation"]["status"];
+    const auto at = std::find(std::begin(kExpectationStatuses), std::end(kExpectationStatuses), status);
+    ++counts[at - std::begin(kExpectationStatuses)];
+    any = true;
+  }
+  if (!any) return nullptr;
+  return {{"expected_failure", counts[0]}, {"new_failure", counts[1]}, {"unexpected_pass", counts[2]}};
+}
+
 struct RuleTally {
   std::vector<std::string> cases, failing;
   bool engineFailure = false, pass = false, notApplicable = false;
@@ -85,6 +116,11 @@ json totalsJson(long cases, const long (&byVerdict)[4]) {
 }
 
 }  // namespace
+
+bool expectedFailure(const json& c) {
+  return c.contains("expectation") && c["expectation"].is_object() &&
+         c["expectation"].value("status", std::string()) == "expected-failure";
+}
 
 std::string caseKind(const json& line) {
   if (line.contains("seed") && !line["seed"].is_null()) return "fuzz";
@@ -147,6 +183,9 @@ void ReportBuilder::add(const json& line) {
     for (const char* key : {"program", "reproduce"}) {
       const json value = optionalField(line, key, json::value_t::string, "a string", "");
       if (!value.get<std::string>().empty()) reportCase[key] = value;
+    }
+    if (line.contains("expectation") && !line["expectation"].is_null()) {
+      reportCase["expectation"] = reportExpectation(line["expectation"]);
     }
     if (line.contains("plot") && !line["plot"].is_null()) {
       try {
@@ -312,6 +351,7 @@ json ReportBuilder::build() const {
                              {"fuzz", fuzz},
                              {"rules", ruleVerdicts},
                              {"cases", std::move(cases)}});
+    if (const json counts = expectationCounts(listed[i]); !counts.is_null()) engineReports.back()["expectations"] = counts;
     identities.push_back({{"name", e.name}, {"version", version}});
     total += suite.cases;
     for (int v = 0; v < 4; ++v) totalByVerdict[v] += suite.byVerdict[v];

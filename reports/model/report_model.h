@@ -80,6 +80,10 @@ nlohmann::json buildReport(const std::vector<nlohmann::json>& lines, const std::
 // "spec", "regression" or "fuzz" for a results line (see above).
 std::string caseKind(const nlohmann::json& line);
 
+// Whether a report case failed as the run's expectation file said (its "expectation" status is
+// "expected-failure"): the report shows it apart, and it did not fail the run.
+bool expectedFailure(const nlohmann::json& reportCase);
+
 // The rules a failing case fails: those its findings name, else — an unmet expectation — all the
 // rules it cites. Takes a results line or a report case.
 std::vector<std::string> failedRules(const nlohmann::json& failingCase);
