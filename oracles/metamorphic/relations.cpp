@@ -5,6 +5,9 @@
 #include <numbers>
 
 #include "oracles/metamorphic/format_relations.h"
+#include "oracles/metamorphic/groove_program.h"
+#include "oracles/metamorphic/groove_relations.h"
+#include "oracles/metamorphic/siemens_relations.h"
 #include "oracles/metamorphic/lathe_program.h"
 #include "oracles/metamorphic/path_compare.h"
 #include "oracles/metamorphic/word_edit.h"
@@ -15,8 +18,6 @@
 namespace cyclecert {
 
 namespace {
-
-constexpr double kMmPerInch = 25.4;
 
 // ---- rewriting words ------------------------------------------------------------------------------
 
@@ -51,24 +52,12 @@ bool isLength(WordRole role) {
     case WordRole::Retract:
     case WordRole::AllowanceFirst:
     case WordRole::AllowanceSecond:
+    case WordRole::ReliefFirst:
+    case WordRole::ReliefSecond:
       return true;
     default:
       return false;
   }
-}
-
-// Replaces every G code `from` (×10) by `to`, and makes sure the first block commands `to`, so
-// that the whole program runs in it.
-void commandFromTheStart(Program& program, int from10, int to) {
-  for (Block& b : program.blocks) {
-    for (Word& w : b.words) {
-      if (w.letter == 'G' && gCode10(w.value) == from10) setValue(w, to);
-    }
-  }
-  if (!program.blocks.empty() && program.blocks.front().hasG(to * 10)) return;
-  Block b;
-  b.words.push_back(makeWord('G', to));
-  program.blocks.insert(program.blocks.begin(), b);
 }
 
 // ---- parameters ---------------------------------------------------------------------------------
@@ -79,10 +68,23 @@ std::string parameterNumber(const std::string& name) {
 }
 
 // The length parameters a program's geometry depends on: Δd, e, the type II clearance, the
-// monotonic tolerances along the 1st and the 2nd axis.
+// monotonic tolerances along the 1st and the 2nd axis, G73's reliefs Δi and Δk (5137, d, is a count).
 bool isLengthParameter(const std::string& name) {
   const std::string n = parameterNumber(name);
-  return n == "5132" || n == "5133" || n == "5134" || n == "5145" || n == "5146";
+  return n == "5132" || n == "5133" || n == "5134" || n == "5145" || n == "5146" || n == "5135" || n == "5136";
+}
+
+// The settings with one signed length parameter negated (a mirror of G73's relief, 5135 or 5136).
+ParamSettings negated(ParamSettings params, const std::string& number) {
+  for (auto& [name, value] : params) {
+    if (parameterNumber(name) == number) value = -value;
+  }
+  return params;
+}
+
+// The relations that hold for G73 as for G71/G72 read with it (lathe_program.h).
+std::optional<LatheProgram> readWithG73(const Program& p, const ParamSettings& params, std::string& whyNot) {
+  return readLatheProgram(p, params, whyNot, LatheFamilies::WithPatternRepeating);
 }
 
 // ---- expected paths -----------------------------------------------------------------------------
@@ -106,7 +108,8 @@ Relation mirrorZ() {
       "toolpath with z → −z and every arc reversed. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G72.ALLOW", "G72.POINTS", "G71.T1.RETRACT45", "G72.RETRACT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return mirrorGrooveZ(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo&, WordRole role, Word& w) {
       switch (role) {
@@ -114,6 +117,7 @@ Relation mirrorZ() {
         case WordRole::IncFirst:
         case WordRole::CentreFirst:
         case WordRole::AllowanceFirst:
+        case WordRole::ReliefFirst:
           setValue(w, -w.value);
           break;
         case WordRole::MotionCode:
@@ -123,7 +127,7 @@ Relation mirrorZ() {
           break;
       }
     });
-    return followUp(std::move(out), params,
+    return followUp(std::move(out), negated(params, "5136"),
                     [](const Toolpath& t) { return mapToolpath(t, [](Point q) { return Point{-q.z, q.x}; }, true); });
   };
   r.compare = compareToolpaths;
@@ -142,7 +146,8 @@ Relation mirrorX() {
       "lathe_program.h.";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G71.LIMIT.HEIGHT", "G72.ALLOW", "G72.POINTS"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return mirrorGrooveX(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     const double x0 = std::max(1.0, std::ceil(lathe->reach.xMax));
     Program out = mapWords(p, *lathe, [x0](const BlockInfo&, WordRole role, Word& w) {
@@ -153,6 +158,7 @@ Relation mirrorX() {
         case WordRole::IncSecond:
         case WordRole::CentreSecond:
         case WordRole::AllowanceSecond:
+        case WordRole::ReliefSecond:
           setValue(w, -w.value);
           break;
         case WordRole::MotionCode:
@@ -162,7 +168,7 @@ Relation mirrorX() {
           break;
       }
     });
-    return followUp(std::move(out), params, [x0](const Toolpath& t) {
+    return followUp(std::move(out), negated(params, "5135"), [x0](const Toolpath& t) {
       return mapToolpath(t, [x0](Point q) { return Point{q.z, 2 * x0 - q.x}; }, true);
     });
   };
@@ -181,7 +187,8 @@ Relation scale(double k) {
       "lathe_program.h.";
   r.rules = {"G71.OP", "G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.FST"};
   r.transform = [k](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return scaleGroove(k, p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [k](const BlockInfo&, WordRole role, Word& w) {
       if (isLength(role)) setValue(w, k * w.value);
@@ -192,6 +199,9 @@ Relation scale(double k) {
     }
     return followUp(std::move(out), std::move(scaled),
                     [k](const Toolpath& t) { return mapToolpath(t, [k](Point q) { return k * q; }, false); });
+  };
+  r.transformSiemens = [k](const SiemensSource& s, const ParamSettings& params, std::string& whyNot) {
+    return scaleSiemens(k, s, params, whyNot);
   };
   r.compare = compareToolpaths;
   return r;
@@ -206,7 +216,8 @@ Relation translateZ(double dz) {
       "lathe_program.h.";
   r.rules = {"G72.POINTS", "G71.OP", "G72.STEP5", "G71.DTP"};
   r.transform = [dz](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return translateGroove(Point{dz, 0}, p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [dz](const BlockInfo&, WordRole role, Word& w) {
       if (role == WordRole::AbsFirst) setValue(w, w.value + dz);
@@ -214,6 +225,9 @@ Relation translateZ(double dz) {
     return followUp(std::move(out), params, [dz](const Toolpath& t) {
       return mapToolpath(t, [dz](Point q) { return Point{q.z + dz, q.x}; }, false);
     });
+  };
+  r.transformSiemens = [dz](const SiemensSource& s, const ParamSettings& params, std::string& whyNot) {
+    return translateSiemens(Point{dz, 0}, s, params, whyNot);
   };
   r.compare = compareToolpaths;
   return r;
@@ -231,7 +245,8 @@ Relation translateX(double dx) {
       "Expected: x + dx. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G72.POINTS", "G71.OP", "G71.LIMIT.HEIGHT"};
   r.transform = [dx](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return translateGroove(Point{0, dx}, p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [dx](const BlockInfo&, WordRole role, Word& w) {
       if (role == WordRole::AbsSecond) setValue(w, w.value + 2 * dx);
@@ -239,6 +254,9 @@ Relation translateX(double dx) {
     return followUp(std::move(out), params, [dx](const Toolpath& t) {
       return mapToolpath(t, [dx](Point q) { return Point{q.z, q.x + dx}; }, false);
     });
+  };
+  r.transformSiemens = [dx](const SiemensSource& s, const ParamSettings& params, std::string& whyNot) {
+    return translateSiemens(Point{0, dx}, s, params, whyNot);
   };
   r.compare = compareToolpaths;
   return r;
@@ -258,7 +276,7 @@ Relation splitSegment() {
       "its cycle's start point. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.T1.SEMIFIN", "G72.STEP3", "G72.STEP7", "G71.T2.FOLLOW", "G71.T2.VALLEY", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     if (lathe->cycles.empty()) {
       whyNot = "no G71/G72 cycle: nothing to split";
@@ -298,7 +316,7 @@ Relation absoluteIncremental() {
       "the vocabulary of lathe_program.h.";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.HEAD.NOX", "G71.TYPE.SELECT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo& info, WordRole role, Word& w) {
       if (!info.shapeOf) return;
@@ -328,7 +346,7 @@ Relation radiusCentre() {
       "Expected: the same toolpath. Handles the vocabulary of lathe_program.h.";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.T1.MONO", "G71.T1.SEMIFIN", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
     Program out = p;
     for (std::size_t i = 0; i < out.blocks.size(); ++i) {
@@ -420,7 +438,8 @@ Relation metricInch() {
       "Expected: the same toolpath (always in mm), within a tolerance covering the printed digits.";
   r.rules = {"G72.RANGE", "G71.ALLOW.UNITS", "G71.FST"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return metricInchGroove(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo&, WordRole role, Word& w) {
       if (isLength(role) || role == WordRole::Feed) setValue(w, w.value / kMmPerInch);
@@ -573,7 +592,7 @@ std::optional<std::string> checkRelation(const Relation& relation, const FollowU
 }
 
 std::optional<Program> splitBlock(const Program& source, std::size_t blockIndex, std::string& whyNot) {
-  const auto lathe = readLatheProgram(source, whyNot);
+  const auto lathe = readLatheProgram(source, whyNot, LatheFamilies::WithPatternRepeating);
   if (!lathe || !finishesAtCycleStarts(source, *lathe, whyNot)) return std::nullopt;
   if (blockIndex >= source.blocks.size()) {
     whyNot = "no block " + std::to_string(blockIndex);

@@ -1,5 +1,5 @@
 #pragma once
-// Word rewriting shared by the relations (relations.cpp, format_relations.cpp): a word keeps its
+// Word rewriting shared by the relations (relations.cpp, format_relations.cpp, groove_relations.cpp): a word keeps its
 // place in the block, and its text is the writer's for the new letter and value.
 #include <string>
 
@@ -17,6 +17,22 @@ inline void setValue(Word& w, double value) {
 inline void rename(Word& w, char letter, double value) {
   w.letter = letter;
   setValue(w, value);
+}
+
+constexpr double kMmPerInch = 25.4;
+
+// Replaces every G code `from` (×10) by `to`, and makes sure the first block commands `to`, so
+// that the whole program runs in it (metric-inch: G21 → G20).
+inline void commandFromTheStart(Program& program, int from10, int to) {
+  for (Block& b : program.blocks) {
+    for (Word& w : b.words) {
+      if (w.letter == 'G' && gCode10(w.value) == from10) setValue(w, to);
+    }
+  }
+  if (!program.blocks.empty() && program.blocks.front().hasG(to * 10)) return;
+  Block b;
+  b.words.push_back(makeWord('G', to));
+  program.blocks.insert(program.blocks.begin(), b);
 }
 
 // A first cycle block (G71 U(Δd) R(e), G72 W(Δd) R(e)) without Δd, e and its cycle code: its other
