@@ -315,8 +315,8 @@ bool hasNoseRadius(const SpecCase& c) { return c.tool && c.tool->noseRadius > 0;
 TEST(SiemensRelations, HoldForTheReferenceOnTheSinumerikSpecCases) {
   ASSERT_GE(siemensCases().size(), 50u);
   // How many cases with moves each must transform at least (scale-k refuses the defaulted CYCLE95
-  // arguments and the arcs off their circle, and skips the nose-radius cases).
-  const std::map<std::string, int> least = {{"translate-z", 46}, {"translate-x", 46}, {"scale-k", 42}};
+  // arguments and the arcs off their circle, and skips the nose-radius cases; r-ik needs an arc).
+  const std::map<std::string, int> least = {{"translate-z", 46}, {"translate-x", 46}, {"scale-k", 42}, {"r-ik", 14}};
   for (const auto& [id, atLeast] : least) {
     const Relation& r = relation(id);
     ASSERT_TRUE(r.transformSiemens) << id;
@@ -358,6 +358,34 @@ TEST(SiemensRelations, TheRewritingTouchesOnlyTheNumbersItMeans) {
   EXPECT_EQ(moved->siemens->program.find("R108=3"), lcyc.program.find("R108=3"));  // R parameters untouched
 }
 
+TEST(SiemensRelations, RadiusCentreExchangesTheArcWordsInTheSubprograms) {
+  const Relation& r = relation("r-ik");
+  // The seed's L18: two CR= arcs become I/K arcs.
+  const SpecCase& seed = caseNamed(siemensCases(), "seed-l18-vari-9-as-printed");
+  SiemensVerdict v = judgeSiemens(r, seed);
+  ASSERT_TRUE(v.followUp) << v.whyNot;
+  const std::string& l18 = v.followUp->siemens->subprograms.at(0).second;
+  EXPECT_EQ(l18.find("CR="), std::string::npos) << l18;
+  EXPECT_NE(l18.find("G03X20Z-10I0 K-10"), std::string::npos) << l18;  // centre (z −10, x 0) from (0, 0)
+  EXPECT_FALSE(checkRelation(r, *v.followUp, v.source, v.actual, kTol));
+  // The dome's I/K arcs become CR= arcs; the same toolpath.
+  const SpecCase& dome = caseNamed(siemensCases(), "r105-1-dome-undercut-at-apex");
+  v = judgeSiemens(r, dome);
+  ASSERT_TRUE(v.followUp) << v.whyNot;
+  const std::string& d1 = v.followUp->siemens->subprograms.at(0).second;
+  EXPECT_NE(d1.find("CR=10"), std::string::npos) << d1;
+  EXPECT_EQ(d1.find("I0"), std::string::npos) << d1;
+  EXPECT_FALSE(checkRelation(r, *v.followUp, v.source, v.actual, kTol));
+  // A follow-up that reversed one arc (G3 → G2 with the same CR=) is another contour: detected.
+  SiemensSource wrong = *v.followUp->siemens;
+  const std::size_t g3 = wrong.subprograms.at(0).second.find("G3");
+  ASSERT_NE(g3, std::string::npos);
+  wrong.subprograms.at(0).second.replace(g3, 2, "G2");
+  FollowUp reversed = *v.followUp;
+  reversed.siemens = wrong;
+  EXPECT_TRUE(checkRelation(r, reversed, v.source, planSiemensFollowUp(dome, reversed), kTol)) << wrong.subprograms.at(0).second;
+}
+
 TEST(SiemensRelations, WhatTheyDoNotHandleIsRefusedWithTheReason) {
   // CYCLE95 with empty length arguments: their defaults would not scale.
   const SiemensVerdict defaults = judgeSiemens(relation("scale-k"), caseNamed(siemensCases(), "vari-9-complete-defaults"));
@@ -378,7 +406,7 @@ TEST(SiemensRelations, WhatTheyDoNotHandleIsRefusedWithTheReason) {
   EXPECT_FALSE(relation("translate-z").transformSiemens({"G0 X=AC(25) Z2\nM02\n", {}}, {}, why));
   EXPECT_NE(why.find("line 1, column 4"), std::string::npos) << why;
   // The relations written for the FANUC words do not take SINUMERIK texts.
-  for (const std::string id : {"mirror-z", "mirror-x", "split-segment", "abs-inc", "r-ik", "metric-inch"}) {
+  for (const std::string id : {"mirror-z", "mirror-x", "split-segment", "abs-inc", "metric-inch"}) {
     EXPECT_FALSE(relation(id).transformSiemens) << id;
   }
 }

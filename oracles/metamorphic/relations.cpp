@@ -105,7 +105,8 @@ Relation mirrorZ() {
       "Mirror in Z (z → −z): Z, W and K words change sign, and so does the allowance Δw (W of the P/Q "
       "block of G71 and G72); G72's Δd (W of its first block) does not; G02 ↔ G03. The cycle now runs "
       "towards the other end of the part (the other pair of FANUC's four patterns). Expected: the "
-      "toolpath with z → −z and every arc reversed. Handles the vocabulary of lathe_program.h.";
+      "toolpath with z → −z and every arc reversed. Handles the vocabulary of lathe_program.h."
+      " Also G73 (Δk and 5136 negated as well) and G74.1 programs (Z, W and h negated: groove_relations.h); README \"Families\".";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G72.ALLOW", "G72.POINTS", "G71.T1.RETRACT45", "G72.RETRACT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return mirrorGrooveZ(p, params, whyNot);
@@ -143,7 +144,8 @@ Relation mirrorX() {
       "contour becomes a bored inner one. X words (diameters) become 4·x0 − X; U and I words and the "
       "allowance Δu (U of the P/Q block) change sign; G71's Δd (U of its first block) does not; "
       "G02 ↔ G03. Expected: x → 2·x0 − x and every arc reversed. Handles the vocabulary of "
-      "lathe_program.h.";
+      "lathe_program.h."
+      " Also G73 (Δi and 5135 negated as well; x0 covers the passes) and G74.1 programs (d negated: groove_relations.h); README \"Families\".";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G71.LIMIT.HEIGHT", "G72.ALLOW", "G72.POINTS"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return mirrorGrooveX(p, params, whyNot);
@@ -184,7 +186,8 @@ Relation scale(double k) {
       "and the length parameters 5132, 5133, 5134, 5145, 5146 among the settings. F is not scaled: "
       "it is a rate (mm/min or mm/rev) that the cycle copies onto its cutting moves, not a length of "
       "the geometry. Expected: every point × k, feeds unchanged. Handles the vocabulary of "
-      "lathe_program.h.";
+      "lathe_program.h."
+      " Also G73 (Δi, Δk, 5135, 5136 scaled; d not), G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G71.OP", "G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.FST"};
   r.transform = [k](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return scaleGroove(k, p, params, whyNot);
@@ -213,7 +216,8 @@ Relation translateZ(double dz) {
   r.description =
       "Translate along Z by dz (registered with dz = 12.5 mm): every Z word + dz; W, K, R, the cycle "
       "words unchanged (they are relative). Expected: z + dz. Handles the vocabulary of "
-      "lathe_program.h.";
+      "lathe_program.h."
+      " Also G73, G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G72.POINTS", "G71.OP", "G72.STEP5", "G71.DTP"};
   r.transform = [dz](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return translateGroove(Point{dz, 0}, p, params, whyNot);
@@ -242,7 +246,8 @@ Relation translateX(double dx) {
       "the spindle axis no longer does, and G96's spindle speeds change — but one of the documented "
       "algorithm, whose every step is relative to the start point A, the allowances and Δd: an engine "
       "that treats x = 0 or absolute radii specially fails it. Outwards only, so radii stay ≥ 0. "
-      "Expected: x + dx. Handles the vocabulary of lathe_program.h.";
+      "Expected: x + dx. Handles the vocabulary of lathe_program.h."
+      " Also G73, G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G72.POINTS", "G71.OP", "G71.LIMIT.HEIGHT"};
   r.transform = [dx](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return translateGroove(Point{0, dx}, p, params, whyNot);
@@ -273,7 +278,8 @@ Relation splitSegment() {
       "is never split (for type I it alone defines B). Expected: the same geometry — compared after "
       "joining consecutive moves that continue one another (mergeContinuations), since the semi-finish "
       "and finishing passes trace the split block as two moves. Refuses a G70 that does not start at "
-      "its cycle's start point. Handles the vocabulary of lathe_program.h.";
+      "its cycle's start point. Handles the vocabulary of lathe_program.h."
+      " Also G73 (README \"Families\").";
   r.rules = {"G71.T1.SEMIFIN", "G72.STEP3", "G72.STEP7", "G71.T2.FOLLOW", "G71.T2.VALLEY", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     const auto lathe = readWithG73(p, params, whyNot);
@@ -313,7 +319,7 @@ Relation absoluteIncremental() {
       "from where the block starts (U = X − 2·x, diameters). A type II head's W0/U0 becomes an "
       "absolute word and still commands the axis. Blocks outside the shapes are left alone. Refuses "
       "a G70 that does not start at its cycle's start point. Expected: the same toolpath. Handles "
-      "the vocabulary of lathe_program.h.";
+      "the vocabulary of lathe_program.h. Also G73 (README \"Families\").";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.HEAD.NOX", "G71.TYPE.SELECT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     const auto lathe = readWithG73(p, params, whyNot);
@@ -343,7 +349,8 @@ Relation radiusCentre() {
       "radius values, I along X, K along Z), every one with I/K gets R (negative for an arc of more "
       "than 180°). Refuses an I/K arc whose end is off the circle by more than 1e-6 mm (R would "
       "place the centre elsewhere) and a G70 that does not start at its cycle's start point. "
-      "Expected: the same toolpath. Handles the vocabulary of lathe_program.h.";
+      "Expected: the same toolpath. Handles the vocabulary of lathe_program.h."
+      " Also G73, and SINUMERIK texts (transformSiemens: CR= ⇄ I/K in program and subprograms); README \"Families\".";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.T1.MONO", "G71.T1.SEMIFIN", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     const auto lathe = readWithG73(p, params, whyNot);
@@ -370,6 +377,7 @@ Relation radiusCentre() {
     }
     return followUp(std::move(out), params, samePath);
   };
+  r.transformSiemens = radiusCentreSiemens;
   r.compare = compareToolpaths;
   return r;
 }
@@ -435,7 +443,9 @@ Relation metricInch() {
       "increment (0.0001 in): rounding would move pass levels and could change the number of passes, a "
       "discrete change no tolerance covers. Parameters are unchanged (cyclecert keeps length "
       "parameters in mm). S (G96's surface speed) is not converted: it does not change the toolpath. "
-      "Expected: the same toolpath (always in mm), within a tolerance covering the printed digits.";
+      "Expected: the same toolpath (always in mm), within a tolerance covering the printed digits. Also G73 (Δi, Δk "
+      "converted, d not) and G74.1 programs (groove_relations.h: P/Q in increments only when whole); README "
+      "\"Families\".";
   r.rules = {"G72.RANGE", "G71.ALLOW.UNITS", "G71.FST"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return metricInchGroove(p, params, whyNot);

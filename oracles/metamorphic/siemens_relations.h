@@ -25,4 +25,12 @@ std::optional<FollowUp> translateSiemens(Point shift, const SiemensSource& sourc
 std::optional<FollowUp> scaleSiemens(double k, const SiemensSource& source, const ParamSettings& params,
                                      std::string& whyNot);
 
+// r-ik: every arc block with CR= gets I K (the centre from the arc's start; I along X as a radius,
+// K along Z), every one with I/K gets CR= (negative above 180°), in the program and the
+// subprograms. Refused: an I/K arc whose end is off its circle by more than 1e-6 mm (CR= would move
+// the centre), an arc whose start the text does not set (a subprogram's first block), a text without
+// arcs. Expected: the same toolpath.
+std::optional<FollowUp> radiusCentreSiemens(const SiemensSource& source, const ParamSettings& params,
+                                            std::string& whyNot);
+
 }  // namespace cyclecert

@@ -74,11 +74,13 @@ class LineReader {
                   std::string(at.text) + ": " + why);
   }
 
-  void note(const SiemensToken& number, SiemensRole role, const std::string& address, const std::string& what) {
+  void note(const SiemensToken& word, const SiemensToken& number, SiemensRole role, const std::string& address,
+            const std::string& what) {
     SiemensNumber n;
     n.text = text_;
     n.offset = lineOffset_ + static_cast<std::size_t>(number.column - 1);
     n.length = number.text.size();
+    n.wordOffset = lineOffset_ + static_cast<std::size_t>(word.column - 1);
     n.value = number.number;
     n.decimalPoint = number.text.find('.') != std::string_view::npos;
     n.role = role;
@@ -101,7 +103,7 @@ class LineReader {
     if (upper == "R" && current_.kind == SiemensTokenKind::Equals) {
       advance();
       const SiemensToken assigned = number();
-      note(assigned, parameterRole(value.number), "R" + std::string(value.text),
+      note(name, assigned, parameterRole(value.number), "R" + std::string(value.text),
            "R" + std::string(value.text) + "=" + std::string(assigned.text));
       return;
     }
@@ -110,11 +112,13 @@ class LineReader {
       cycle95Arguments(name);
       return;
     }
-    if (upper.size() > 1 && !(upper == "LCYC" && value.number == 95)) refuse(name, "not in the relations' vocabulary");
+    if (upper.size() > 1 && !(upper == "LCYC" && value.number == 95)) {
+      refuse(name, std::string(value.text) + " is not in the relations' vocabulary (of the cycles, LCYC95 and CYCLE95 are)");
+    }
     if (upper.size() == 1 && std::string_view("GXZIKFSTDMNL").find(upper[0]) == std::string_view::npos) {
       refuse(name, "this address is not in the relations' vocabulary");
     }
-    note(value, addressRole(upper), upper, upper + std::string(value.text));
+    note(name, value, addressRole(upper), upper, upper + std::string(value.text));
   }
 
   void refuseGCode(const SiemensToken& value) {
@@ -135,7 +139,8 @@ class LineReader {
     const bool corner = upper == "CHF" || upper == "CHR" || upper == "RND";
     if (upper != "CR" && !corner) refuse(name, "this NAME= is not in the relations' vocabulary");
     const SiemensToken value = number();
-    note(value, corner ? SiemensRole::CornerLength : SiemensRole::ArcRadius, upper, upper + "=" + std::string(value.text));
+    note(name, value, corner ? SiemensRole::CornerLength : SiemensRole::ArcRadius, upper,
+         upper + "=" + std::string(value.text));
   }
 
   void keyword(const SiemensToken& name, const std::string& upper) {
@@ -152,7 +157,7 @@ class LineReader {
     while (true) {
       if (current_.kind == SiemensTokenKind::Number) {
         const auto length = cycle95LengthArguments().find(position);
-        note(current_, length != cycle95LengthArguments().end() ? SiemensRole::CycleLength : SiemensRole::CycleOther,
+        note(current_, current_, length != cycle95LengthArguments().end() ? SiemensRole::CycleLength : SiemensRole::CycleOther,
              "CYCLE95", "CYCLE95 argument " + std::to_string(position) + " " + std::string(current_.text));
         given.insert(position);
         advance();
@@ -232,17 +237,28 @@ std::optional<SiemensWords> readSiemensWords(const SiemensSource& source, std::s
   return out;
 }
 
-SiemensSource rewriteNumbers(const SiemensSource& source, const std::vector<std::pair<SiemensNumber, double>>& changes) {
+SiemensSource applyEdits(const SiemensSource& source, std::vector<SiemensTextEdit> edits) {
   SiemensSource out = source;
-  std::vector<std::pair<SiemensNumber, double>> lastFirst = changes;
-  std::sort(lastFirst.begin(), lastFirst.end(), [](const auto& a, const auto& b) {
-    return a.first.text != b.first.text ? a.first.text < b.first.text : a.first.offset > b.first.offset;
+  std::sort(edits.begin(), edits.end(), [](const SiemensTextEdit& a, const SiemensTextEdit& b) {
+    return a.text != b.text ? a.text < b.text : a.from > b.from;  // last first: earlier offsets stay valid
   });
-  for (const auto& [n, value] : lastFirst) {
-    std::string& text = n.text == 0 ? out.program : out.subprograms[n.text - 1].second;
-    text.replace(n.offset, n.length, formatNumber(value, n.decimalPoint));
+  for (const SiemensTextEdit& e : edits) {
+    std::string& text = e.text == 0 ? out.program : out.subprograms[e.text - 1].second;
+    text.replace(e.from, e.to - e.from, e.replacement);
   }
   return out;
+}
+
+SiemensSource rewriteNumbers(const SiemensSource& source, const std::vector<std::pair<SiemensNumber, double>>& changes) {
+  std::vector<SiemensTextEdit> edits;
+  for (const auto& [n, value] : changes) {
+    edits.push_back({n.text, n.offset, n.offset + n.length, formatNumber(value, n.decimalPoint)});
+  }
+  return applyEdits(source, std::move(edits));
+}
+
+SiemensTextEdit replaceWord(const SiemensNumber& word, std::string replacement) {
+  return {word.text, word.wordOffset, word.offset + word.length, std::move(replacement)};
 }
 
 }  // namespace cyclecert

@@ -49,6 +49,7 @@ struct SiemensNumber {
   std::size_t text = 0;    // 0: the program, k ≥ 1: subprograms[k − 1]
   std::size_t offset = 0;  // in that text
   std::size_t length = 0;
+  std::size_t wordOffset = 0;  // where its word starts: the address ("CR" of "CR=10", "X" of "X20")
   double value = 0;
   bool decimalPoint = false;
   SiemensRole role = SiemensRole::Other;
@@ -71,5 +72,16 @@ std::optional<SiemensWords> readSiemensWords(const SiemensSource& source, std::s
 // The source with each given number's characters replaced by its new value (formatted as the G-code
 // writer formats numbers, keeping a decimal point the number had).
 SiemensSource rewriteNumbers(const SiemensSource& source, const std::vector<std::pair<SiemensNumber, double>>& changes);
+
+// A replacement of characters of one text: [from, to) of the program (text 0) or of
+// subprograms[text − 1]. Edits must not overlap.
+struct SiemensTextEdit {
+  std::size_t text = 0, from = 0, to = 0;
+  std::string replacement;
+};
+SiemensSource applyEdits(const SiemensSource& source, std::vector<SiemensTextEdit> edits);
+
+// The edit that replaces a whole word ("CR=10", "I0") by `replacement` ("" removes it).
+SiemensTextEdit replaceWord(const SiemensNumber& word, std::string replacement);
 
 }  // namespace cyclecert
