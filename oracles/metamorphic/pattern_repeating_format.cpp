@@ -30,17 +30,6 @@ struct ReliefWords {
   }
 };
 
-// A first G73 block without Δi, Δk, d and its code: its other words (F S T M) stay as a plain
-// block. True when nothing is left of it.
-bool dropReliefWords(Block& b, const BlockInfo& info) {
-  std::erase_if(b.words, [&](const Word& w) {
-    const WordRole role = roleOf(info, w);
-    return role == WordRole::ReliefFirst || role == WordRole::ReliefSecond || role == WordRole::Divisions ||
-           role == WordRole::CycleCode;
-  });
-  return b.words.empty() && !b.sequence;
-}
-
 void insertBeforeFeed(Block& b, Word w) {
   const auto feed = std::find_if(b.words.begin(), b.words.end(), [](const Word& x) { return x.letter == 'F'; });
   b.words.insert(feed, std::move(w));
@@ -69,7 +58,7 @@ std::optional<FollowUp> patternRepeatingToSeries10(const Program& p, const Param
     const BlockInfo& info = lathe->blocks[i];
     if (info.kind == BlockKind::CycleFirst) {
       inForce.read(p.blocks[i], info);
-      if (dropReliefWords(out.blocks[i], info)) emptied.push_back(i);
+      if (dropFirstBlockWords(out.blocks[i], info)) emptied.push_back(i);
     }
     if (info.kind != BlockKind::CycleSecond) continue;
     if (inForce.d && (*inForce.d != std::floor(*inForce.d) || *inForce.d < 0)) {

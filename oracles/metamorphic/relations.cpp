@@ -87,6 +87,18 @@ std::optional<LatheProgram> readWithG73(const Program& p, const ParamSettings& p
   return readLatheProgram(p, params, whyNot, LatheFamilies::WithPatternRepeating);
 }
 
+// The parameter a first block's word writes (G71.DD.MODAL, G71.E.MODAL, G73.PARAMS), if any.
+std::optional<std::string> parameterOf(WordRole role) {
+  switch (role) {
+    case WordRole::DepthOfCut: return "5132";
+    case WordRole::Retract: return "5133";
+    case WordRole::ReliefSecond: return "5135";
+    case WordRole::ReliefFirst: return "5136";
+    case WordRole::Divisions: return "5137";
+    default: return std::nullopt;
+  }
+}
+
 // ---- expected paths -----------------------------------------------------------------------------
 
 Toolpath samePath(const Toolpath& t) { return t; }
@@ -469,10 +481,12 @@ Relation parameterDefault() {
       "Δd, e and its cycle code — its other words (F S T M) stay as a plain block, an empty block "
       "goes — and the settings gain 5132 = Δd and 5133 = e (what the block would have written). Only "
       "a program with exactly one first block, before its first P/Q block, is handled (later first "
-      "blocks would change the parameters between cycles). Expected: the same toolpath.";
-  r.rules = {"G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ADDR.SHARED"};
+      "blocks would change the parameters between cycles). G73's first block U(Δi) W(Δk) R(d) goes to "
+      "5135, 5136 and 5137 (G73.PARAMS; a d that is not a whole number is refused: the block alarms "
+      "PS0003, the parameter would not). Expected: the same toolpath.";
+  r.rules = {"G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ADDR.SHARED", "G73.PARAMS"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     std::optional<std::size_t> first;
     for (std::size_t i = 0; i < lathe->blocks.size(); ++i) {
@@ -484,7 +498,7 @@ Relation parameterDefault() {
       first = i;
     }
     if (!first) {
-      whyNot = "no first G71/G72 block (Δd, e): nothing to move into parameters";
+      whyNot = "no first G71/G72 block (Δd, e) or G73 block (Δi, Δk, d): nothing to move into parameters";
       return std::nullopt;
     }
     if (lathe->cycles.empty() || lathe->cycles.front().block < *first) {
@@ -495,9 +509,14 @@ Relation parameterDefault() {
     ParamSettings settings = params;
     Block& b = out.blocks[*first];
     for (const Word& w : b.words) {
-      const WordRole role = roleOf(lathe->blocks[*first], w);
-      if (role == WordRole::DepthOfCut) settings.push_back({"5132", w.value});
-      if (role == WordRole::Retract) settings.push_back({"5133", w.value});
+      if (const auto number = parameterOf(roleOf(lathe->blocks[*first], w))) {
+        if (*number == "5137" && (w.value != std::floor(w.value) || w.value > 99'999'999)) {
+          whyNot = "line " + std::to_string(b.line) + ": " + w.text +
+                   ": not a whole number of divisions (PS0003 in the block; parameter 5137 would be read otherwise)";
+          return std::nullopt;
+        }
+        settings.push_back({*number, w.value});
+      }
     }
     if (dropFirstBlockWords(b, lathe->blocks[*first])) out.blocks.erase(out.blocks.begin() + static_cast<std::ptrdiff_t>(*first));
     return followUp(std::move(out), std::move(settings), samePath);
@@ -518,10 +537,11 @@ Relation transpose() {
       "(z, x) → (x, z + c), every arc reversed, alarms PS0064 ⇄ PS0329. G71.LIMIT.HEIGHT has no G72 "
       "counterpart, so a G72 program whose shape passes its start point's z in the allowance's "
       "direction alarms PS0322 once transposed: the relation then fails by design. Handles the "
-      "vocabulary of lathe_program.h.";
+      "vocabulary of lathe_program.h. G73 stays G73: its reliefs exchange axes, Δk (W) → Δi U, Δi (U, a "
+      "radius) → Δk W, with parameters 5135 ⇄ 5136 (README \"Families\").";
   r.rules = {"G72.FMT", "G72.POINTS", "G72.DD", "G72.ALLOW", "G71.OP", "G72.STEP3", "G72.RETRACT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     const double c = std::max(0.0, std::ceil(-lathe->reach.zMin));
     Program out = mapWords(p, *lathe, [c](const BlockInfo& info, WordRole role, Word& w) {
@@ -535,9 +555,11 @@ Relation transpose() {
         case WordRole::DepthOfCut: rename(w, info.cycle == 71 ? 'W' : 'U', w.value); break;
         case WordRole::AllowanceFirst: rename(w, 'U', 2 * w.value); break;
         case WordRole::AllowanceSecond: rename(w, 'W', w.value / 2); break;
+        case WordRole::ReliefFirst: rename(w, 'U', w.value); break;   // Δk becomes Δi, a radius value
+        case WordRole::ReliefSecond: rename(w, 'W', w.value); break;  // Δi (a radius) becomes Δk
         case WordRole::MotionCode: reverseArcCode(w); break;
         case WordRole::CycleCode:
-          if (gCode10(w.value) != 700) setValue(w, gCode10(w.value) == 710 ? 72 : 71);
+          if (gCode10(w.value) == 710 || gCode10(w.value) == 720) setValue(w, gCode10(w.value) == 710 ? 72 : 71);
           break;
         default: break;
       }
@@ -547,6 +569,8 @@ Relation transpose() {
       const std::string n = parameterNumber(name);
       if (n == "5145") name = "5146";
       if (n == "5146") name = "5145";
+      if (n == "5135") name = "5136";  // G73's reliefs follow their axes too
+      if (n == "5136") name = "5135";
     }
     return followUp(std::move(out), std::move(swapped), [c](const Toolpath& t) {
       Toolpath e = mapToolpath(t, [c](Point q) { return Point{q.x, q.z + c}; }, true);

@@ -35,12 +35,22 @@ inline void commandFromTheStart(Program& program, int from10, int to) {
   program.blocks.insert(program.blocks.begin(), b);
 }
 
-// A first cycle block (G71 U(Δd) R(e), G72 W(Δd) R(e)) without Δd, e and its cycle code: its other
-// words (F S T M) stay as a plain block. True when nothing is left of it (no word, no N).
+// A first cycle block (G71 U(Δd) R(e), G72 W(Δd) R(e), G73 U(Δi) W(Δk) R(d)) without those words and
+// its cycle code: its other words (F S T M) stay as a plain block. True when nothing is left of it
+// (no word, no N).
 inline bool dropFirstBlockWords(Block& b, const BlockInfo& info) {
   std::erase_if(b.words, [&](const Word& w) {
-    const WordRole role = roleOf(info, w);
-    return role == WordRole::DepthOfCut || role == WordRole::Retract || role == WordRole::CycleCode;
+    switch (roleOf(info, w)) {
+      case WordRole::DepthOfCut:
+      case WordRole::Retract:
+      case WordRole::ReliefFirst:
+      case WordRole::ReliefSecond:
+      case WordRole::Divisions:
+      case WordRole::CycleCode:
+        return true;
+      default:
+        return false;
+    }
   });
   return b.words.empty() && !b.sequence;
 }
