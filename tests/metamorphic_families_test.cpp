@@ -121,6 +121,7 @@ const std::map<std::string, int>& g73Relations() {
       {"mirror-z", 12}, {"mirror-x", 12},      {"translate-z", 12}, {"translate-x", 12}, {"scale-k", 12},
       {"split-segment", 12}, {"abs-inc", 12}, {"r-ik", 12},        {"metric-inch", 12},
       {"param-default", 11},   {"transpose", 12},  // defaults-from-params has no first block to move
+      {"plane-g17", 12},       {"plane-g19", 12},
       {"fs10-one-block", 12},  // the cross-format relation: the Series 10/11 block (G73.FS10.FMT)
   };
   return relations;
@@ -186,6 +187,27 @@ TEST(G73Relations, AMirrorThatKeepsTheReliefsSignIsDetected) {
   }
 }
 
+// In G17 the 1st axis X is a diameter axis: Δw in U is doubled (an allowance), Δk in U is not (a
+// distance, G73.FMT). A follow-up that doubled Δk as well is detected.
+TEST(G73Relations, APlaneChangeThatDoublesTheReliefIsDetected) {
+  const SpecCase& c = caseNamed(g73Cases(), "dk-relief-along-z");
+  const Relation& r = relation("plane-g17");
+  std::string why;
+  const auto f = r.transform(parseProgram(c.program, c.file), c.params, why);
+  ASSERT_TRUE(f) << why;
+  const Toolpath source = planSpecCase(c);
+  ASSERT_FALSE(checkRelation(r, *f, source, planFollowUp(c, f->program, *f), kTol));
+  const std::string text = writeProgram(f->program);
+  const Program p = parseProgram(text, "follow-up.nc");
+  double dk = 0;
+  for (const Block& b : p.blocks) {
+    if (b.hasG(730) && !b.has('P') && b.has('U')) dk = b.find('U')->value;
+  }
+  ASSERT_NE(dk, 0);
+  const std::string doubled = withFirstG73Word(text, 'U', 2 * dk);
+  EXPECT_TRUE(checkRelation(r, *f, source, planFollowUp(c, parseProgram(doubled, "doubled.nc"), *f), kTol)) << doubled;
+}
+
 TEST(G73Relations, ParameterReliefsAreMirroredAndScaledWithTheWords) {
   // defaults-from-params: Δi/Δk/d come from 5135/5136/5137 — the settings must follow the relation.
   const SpecCase& c = caseNamed(g73Cases(), "defaults-from-params");
@@ -199,7 +221,7 @@ TEST(G73Relations, ParameterReliefsAreMirroredAndScaledWithTheWords) {
 
 TEST(G73Relations, WhatTheyDoNotHandleIsRefusedWithTheReason) {
   const SpecCase& seed = caseNamed(g73Cases(), "seed004-g73-g70");
-  for (const std::string id : {"plane-g17", "plane-g19", "hnc-one-block", "haas-one-block", "gsys-b", "gsys-c"}) {
+  for (const std::string id : {"hnc-one-block", "haas-one-block", "gsys-b", "gsys-c"}) {
     const Verdict v = judge(relation(id), seed);
     EXPECT_FALSE(v.transformed) << id;
     EXPECT_NE(v.whyNot.find("G73"), std::string::npos) << id << ": " << v.whyNot;

@@ -405,16 +405,18 @@ Relation plane(int gCode) {
             "2·Z, X → Y X/2, W → U 2·W, U → V U/2, K → I, I → J, Δd U → V, Δw W → U 2·Δw, Δu U → V Δu/2; "
             "G18 → G17 (a G17 block first when the program has none). Expected: the same toolpath (every "
             "plane is mapped onto z = 1st axis, x = 2nd axis). G72 is refused: the seeds give the "
-            "planes' formats for G71 only. Handles the vocabulary of lathe_program.h."
+            "planes' formats for G71 only. Handles the vocabulary of lathe_program.h. G73 (G73.PLANE): Δk and "
+            "Δi go to the plane's 1st and 2nd incremental addresses as they are (never halved, G73.FMT)."
           : "G18 → G19 for G71 (G71.FMT.YZ: `G71 W(Δd) R(e); G71 P Q V(Δw) W(Δu)`): the 1st axis Z becomes "
             "Y, the 2nd axis X becomes Z (both radius: X values halved). Z → Y, X → Z X/2, W → V, U → W "
             "U/2, K → J, I → K, Δd U → W, Δw W → V, Δu U → W Δu/2; G18 → G19 (a G19 block first when the "
             "program has none). Expected: the same toolpath. G72 is refused: the seeds give the planes' "
-            "formats for G71 only. Handles the vocabulary of lathe_program.h.";
-  r.rules = {gCode == 17 ? "G71.FMT.XY" : "G71.FMT.YZ", "G71.FMT.ZX", "G71.ALLOW.UNITS", "G71.ADDR.SHARED"};
+            "formats for G71 only. Handles the vocabulary of lathe_program.h. G73 (G73.PLANE): Δk → V, Δi → W "
+            "as they are (never halved, G73.FMT).";
+  r.rules = {gCode == 17 ? "G71.FMT.XY" : "G71.FMT.YZ", "G71.FMT.ZX", "G71.ALLOW.UNITS", "G71.ADDR.SHARED", "G73.PLANE"};
   r.transform = [gCode, to](const Program& p, const ParamSettings& params,
                             std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     for (const RoughingCycleInfo& c : lathe->cycles) {
       if (c.code == 72) {
@@ -435,6 +437,9 @@ Relation plane(int gCode) {
         case WordRole::DepthOfCut: rename(w, to.secondInc, w.value); break;  // G71.ADDR.SHARED
         case WordRole::AllowanceFirst: rename(w, to.firstInc, first * w.value); break;
         case WordRole::AllowanceSecond: rename(w, to.secondInc, second * w.value / 2); break;
+        // G73.FMT, G73.PLANE: Δk and Δi are distances along the plane's axes, never halved or doubled.
+        case WordRole::ReliefFirst: rename(w, to.firstInc, w.value); break;
+        case WordRole::ReliefSecond: rename(w, to.secondInc, w.value); break;
         default: break;
       }
     });
