@@ -1,9 +1,12 @@
 // The metamorphic relations on the cycle families beyond G71/G72 (oracles/metamorphic/README.md,
-// "Families"): G73, G74.1 and SINUMERIK LCYC95/CYCLE95. For each family, (a) the relations that handle it hold for the
-// reference on the family's spec cases (specs/cases/**), (b) a follow-up that gets a sign of the
-// derivation wrong, or a path off by a little, is detected, (c) what a relation does not handle is
-// refused with the reason. The relations never plan: the tests do, with the reference.
+// "Families"): G73, G74.1 and SINUMERIK LCYC95/CYCLE95. For each family, (a) the relations that
+// handle it hold for the reference on the family's spec cases (specs/cases/**) and on the fuzzer's
+// drawn cases, (b) a follow-up that gets a sign of the derivation wrong, or a path off by a little,
+// is detected, (c) what a relation does not handle is refused with the reason. The relations never
+// plan: the tests do, with the reference.
 #include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/fuzz/case_generator.h"
 #include "harness/reference_plan.h"
 #include "harness/spec_case.h"
 #include "oracles/metamorphic/path_compare.h"
@@ -443,6 +447,57 @@ TEST(SiemensRelations, AFollowUpOffByALittleIsDetected) {
   ASSERT_GE(v.actual.moves.size(), 3u);
   v.actual.moves[v.actual.moves.size() / 2].to.z -= 3 * kTol;
   EXPECT_TRUE(checkRelation(r, *v.followUp, v.source, v.actual, kTol));
+}
+
+// ---- the fuzzer's cases: every relation that takes a drawn case holds on it ------------------------
+
+// The relation on one drawn case: holds, or is refused (false); reports the follow-up when it does
+// not hold.
+bool holdsOnDrawnCase(const Relation& r, const SpecCase& c) {
+  if (c.profile.starts_with("sinumerik")) {  // sinumerik-802s, sinumerik-802d
+    if (!r.transformSiemens || (r.id == "scale-k" && hasNoseRadius(c))) return false;
+    SiemensVerdict v = judgeSiemens(r, c);
+    if (!v.followUp) return false;
+    if (const auto d = checkRelation(r, *v.followUp, v.source, v.actual, kTol)) {
+      RC_FAIL(r.id + ": " + *d + "\nsource:\n" + c.program + "\nfollow-up:\n" + v.followUp->siemens->program);
+    }
+    return true;
+  }
+  const Verdict v = judge(r, c);
+  if (v.divergence) RC_FAIL(r.id + ": " + *v.divergence + "\nsource:\n" + c.program + "\nfollow-up:\n" + v.followUpText);
+  return v.transformed;
+}
+
+// The relations hold on RapidCheck's drawn cases, and take at least `share` of the (case, relation)
+// pairs (so that the property is not vacuous).
+void holdsOnDrawnCases(const rc::Gen<FuzzCase>& gen, const std::vector<std::string>& ids, double share) {
+  int pairs = 0, transformed = 0;
+  const auto property = [&] {
+    const SpecCase c = fuzzSpecCase(*gen, "drawn");
+    for (const std::string& id : ids) {
+      ++pairs;
+      if (holdsOnDrawnCase(relation(id), c)) ++transformed;
+    }
+  };
+  EXPECT_TRUE(rc::check("the family's relations hold on drawn cases", property));
+  EXPECT_GE(transformed, share * pairs) << transformed << " of " << pairs << " transformed";
+}
+
+TEST(FamilyRelations, HoldOnTheFuzzersG73Cases) {
+  std::vector<std::string> ids;
+  for (const auto& [id, least] : g73Relations()) ids.push_back(id);
+  holdsOnDrawnCases(genG73Case(), ids, 0.8);  // 97% when written
+}
+
+TEST(FamilyRelations, HoldOnTheFuzzersG74_1Cases) {
+  std::vector<std::string> ids;
+  for (const auto& [id, least] : g74_1Relations()) ids.push_back(id);
+  holdsOnDrawnCases(genG74_1Case(), ids, 0.8);  // 92% when written
+}
+
+TEST(FamilyRelations, HoldOnTheFuzzersSinumerikCases) {
+  holdsOnDrawnCases(genSiemensCase({FuzzCycle::Lcyc95, FuzzCycle::Cycle95}), {"translate-z", "translate-x", "scale-k", "r-ik"},
+                    0.8);  // 97% when written
 }
 
 // ---- both families: an expectation off by a little is detected ------------------------------------
