@@ -6,6 +6,7 @@
 #include "oracles/metamorphic/g_code_writing.h"
 #include "oracles/metamorphic/lathe_program.h"
 #include "oracles/metamorphic/path_compare.h"
+#include "oracles/metamorphic/pattern_repeating_format.h"
 #include "oracles/metamorphic/word_edit.h"
 #include "reference/gcode/writer.h"
 #include "reference/interpreter/g_codes.h"
@@ -350,10 +351,12 @@ Relation series10OneBlockRelation() {
       "loses Δd, e and its code (its F S T M stay as a plain block), and every P/Q block gets D = the Δd in "
       "force in least input increments (D1500 = 1.5 mm; Δd finer than 0.001 mm is refused); the settings gain "
       "5133 = e (the format has no address for e: refused when the cycles' e differ) and FCV = 1. Refuses a "
-      "cycle without a programmed Δd before it (D would have nothing to say). Expected: the same toolpath. "
-      "Handles the vocabulary of lathe_program.h.";
-  r.rules = {"G71.FS10.FMT", "G71.FS10.D", "G71.DD.MODAL", "G71.E.MODAL"};
+      "cycle without a programmed Δd before it (D would have nothing to say). G73 programs: `G73 U(Δi) W(Δk) "
+      "R(d); G73 P Q U W F` becomes `G73 P Q U W I(Δi) K(Δk) D(d) F` (pattern_repeating_format.h), FCV = 1. "
+      "Expected: the same toolpath. Handles the vocabulary of lathe_program.h.";
+  r.rules = {"G71.FS10.FMT", "G71.FS10.D", "G71.DD.MODAL", "G71.E.MODAL", "G73.FS10.FMT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) {
+    if (hasPatternRepeating(p)) return patternRepeatingToSeries10(p, params, whyNot);
     return toOneBlock(p, params, OneBlockDialect::Series10, whyNot);
   };
   r.compare = compareToolpaths;

@@ -18,6 +18,9 @@ namespace {
 
 bool isMotionCode(int g10) { return g10 == 0 || g10 == 10 || g10 == 20 || g10 == 30; }
 bool isCycleCode(int g10) { return g10 == 700 || g10 == 710 || g10 == 720; }
+bool isCycleCode(int g10, LatheFamilies families) {
+  return isCycleCode(g10) || (families == LatheFamilies::WithPatternRepeating && g10 == 730);
+}
 bool isOtherCode(int g10) {
   static const std::set<int> codes = {180, 210, 400, 960, 970, 980, 990};
   return codes.count(g10) != 0;
@@ -30,6 +33,11 @@ std::string refusalOfCode(int g10) {
     return "nose-radius compensation is not handled (a mirror changes its side and the tool's tip)";
   }
   if (g10 == 40) return "G04's X/U is a dwell time, not a length";
+  if (g10 == 730) return "this relation does not handle G73 (pattern repeating; see oracles/metamorphic/README.md)";
+  if (g10 == 741) {
+    return "G74.1 (GSK's groove cycle) is handled by mirror-z, mirror-x, translate-z, translate-x, scale-k and "
+           "metric-inch only (groove_program.h)";
+  }
   return "this G code is not in the relations' vocabulary";
 }
 
@@ -43,7 +51,11 @@ class Refusal : public std::runtime_error {
 
 class Reader {
  public:
-  explicit Reader(const Program& program) : program_(program) { out_.blocks.resize(program.blocks.size()); }
+  // relief: G73's (Δk, Δi) before the program sets it (parameters 5136, 5135).
+  Reader(const Program& program, LatheFamilies families, Point relief)
+      : program_(program), families_(families), relief_(relief) {
+    out_.blocks.resize(program.blocks.size());
+  }
 
   LatheProgram read() {
     for (std::size_t i = 0; i < program_.blocks.size(); ++i) classify(i);
@@ -57,6 +69,7 @@ class Reader {
           ++i;
           break;
         case BlockKind::CycleFirst:
+          if (out_.blocks[i].cycle == 73) noteRelief(program_.blocks[i]);
           ++i;
           break;
         case BlockKind::CycleSecond:
@@ -83,6 +96,7 @@ class Reader {
   void classify(std::size_t i) {
     const Block& b = program_.blocks[i];
     BlockInfo& info = out_.blocks[i];
+    if (b.hasG(741)) refuse(b, "G74.1", refusalOfCode(741));  // before its words, which are not ours either
     int motionCodes = 0, cycleCode = 0;
     std::set<char> seen;
     for (const Word& w : b.words) {
@@ -94,7 +108,7 @@ class Reader {
       const int g10 = gCode10(w.value);
       if (isMotionCode(g10)) {
         ++motionCodes;
-      } else if (isCycleCode(g10)) {
+      } else if (isCycleCode(g10, families_)) {
         if (cycleCode) refuse(b, w, "two cycle codes in one block");
         cycleCode = g10;
       } else if (!isOtherCode(g10)) {
@@ -120,7 +134,7 @@ class Reader {
       allowed = "GPQUWFSTM";
     } else {
       info.kind = BlockKind::CycleFirst;
-      allowed = cycleCode == 710 ? "GURFSTM" : "GWRFSTM";
+      allowed = cycleCode == 710 ? "GURFSTM" : cycleCode == 720 ? "GWRFSTM" : "GUWRFSTM";
     }
     for (const Word& w : b.words) {
       if (!letterIn(w.letter, allowed)) {
@@ -162,6 +176,7 @@ class Reader {
     if (ns != i + 1) refuse(b, "P", "the shape program must follow its cycle block directly");
     if (nf < ns) refuse(b, "Q", "block Q stands before block P");
     ModalState shapeState = state;
+    Extent shape{state.planePoint().z, state.planePoint().z, state.planePoint().x, state.planePoint().x};
     for (std::size_t k = ns; k <= nf; ++k) {
       BlockInfo& info = out_.blocks[k];
       if (info.kind != BlockKind::Plain) refuse(program_.blocks[k], "the block", "a cycle block inside a shape program");
@@ -169,10 +184,37 @@ class Reader {
       info.head = k == ns;
       info.cycle = out_.blocks[i].cycle;
       move(k, shapeState);
+      if (info.segment) shape = united(shape, extent(*info.segment));
     }
     out_.cycles.push_back({i, out_.blocks[i].cycle, ns, nf, state.planePoint()});
     include(state.planePoint());
+    if (out_.blocks[i].cycle == 73) includePasses(shape, allowanceOf(b));
     return nf + 1;
+  }
+
+  // G73.FMT, G73.PARAMS: a first block's U (Δi) and W (Δk) stay in force for later cycles.
+  void noteRelief(const Block& b) {
+    if (const Word* u = b.find('U')) relief_.x = u->value;
+    if (const Word* w = b.find('W')) relief_.z = w->value;
+  }
+
+  // (Δw, Δu/2) of a P/Q block.
+  static Point allowanceOf(const Block& b) {
+    const Word* u = b.find('U');
+    const Word* w = b.find('W');
+    return {w ? w->value : 0.0, u ? u->value / 2 : 0.0};
+  }
+
+  // G73.PASS.SHIFT: the passes follow the shape shifted by allowance + s·relief, 0 ≤ s ≤ 1; an
+  // extent is linear in the shift, so both ends bound every pass.
+  void includePasses(const Extent& shape, Point allowance) {
+    for (const Point shift : {allowance, allowance + relief_}) {
+      include(Extent{shape.zMin + shift.z, shape.zMax + shift.z, shape.xMin + shift.x, shape.xMax + shift.x});
+    }
+  }
+
+  static Extent united(const Extent& a, const Extent& e) {
+    return {std::min(a.zMin, e.zMin), std::max(a.zMax, e.zMax), std::min(a.xMin, e.xMin), std::max(a.xMax, e.xMax)};
   }
 
   void noteFinish(std::size_t i, const ModalState& state) {
@@ -196,11 +238,13 @@ class Reader {
   void include(const Extent& e) {
     Extent& r = out_.reach;
     if (!anyReach_) r = e;
-    r = {std::min(r.zMin, e.zMin), std::max(r.zMax, e.zMax), std::min(r.xMin, e.xMin), std::max(r.xMax, e.xMax)};
+    r = united(r, e);
     anyReach_ = true;
   }
 
   const Program& program_;
+  const LatheFamilies families_;
+  Point relief_;  // G73's (Δk, Δi) in force
   LatheProgram out_;
   bool anyReach_ = false;
 };
@@ -219,24 +263,35 @@ MachineParams machineParamsOf(const ParamSettings& params) {
   return m;
 }
 
-std::optional<LatheProgram> readLatheProgram(const Program& program, std::string& whyNot) {
+namespace {
+
+std::optional<LatheProgram> readWithRelief(const Program& program, std::string& whyNot, LatheFamilies families,
+                                           Point relief) {
   try {
-    return Reader(program).read();
+    return Reader(program, families, relief).read();
   } catch (const Refusal& r) {
     whyNot = r.what();
     return std::nullopt;
   }
 }
 
-std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot) {
-  const GCodeSystem system = gCodeSystemOf(defaultProfile(), machineParamsOf(params));
+}  // namespace
+
+std::optional<LatheProgram> readLatheProgram(const Program& program, std::string& whyNot, LatheFamilies families) {
+  return readWithRelief(program, whyNot, families, Point{0, 0});
+}
+
+std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot,
+                                             LatheFamilies families) {
+  const MachineParams machine = machineParamsOf(params);
+  const GCodeSystem system = gCodeSystemOf(defaultProfile(), machine);
   if (system != GCodeSystem::A) {
     whyNot = "the settings select " + gCodeSystemName(system) +
              " (3401#6 GSB / #7 GSC): the relations read G code system A programs (X/Z absolute, U/W "
              "incremental, G70–G72 the cycles), which the words of this one do not mean";
     return std::nullopt;
   }
-  return readLatheProgram(program, whyNot);
+  return readWithRelief(program, whyNot, families, Point{machine.get("5136"), machine.get("5135")});
 }
 
 bool finishesAtCycleStarts(const Program& p, const LatheProgram& lathe, std::string& whyNot) {
@@ -255,7 +310,7 @@ WordRole roleOf(const BlockInfo& info, const Word& w) {
     case 'G': {
       const int g10 = gCode10(w.value);
       if (isMotionCode(g10)) return WordRole::MotionCode;
-      if (isCycleCode(g10)) return WordRole::CycleCode;
+      if (isCycleCode(g10, LatheFamilies::WithPatternRepeating)) return WordRole::CycleCode;
       return WordRole::OtherCode;
     }
     case 'F': return WordRole::Feed;
@@ -267,7 +322,11 @@ WordRole roleOf(const BlockInfo& info, const Word& w) {
     default: break;
   }
   switch (info.kind) {
-    case BlockKind::CycleFirst: return w.letter == 'R' ? WordRole::Retract : WordRole::DepthOfCut;
+    case BlockKind::CycleFirst:
+      if (info.cycle == 73) {
+        return w.letter == 'R' ? WordRole::Divisions : w.letter == 'U' ? WordRole::ReliefSecond : WordRole::ReliefFirst;
+      }
+      return w.letter == 'R' ? WordRole::Retract : WordRole::DepthOfCut;
     case BlockKind::CycleSecond: return w.letter == 'U' ? WordRole::AllowanceSecond : WordRole::AllowanceFirst;
     case BlockKind::Finish: return WordRole::Passive;  // the reader lets only G P Q F S T M through
     case BlockKind::Plain: break;

@@ -11,6 +11,8 @@
 //   start, radius values), R (arc radius; only in G02/G03 blocks, never with I/K);
 //   G71 first block U(Δd) R(e), G72 first block W(Δd) R(e); second block P Q U(Δu) W(Δw);
 //   G70 P Q; F (feed), S T M (kept as they are, never read).
+// With `LatheFamilies::WithPatternRepeating` also G73 (G73.FMT): first block U(Δi) W(Δk) R(d) (Δi a
+// radius, both signed, d a count), second block P Q U(Δu) W(Δw) F as G71's; the shape may be any.
 // Refused: G20 (the relations' constants are in mm), G17/G19 (the relations start from G18),
 // G41/G42 (a mirror changes the compensation side and the tip), G04 (its X/U is a time), any other
 // G code, the letters Y V J and every other address, a second word of the same address in a block,
@@ -58,6 +60,9 @@ enum class WordRole {
   ArcRadius,        // R of a G02/G03 block
   DepthOfCut,       // Δd: U of G71's first block, W of G72's (radius, unsigned)
   Retract,          // e: R of the first block
+  ReliefFirst,      // G73's Δk: W of its first block (signed, along the 1st axis)
+  ReliefSecond,     // G73's Δi: U of its first block (signed, a radius)
+  Divisions,        // G73's d: R of its first block (a count, not a length)
   AllowanceFirst,   // Δw: W of the P/Q block
   AllowanceSecond,  // Δu: U of the P/Q block (diameter)
   Sequence,         // P, Q of a cycle block
@@ -67,7 +72,7 @@ enum class WordRole {
 
 struct BlockInfo {
   BlockKind kind = BlockKind::Plain;
-  int cycle = 0;                        // 70, 71, 72: a cycle block's code; a shape block's cycle
+  int cycle = 0;                        // 70, 71, 72, 73: a cycle block's code; a shape block's cycle
   std::optional<std::size_t> shapeOf;   // shape blocks (ns…nf): index of their cycle's P/Q block
   bool head = false;                    // block ns
   ModalState before;                    // when the block is read: its start point, modal codes
@@ -80,7 +85,7 @@ struct BlockInfo {
 
 struct RoughingCycleInfo {
   std::size_t block = 0;   // the P/Q block
-  int code = 0;            // 71 or 72
+  int code = 0;            // 71, 72 or 73
   std::size_t ns = 0, nf = 0;
   Point start;             // A
 };
@@ -89,19 +94,27 @@ struct LatheProgram {
   std::vector<BlockInfo> blocks;  // one per program block, same index
   std::vector<RoughingCycleInfo> cycles;
   // Every point the program's motions reach (block end points, arcs' apexes), and the cycles'
-  // start points; radius for x.
+  // start points; radius for x. A G73's shape counts at both ends of its passes' shifts: at the
+  // allowance and at the relief plus the allowance (G73.PASS.SHIFT), with Δi/Δk as the program
+  // (or, read with settings, parameters 5135/5136) sets them.
   Extent reach{0, 0, 0, 0};
 };
 
+// The cycle families a relation handles. The relations written for G71/G72 read with the default
+// and refuse G73 as a code outside their vocabulary; those that also hold for G73 ask for it.
+enum class LatheFamilies { Roughing, WithPatternRepeating };
+
 // Reads the program as a G code system A program, or returns nothing and says why (line and word)
 // it is outside the vocabulary.
-std::optional<LatheProgram> readLatheProgram(const Program& program, std::string& whyNot);
+std::optional<LatheProgram> readLatheProgram(const Program& program, std::string& whyNot,
+                                             LatheFamilies families = LatheFamilies::Roughing);
 
 // The same, for a program that runs with these settings: refused (with the reason) when they select
 // G code system B or C (3401#6 GSB, #7 GSC, PROG.GSYS.SELECT as the FANUC profiles read them) —
 // there U/W are no increments, G90/G91 are modes and system C's G71 is metric input, so the
 // vocabulary's words would be misread. Every relation reads its source through this.
-std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot);
+std::optional<LatheProgram> readLatheProgram(const Program& program, const ParamSettings& params, std::string& whyNot,
+                                             LatheFamilies families = LatheFamilies::Roughing);
 
 // A shape that G70 runs from somewhere else than its roughing cycle's start point means another
 // geometry with incremental words than with absolute ones: relations that rewrite positions refuse

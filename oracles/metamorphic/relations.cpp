@@ -5,6 +5,9 @@
 #include <numbers>
 
 #include "oracles/metamorphic/format_relations.h"
+#include "oracles/metamorphic/groove_program.h"
+#include "oracles/metamorphic/groove_relations.h"
+#include "oracles/metamorphic/siemens_relations.h"
 #include "oracles/metamorphic/lathe_program.h"
 #include "oracles/metamorphic/path_compare.h"
 #include "oracles/metamorphic/word_edit.h"
@@ -15,8 +18,6 @@
 namespace cyclecert {
 
 namespace {
-
-constexpr double kMmPerInch = 25.4;
 
 // ---- rewriting words ------------------------------------------------------------------------------
 
@@ -51,24 +52,12 @@ bool isLength(WordRole role) {
     case WordRole::Retract:
     case WordRole::AllowanceFirst:
     case WordRole::AllowanceSecond:
+    case WordRole::ReliefFirst:
+    case WordRole::ReliefSecond:
       return true;
     default:
       return false;
   }
-}
-
-// Replaces every G code `from` (×10) by `to`, and makes sure the first block commands `to`, so
-// that the whole program runs in it.
-void commandFromTheStart(Program& program, int from10, int to) {
-  for (Block& b : program.blocks) {
-    for (Word& w : b.words) {
-      if (w.letter == 'G' && gCode10(w.value) == from10) setValue(w, to);
-    }
-  }
-  if (!program.blocks.empty() && program.blocks.front().hasG(to * 10)) return;
-  Block b;
-  b.words.push_back(makeWord('G', to));
-  program.blocks.insert(program.blocks.begin(), b);
 }
 
 // ---- parameters ---------------------------------------------------------------------------------
@@ -79,10 +68,35 @@ std::string parameterNumber(const std::string& name) {
 }
 
 // The length parameters a program's geometry depends on: Δd, e, the type II clearance, the
-// monotonic tolerances along the 1st and the 2nd axis.
+// monotonic tolerances along the 1st and the 2nd axis, G73's reliefs Δi and Δk (5137, d, is a count).
 bool isLengthParameter(const std::string& name) {
   const std::string n = parameterNumber(name);
-  return n == "5132" || n == "5133" || n == "5134" || n == "5145" || n == "5146";
+  return n == "5132" || n == "5133" || n == "5134" || n == "5145" || n == "5146" || n == "5135" || n == "5136";
+}
+
+// The settings with one signed length parameter negated (a mirror of G73's relief, 5135 or 5136).
+ParamSettings negated(ParamSettings params, const std::string& number) {
+  for (auto& [name, value] : params) {
+    if (parameterNumber(name) == number) value = -value;
+  }
+  return params;
+}
+
+// The relations that hold for G73 as for G71/G72 read with it (lathe_program.h).
+std::optional<LatheProgram> readWithG73(const Program& p, const ParamSettings& params, std::string& whyNot) {
+  return readLatheProgram(p, params, whyNot, LatheFamilies::WithPatternRepeating);
+}
+
+// The parameter a first block's word writes (G71.DD.MODAL, G71.E.MODAL, G73.PARAMS), if any.
+std::optional<std::string> parameterOf(WordRole role) {
+  switch (role) {
+    case WordRole::DepthOfCut: return "5132";
+    case WordRole::Retract: return "5133";
+    case WordRole::ReliefSecond: return "5135";
+    case WordRole::ReliefFirst: return "5136";
+    case WordRole::Divisions: return "5137";
+    default: return std::nullopt;
+  }
 }
 
 // ---- expected paths -----------------------------------------------------------------------------
@@ -103,10 +117,12 @@ Relation mirrorZ() {
       "Mirror in Z (z → −z): Z, W and K words change sign, and so does the allowance Δw (W of the P/Q "
       "block of G71 and G72); G72's Δd (W of its first block) does not; G02 ↔ G03. The cycle now runs "
       "towards the other end of the part (the other pair of FANUC's four patterns). Expected: the "
-      "toolpath with z → −z and every arc reversed. Handles the vocabulary of lathe_program.h.";
+      "toolpath with z → −z and every arc reversed. Handles the vocabulary of lathe_program.h."
+      " Also G73 (Δk and 5136 negated as well) and G74.1 programs (Z, W and h negated: groove_relations.h); README \"Families\".";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G72.ALLOW", "G72.POINTS", "G71.T1.RETRACT45", "G72.RETRACT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return mirrorGrooveZ(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo&, WordRole role, Word& w) {
       switch (role) {
@@ -114,6 +130,7 @@ Relation mirrorZ() {
         case WordRole::IncFirst:
         case WordRole::CentreFirst:
         case WordRole::AllowanceFirst:
+        case WordRole::ReliefFirst:
           setValue(w, -w.value);
           break;
         case WordRole::MotionCode:
@@ -123,7 +140,7 @@ Relation mirrorZ() {
           break;
       }
     });
-    return followUp(std::move(out), params,
+    return followUp(std::move(out), negated(params, "5136"),
                     [](const Toolpath& t) { return mapToolpath(t, [](Point q) { return Point{-q.z, q.x}; }, true); });
   };
   r.compare = compareToolpaths;
@@ -139,10 +156,12 @@ Relation mirrorX() {
       "contour becomes a bored inner one. X words (diameters) become 4·x0 − X; U and I words and the "
       "allowance Δu (U of the P/Q block) change sign; G71's Δd (U of its first block) does not; "
       "G02 ↔ G03. Expected: x → 2·x0 − x and every arc reversed. Handles the vocabulary of "
-      "lathe_program.h.";
+      "lathe_program.h."
+      " Also G73 (Δi and 5135 negated as well; x0 covers the passes) and G74.1 programs (d negated: groove_relations.h); README \"Families\".";
   r.rules = {"G71.QUAD", "G71.ALLOW.UNITS", "G71.LIMIT.HEIGHT", "G72.ALLOW", "G72.POINTS"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return mirrorGrooveX(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     const double x0 = std::max(1.0, std::ceil(lathe->reach.xMax));
     Program out = mapWords(p, *lathe, [x0](const BlockInfo&, WordRole role, Word& w) {
@@ -153,6 +172,7 @@ Relation mirrorX() {
         case WordRole::IncSecond:
         case WordRole::CentreSecond:
         case WordRole::AllowanceSecond:
+        case WordRole::ReliefSecond:
           setValue(w, -w.value);
           break;
         case WordRole::MotionCode:
@@ -162,7 +182,7 @@ Relation mirrorX() {
           break;
       }
     });
-    return followUp(std::move(out), params, [x0](const Toolpath& t) {
+    return followUp(std::move(out), negated(params, "5135"), [x0](const Toolpath& t) {
       return mapToolpath(t, [x0](Point q) { return Point{q.z, 2 * x0 - q.x}; }, true);
     });
   };
@@ -178,10 +198,12 @@ Relation scale(double k) {
       "and the length parameters 5132, 5133, 5134, 5145, 5146 among the settings. F is not scaled: "
       "it is a rate (mm/min or mm/rev) that the cycle copies onto its cutting moves, not a length of "
       "the geometry. Expected: every point × k, feeds unchanged. Handles the vocabulary of "
-      "lathe_program.h.";
+      "lathe_program.h."
+      " Also G73 (Δi, Δk, 5135, 5136 scaled; d not), G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G71.OP", "G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.FST"};
   r.transform = [k](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return scaleGroove(k, p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [k](const BlockInfo&, WordRole role, Word& w) {
       if (isLength(role)) setValue(w, k * w.value);
@@ -193,6 +215,9 @@ Relation scale(double k) {
     return followUp(std::move(out), std::move(scaled),
                     [k](const Toolpath& t) { return mapToolpath(t, [k](Point q) { return k * q; }, false); });
   };
+  r.transformSiemens = [k](const SiemensSource& s, const ParamSettings& params, std::string& whyNot) {
+    return scaleSiemens(k, s, params, whyNot);
+  };
   r.compare = compareToolpaths;
   return r;
 }
@@ -203,10 +228,12 @@ Relation translateZ(double dz) {
   r.description =
       "Translate along Z by dz (registered with dz = 12.5 mm): every Z word + dz; W, K, R, the cycle "
       "words unchanged (they are relative). Expected: z + dz. Handles the vocabulary of "
-      "lathe_program.h.";
+      "lathe_program.h."
+      " Also G73, G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G72.POINTS", "G71.OP", "G72.STEP5", "G71.DTP"};
   r.transform = [dz](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return translateGroove(Point{dz, 0}, p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [dz](const BlockInfo&, WordRole role, Word& w) {
       if (role == WordRole::AbsFirst) setValue(w, w.value + dz);
@@ -214,6 +241,9 @@ Relation translateZ(double dz) {
     return followUp(std::move(out), params, [dz](const Toolpath& t) {
       return mapToolpath(t, [dz](Point q) { return Point{q.z + dz, q.x}; }, false);
     });
+  };
+  r.transformSiemens = [dz](const SiemensSource& s, const ParamSettings& params, std::string& whyNot) {
+    return translateSiemens(Point{dz, 0}, s, params, whyNot);
   };
   r.compare = compareToolpaths;
   return r;
@@ -228,10 +258,12 @@ Relation translateX(double dx) {
       "the spindle axis no longer does, and G96's spindle speeds change — but one of the documented "
       "algorithm, whose every step is relative to the start point A, the allowances and Δd: an engine "
       "that treats x = 0 or absolute radii specially fails it. Outwards only, so radii stay ≥ 0. "
-      "Expected: x + dx. Handles the vocabulary of lathe_program.h.";
+      "Expected: x + dx. Handles the vocabulary of lathe_program.h."
+      " Also G73, G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G72.POINTS", "G71.OP", "G71.LIMIT.HEIGHT"};
   r.transform = [dx](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return translateGroove(Point{0, dx}, p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [dx](const BlockInfo&, WordRole role, Word& w) {
       if (role == WordRole::AbsSecond) setValue(w, w.value + 2 * dx);
@@ -239,6 +271,9 @@ Relation translateX(double dx) {
     return followUp(std::move(out), params, [dx](const Toolpath& t) {
       return mapToolpath(t, [dx](Point q) { return Point{q.z, q.x + dx}; }, false);
     });
+  };
+  r.transformSiemens = [dx](const SiemensSource& s, const ParamSettings& params, std::string& whyNot) {
+    return translateSiemens(Point{0, dx}, s, params, whyNot);
   };
   r.compare = compareToolpaths;
   return r;
@@ -255,10 +290,11 @@ Relation splitSegment() {
       "is never split (for type I it alone defines B). Expected: the same geometry — compared after "
       "joining consecutive moves that continue one another (mergeContinuations), since the semi-finish "
       "and finishing passes trace the split block as two moves. Refuses a G70 that does not start at "
-      "its cycle's start point. Handles the vocabulary of lathe_program.h.";
+      "its cycle's start point. Handles the vocabulary of lathe_program.h."
+      " Also G73 (README \"Families\").";
   r.rules = {"G71.T1.SEMIFIN", "G72.STEP3", "G72.STEP7", "G71.T2.FOLLOW", "G71.T2.VALLEY", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     if (lathe->cycles.empty()) {
       whyNot = "no G71/G72 cycle: nothing to split";
@@ -295,10 +331,10 @@ Relation absoluteIncremental() {
       "from where the block starts (U = X − 2·x, diameters). A type II head's W0/U0 becomes an "
       "absolute word and still commands the axis. Blocks outside the shapes are left alone. Refuses "
       "a G70 that does not start at its cycle's start point. Expected: the same toolpath. Handles "
-      "the vocabulary of lathe_program.h.";
+      "the vocabulary of lathe_program.h. Also G73 (README \"Families\").";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.HEAD.NOX", "G71.TYPE.SELECT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo& info, WordRole role, Word& w) {
       if (!info.shapeOf) return;
@@ -325,10 +361,11 @@ Relation radiusCentre() {
       "radius values, I along X, K along Z), every one with I/K gets R (negative for an arc of more "
       "than 180°). Refuses an I/K arc whose end is off the circle by more than 1e-6 mm (R would "
       "place the centre elsewhere) and a G70 that does not start at its cycle's start point. "
-      "Expected: the same toolpath. Handles the vocabulary of lathe_program.h.";
+      "Expected: the same toolpath. Handles the vocabulary of lathe_program.h."
+      " Also G73, and SINUMERIK texts (transformSiemens: CR= ⇄ I/K in program and subprograms); README \"Families\".";
   r.rules = {"G71.FMT.ZX", "G72.FMT", "G71.T1.MONO", "G71.T1.SEMIFIN", "G70.EX"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe || !finishesAtCycleStarts(p, *lathe, whyNot)) return std::nullopt;
     Program out = p;
     for (std::size_t i = 0; i < out.blocks.size(); ++i) {
@@ -352,6 +389,7 @@ Relation radiusCentre() {
     }
     return followUp(std::move(out), params, samePath);
   };
+  r.transformSiemens = radiusCentreSiemens;
   r.compare = compareToolpaths;
   return r;
 }
@@ -367,16 +405,18 @@ Relation plane(int gCode) {
             "2·Z, X → Y X/2, W → U 2·W, U → V U/2, K → I, I → J, Δd U → V, Δw W → U 2·Δw, Δu U → V Δu/2; "
             "G18 → G17 (a G17 block first when the program has none). Expected: the same toolpath (every "
             "plane is mapped onto z = 1st axis, x = 2nd axis). G72 is refused: the seeds give the "
-            "planes' formats for G71 only. Handles the vocabulary of lathe_program.h."
+            "planes' formats for G71 only. Handles the vocabulary of lathe_program.h. G73 (G73.PLANE): Δk and "
+            "Δi go to the plane's 1st and 2nd incremental addresses as they are (never halved, G73.FMT)."
           : "G18 → G19 for G71 (G71.FMT.YZ: `G71 W(Δd) R(e); G71 P Q V(Δw) W(Δu)`): the 1st axis Z becomes "
             "Y, the 2nd axis X becomes Z (both radius: X values halved). Z → Y, X → Z X/2, W → V, U → W "
             "U/2, K → J, I → K, Δd U → W, Δw W → V, Δu U → W Δu/2; G18 → G19 (a G19 block first when the "
             "program has none). Expected: the same toolpath. G72 is refused: the seeds give the planes' "
-            "formats for G71 only. Handles the vocabulary of lathe_program.h.";
-  r.rules = {gCode == 17 ? "G71.FMT.XY" : "G71.FMT.YZ", "G71.FMT.ZX", "G71.ALLOW.UNITS", "G71.ADDR.SHARED"};
+            "formats for G71 only. Handles the vocabulary of lathe_program.h. G73 (G73.PLANE): Δk → V, Δi → W "
+            "as they are (never halved, G73.FMT).";
+  r.rules = {gCode == 17 ? "G71.FMT.XY" : "G71.FMT.YZ", "G71.FMT.ZX", "G71.ALLOW.UNITS", "G71.ADDR.SHARED", "G73.PLANE"};
   r.transform = [gCode, to](const Program& p, const ParamSettings& params,
                             std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     for (const RoughingCycleInfo& c : lathe->cycles) {
       if (c.code == 72) {
@@ -397,6 +437,9 @@ Relation plane(int gCode) {
         case WordRole::DepthOfCut: rename(w, to.secondInc, w.value); break;  // G71.ADDR.SHARED
         case WordRole::AllowanceFirst: rename(w, to.firstInc, first * w.value); break;
         case WordRole::AllowanceSecond: rename(w, to.secondInc, second * w.value / 2); break;
+        // G73.FMT, G73.PLANE: Δk and Δi are distances along the plane's axes, never halved or doubled.
+        case WordRole::ReliefFirst: rename(w, to.firstInc, w.value); break;
+        case WordRole::ReliefSecond: rename(w, to.secondInc, w.value); break;
         default: break;
       }
     });
@@ -417,10 +460,13 @@ Relation metricInch() {
       "increment (0.0001 in): rounding would move pass levels and could change the number of passes, a "
       "discrete change no tolerance covers. Parameters are unchanged (cyclecert keeps length "
       "parameters in mm). S (G96's surface speed) is not converted: it does not change the toolpath. "
-      "Expected: the same toolpath (always in mm), within a tolerance covering the printed digits.";
+      "Expected: the same toolpath (always in mm), within a tolerance covering the printed digits. Also G73 (Δi, Δk "
+      "converted, d not) and G74.1 programs (groove_relations.h: P/Q in increments only when whole); README "
+      "\"Families\".";
   r.rules = {"G72.RANGE", "G71.ALLOW.UNITS", "G71.FST"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    if (isGrooveProgram(p)) return metricInchGroove(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     Program out = mapWords(p, *lathe, [](const BlockInfo&, WordRole role, Word& w) {
       if (isLength(role) || role == WordRole::Feed) setValue(w, w.value / kMmPerInch);
@@ -440,10 +486,12 @@ Relation parameterDefault() {
       "Δd, e and its cycle code — its other words (F S T M) stay as a plain block, an empty block "
       "goes — and the settings gain 5132 = Δd and 5133 = e (what the block would have written). Only "
       "a program with exactly one first block, before its first P/Q block, is handled (later first "
-      "blocks would change the parameters between cycles). Expected: the same toolpath.";
-  r.rules = {"G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ADDR.SHARED"};
+      "blocks would change the parameters between cycles). G73's first block U(Δi) W(Δk) R(d) goes to "
+      "5135, 5136 and 5137 (G73.PARAMS; a d that is not a whole number is refused: the block alarms "
+      "PS0003, the parameter would not). Expected: the same toolpath.";
+  r.rules = {"G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ADDR.SHARED", "G73.PARAMS"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     std::optional<std::size_t> first;
     for (std::size_t i = 0; i < lathe->blocks.size(); ++i) {
@@ -455,7 +503,7 @@ Relation parameterDefault() {
       first = i;
     }
     if (!first) {
-      whyNot = "no first G71/G72 block (Δd, e): nothing to move into parameters";
+      whyNot = "no first G71/G72 block (Δd, e) or G73 block (Δi, Δk, d): nothing to move into parameters";
       return std::nullopt;
     }
     if (lathe->cycles.empty() || lathe->cycles.front().block < *first) {
@@ -466,9 +514,14 @@ Relation parameterDefault() {
     ParamSettings settings = params;
     Block& b = out.blocks[*first];
     for (const Word& w : b.words) {
-      const WordRole role = roleOf(lathe->blocks[*first], w);
-      if (role == WordRole::DepthOfCut) settings.push_back({"5132", w.value});
-      if (role == WordRole::Retract) settings.push_back({"5133", w.value});
+      if (const auto number = parameterOf(roleOf(lathe->blocks[*first], w))) {
+        if (*number == "5137" && (w.value != std::floor(w.value) || w.value > 99'999'999)) {
+          whyNot = "line " + std::to_string(b.line) + ": " + w.text +
+                   ": not a whole number of divisions (PS0003 in the block; parameter 5137 would be read otherwise)";
+          return std::nullopt;
+        }
+        settings.push_back({*number, w.value});
+      }
     }
     if (dropFirstBlockWords(b, lathe->blocks[*first])) out.blocks.erase(out.blocks.begin() + static_cast<std::ptrdiff_t>(*first));
     return followUp(std::move(out), std::move(settings), samePath);
@@ -489,10 +542,11 @@ Relation transpose() {
       "(z, x) → (x, z + c), every arc reversed, alarms PS0064 ⇄ PS0329. G71.LIMIT.HEIGHT has no G72 "
       "counterpart, so a G72 program whose shape passes its start point's z in the allowance's "
       "direction alarms PS0322 once transposed: the relation then fails by design. Handles the "
-      "vocabulary of lathe_program.h.";
+      "vocabulary of lathe_program.h. G73 stays G73: its reliefs exchange axes, Δk (W) → Δi U, Δi (U, a "
+      "radius) → Δk W, with parameters 5135 ⇄ 5136 (README \"Families\").";
   r.rules = {"G72.FMT", "G72.POINTS", "G72.DD", "G72.ALLOW", "G71.OP", "G72.STEP3", "G72.RETRACT", "G72.TYPE.SELECT"};
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
-    const auto lathe = readLatheProgram(p, params, whyNot);
+    const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
     const double c = std::max(0.0, std::ceil(-lathe->reach.zMin));
     Program out = mapWords(p, *lathe, [c](const BlockInfo& info, WordRole role, Word& w) {
@@ -506,9 +560,11 @@ Relation transpose() {
         case WordRole::DepthOfCut: rename(w, info.cycle == 71 ? 'W' : 'U', w.value); break;
         case WordRole::AllowanceFirst: rename(w, 'U', 2 * w.value); break;
         case WordRole::AllowanceSecond: rename(w, 'W', w.value / 2); break;
+        case WordRole::ReliefFirst: rename(w, 'U', w.value); break;   // Δk becomes Δi, a radius value
+        case WordRole::ReliefSecond: rename(w, 'W', w.value); break;  // Δi (a radius) becomes Δk
         case WordRole::MotionCode: reverseArcCode(w); break;
         case WordRole::CycleCode:
-          if (gCode10(w.value) != 700) setValue(w, gCode10(w.value) == 710 ? 72 : 71);
+          if (gCode10(w.value) == 710 || gCode10(w.value) == 720) setValue(w, gCode10(w.value) == 710 ? 72 : 71);
           break;
         default: break;
       }
@@ -518,6 +574,8 @@ Relation transpose() {
       const std::string n = parameterNumber(name);
       if (n == "5145") name = "5146";
       if (n == "5146") name = "5145";
+      if (n == "5135") name = "5136";  // G73's reliefs follow their axes too
+      if (n == "5136") name = "5135";
     }
     return followUp(std::move(out), std::move(swapped), [c](const Toolpath& t) {
       Toolpath e = mapToolpath(t, [c](Point q) { return Point{q.x, q.z + c}; }, true);
@@ -573,7 +631,7 @@ std::optional<std::string> checkRelation(const Relation& relation, const FollowU
 }
 
 std::optional<Program> splitBlock(const Program& source, std::size_t blockIndex, std::string& whyNot) {
-  const auto lathe = readLatheProgram(source, whyNot);
+  const auto lathe = readLatheProgram(source, whyNot, LatheFamilies::WithPatternRepeating);
   if (!lathe || !finishesAtCycleStarts(source, *lathe, whyNot)) return std::nullopt;
   if (blockIndex >= source.blocks.size()) {
     whyNot = "no block " + std::to_string(blockIndex);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "oracles/metamorphic/lathe_program.h"
+#include "oracles/metamorphic/siemens_words.h"
 #include "reference/model/program.h"
 #include "reference/model/toolpath.h"
 
@@ -30,6 +31,9 @@ struct FollowUp {
   // mirror-x, the shift that keeps radii positive in transpose).
   std::function<Toolpath(const Toolpath&)> expectedPath;
   std::string profile;  // the profile the follow-up runs under; empty: the source's (hnc-one-block: "hnc")
+  // SINUMERIK follow-ups (Relation::transformSiemens): the main program and the subprograms as text,
+  // run with the source's profile; `program` is then empty.
+  std::optional<SiemensSource> siemens = std::nullopt;
 };
 
 using PathComparison =
@@ -43,6 +47,11 @@ struct Relation {
   // relation handles (a word it does not know, a G72 cycle for a G71-only relation, …).
   std::function<std::optional<FollowUp>(const Program& source, const ParamSettings& params, std::string& whyNot)>
       transform;
+  // The same for a SINUMERIK source (siemens_words.h: a main program and its contour subprograms as
+  // text, which the FANUC reader cannot read); empty for a relation that does not handle them
+  // (translate-z, translate-x and scale-k do). The follow-up carries its texts in FollowUp::siemens.
+  std::function<std::optional<FollowUp>(const SiemensSource& source, const ParamSettings& params, std::string& whyNot)>
+      transformSiemens = nullptr;
   // compareToolpaths, or compareGeometry for split-segment.
   PathComparison compare;
 };
