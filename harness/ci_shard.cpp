@@ -104,7 +104,7 @@ Shard shardFromEnvironment(const EnvironmentLookup& env) {
   if (env("JOB_COMPLETION_INDEX")) return kubernetesShard(env);
   if (env("SLURM_ARRAY_TASK_ID")) return slurmShard(env);
   throw std::invalid_argument(
-      "auto found no shard in the environment: it reads CYCLECERT_SHARD=K/N, GitLab's CI_NODE_INDEX and "
+      "found no shard in the environment: it reads CYCLECERT_SHARD=K/N, GitLab's CI_NODE_INDEX and "
       "CI_NODE_TOTAL, a Kubernetes Indexed Job's JOB_COMPLETION_INDEX with CYCLECERT_SHARD_COUNT, or a Slurm array's "
       "SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT and SLURM_ARRAY_TASK_MIN; set one, or give --shard K/N");
 }

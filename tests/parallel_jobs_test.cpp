@@ -109,17 +109,27 @@ TEST(RunInItemOrder, ACommitThatThrowsStopsTheRun) {
 // The CLI with --jobs 1 and --jobs 2: the same results.
 class JobsCli : public CliFixture {
  protected:
-  // results.jsonl's lines without the timing ("seconds"), sorted.
-  std::vector<std::string> sortedResults(const std::string& out) const {
+  // results.jsonl's lines without the timing ("seconds"), sorted; a regression file named relative
+  // to `regressions`.
+  std::vector<std::string> sortedResults(const std::string& out, const std::string& regressions = "") const {
     std::vector<std::string> lines;
     std::istringstream in(read(path(out) + "/results.jsonl"));
     for (std::string line; std::getline(in, line);) {
       nlohmann::json j = nlohmann::json::parse(line);
       j.erase("seconds");
+      const std::string file = j.value("file", "");
+      if (!regressions.empty() && file.rfind(path(regressions), 0) == 0) j["file"] = file.substr(path(regressions).size());
       lines.push_back(j.dump());
     }
     std::sort(lines.begin(), lines.end());
     return lines;
+  }
+  // The first line where two sorted results differ, for the failure message.
+  static std::string firstDifference(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+      if (a[i] != b[i]) return "line " + std::to_string(i) + ":\n  " + a[i] + "\n  " + b[i];
+    }
+    return a.size() == b.size() ? "none" : "sizes " + std::to_string(a.size()) + " and " + std::to_string(b.size());
   }
   // The files of a regressions folder: name → text.
   std::map<std::string, std::string> folder(const std::string& name) const {
@@ -144,11 +154,14 @@ TEST_F(JobsCli, FuzzWritesTheSameResultsAndRegressionsWithTwoJobs) {
     const CliRun two = run(common + "--jobs 2 --out " + path("two") + " --regressions " + path("reg2"));
     ASSERT_NE(one.exitCode, 2) << one.err;
     EXPECT_EQ(one.exitCode, two.exitCode) << two.err;
-    const auto a = sortedResults("one"), b = sortedResults("two");
+    const auto a = sortedResults("one", "reg1"), b = sortedResults("two", "reg2");
     EXPECT_EQ(a.size(), 300u) << engine;
-    EXPECT_EQ(a, b) << engine;
+    EXPECT_TRUE(a == b) << engine << ": " << firstDifference(a, b);
     EXPECT_EQ(folder("reg1"), folder("reg2")) << engine;
-    if (engine != "reference") EXPECT_GT(verdicts(a, "fail"), 0) << "the mutant should fail some cases";
+    if (engine != "reference") {
+      EXPECT_GT(verdicts(a, "fail"), 0) << "the mutant should fail some cases";
+      EXPECT_FALSE(folder("reg1").empty()) << "the mutant's first failure should be kept";
+    }
     for (const char* d : {"one", "two", "reg1", "reg2"}) std::filesystem::remove_all(path(d));
   }
 }
@@ -160,7 +173,7 @@ TEST_F(JobsCli, FuzzShardsMaxFailuresAndResumeWithTwoJobsAsWithOne) {
   ASSERT_EQ(run(common + "--jobs 2 --out " + path("two")).exitCode, 1);
   const auto a = sortedResults("one");
   EXPECT_EQ(verdicts(a, "fail"), 3);
-  EXPECT_EQ(a, sortedResults("two"));
+  EXPECT_TRUE(a == sortedResults("two")) << firstDifference(a, sortedResults("two"));
   // Resumed with more cases and no limit: the rest of the shard, as one worker runs it.
   const std::string more = "fuzz --engine mutant:retract-angle --no-save --seed 3 --cases 260 --shrink-budget 20 "
                            "--shard 2/3 --resume ";
@@ -170,7 +183,7 @@ TEST_F(JobsCli, FuzzShardsMaxFailuresAndResumeWithTwoJobsAsWithOne) {
   EXPECT_NE(r.out.find("already done"), std::string::npos) << r.out;
   const auto c = sortedResults("one");
   EXPECT_EQ(c.size(), 87u);  // i < 260 with i mod 3 = 1
-  EXPECT_EQ(c, sortedResults("two"));
+  EXPECT_TRUE(c == sortedResults("two")) << firstDifference(c, sortedResults("two"));
 }
 
 TEST_F(JobsCli, CheckWritesTheSameResultsInTheSameOrderWithTwoJobs) {
@@ -182,8 +195,10 @@ TEST_F(JobsCli, CheckWritesTheSameResultsInTheSameOrderWithTwoJobs) {
     EXPECT_EQ(one.exitCode, two.exitCode) << two.err;
     const auto a = sortedResults("one");
     EXPECT_GT(a.size(), 100u);
-    EXPECT_EQ(a, sortedResults("two")) << engine;
-    if (engine != "reference") EXPECT_GT(verdicts(a, "fail"), 0) << "the mutant should fail some cases";
+    EXPECT_TRUE(a == sortedResults("two")) << engine << ": " << firstDifference(a, sortedResults("two"));
+    if (engine != "reference") {
+      EXPECT_GT(verdicts(a, "fail"), 0) << "the mutant should fail some cases";
+    }
     // In the same order too: the results are written in case order.
     const auto ids = [&](const std::string& out) {
       std::vector<std::string> v;
@@ -206,7 +221,8 @@ TEST_F(JobsCli, CheckShardsMergeIntoTheWholeRun) {
   EXPECT_LT(half.size(), sortedResults("whole").size());
   const CliRun m = run("merge --out " + path("merged") + " " + path("s1") + " " + path("s2"));
   ASSERT_EQ(m.exitCode, 0) << m.err;
-  EXPECT_EQ(sortedResults("merged"), sortedResults("whole"));
+  EXPECT_TRUE(sortedResults("merged") == sortedResults("whole"))
+      << firstDifference(sortedResults("merged"), sortedResults("whole"));
 }
 
 TEST_F(JobsCli, BadJobsAndShardValuesAreUsageErrors) {

@@ -83,7 +83,7 @@ std::pair<int, int> shardArg(const std::string& text) {
     const Shard s = shardOption(text);
     return {s.index, s.count};
   } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--shard ") + (text == "auto" ? "" : "K/N or auto: ") + e.what());
+    throw UsageError(std::string(text == "auto" ? "--shard auto: " : "--shard K/N or auto: ") + e.what());
   }
 }
 
