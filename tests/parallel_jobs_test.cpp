@@ -186,6 +186,19 @@ TEST_F(JobsCli, FuzzShardsMaxFailuresAndResumeWithTwoJobsAsWithOne) {
   EXPECT_TRUE(c == sortedResults("two")) << firstDifference(c, sortedResults("two"));
 }
 
+TEST_F(JobsCli, ATimeBudgetStopsTwoJobsAndKeepsWhatTheyRecorded) {
+  const CliRun r = run("fuzz --engine reference --no-save --seed 4 --time 1 --jobs 2 --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto at = r.out.find(" cases in ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const long cases = std::stol(r.out.substr(r.out.find(": ") + 2));
+  const double seconds = std::stod(r.out.substr(at + 10));
+  EXPECT_GT(cases, 0) << r.out;
+  EXPECT_GE(seconds, 1.0) << r.out;
+  EXPECT_LT(seconds, 3.0) << r.out;
+  EXPECT_EQ(static_cast<long>(sortedResults("out").size()), cases);  // every case counted is recorded, once
+}
+
 TEST_F(JobsCli, CheckWritesTheSameResultsInTheSameOrderWithTwoJobs) {
   for (const std::string engine : {"reference", "mutant:retract-angle"}) {
     const std::string common = "check --engine " + engine + " --no-regressions ";

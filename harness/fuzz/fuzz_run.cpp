@@ -201,7 +201,7 @@ class FuzzCampaign {
   // The shard's cases batchSize_·b … batchSize_·(b + 1) − 1 generated, planned and judged; nothing
   // past the last case or the time budget.
   std::optional<JudgedBatch> judgeBatch(int worker, long b) {
-    if (b >= (positions_ + batchSize_ - 1) / batchSize_) return std::nullopt;
+    if (b >= positions_ / batchSize_ + (positions_ % batchSize_ != 0)) return std::nullopt;  // no overflow at LONG_MAX
     if (options_.seconds && elapsed() >= *options_.seconds) return std::nullopt;
     const Worker& w = workers_[static_cast<std::size_t>(worker)];
     JudgedBatch out;
