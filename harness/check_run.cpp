@@ -149,10 +149,12 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
 
 namespace {
 
-// One case of the run, checked by a worker; no result when the results already hold it (--resume).
+// One case of the run, checked by a worker, with its results line (made there too); no result when
+// the results already hold it (--resume).
 struct CheckedCase {
   std::string id;
   std::optional<CaseResult> result;
+  std::string line;  // resultLine(*result), without its newline
 };
 
 // The cases of the shard (every N-th case of the list, from the K-th) checked on the workers and
@@ -173,8 +175,11 @@ CheckSummary checkOnWorkers(const std::vector<Engine*>& engines, const CheckOpti
     if (item >= static_cast<long>(files.size())) return std::nullopt;
     Engine& engine = *engines[static_cast<std::size_t>(worker)];
     const SpecCase c = loadSpecCase(files[static_cast<std::size_t>(item)]);
-    if (done.count({engine.name(), c.id})) return CheckedCase{c.id, std::nullopt};
-    return CheckedCase{c.id, checkCase(engine, c)};
+    if (done.count({engine.name(), c.id})) return CheckedCase{c.id, std::nullopt, ""};
+    CaseResult r = checkCase(engine, c);
+    std::string line = resultLine(r);
+    line.pop_back();
+    return CheckedCase{c.id, std::move(r), std::move(line)};
   };
   const auto started = std::chrono::steady_clock::now();
   auto lastReport = started;
@@ -186,7 +191,7 @@ CheckSummary checkOnWorkers(const std::vector<Engine*>& engines, const CheckOpti
       return true;
     }
     const CaseResult& r = *checked.result;
-    results.append(r);  // a killed run keeps every result written so far
+    results.appendLine(checked.line);  // a killed run keeps every result written so far
     if (r.verdict == "pass") ++s.pass;
     else if (r.verdict == "fail") ++s.fail;
     else if (r.verdict == "not-applicable") ++s.notApplicable;

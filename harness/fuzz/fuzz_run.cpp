@@ -170,8 +170,7 @@ class FuzzCampaign {
 
   FuzzCampaign(std::vector<Worker> workers, const FuzzOptions& options, std::ostream& progress)
       : workers_(std::move(workers)), options_(options), progress_(progress), results_(options.outDir, options.resume),
-        // With --max-failures one case at a time, so that the run stops at the failure itself.
-        batchSize_(options.maxFailures ? 1 : static_cast<long>(kFuzzBatch)), positions_(shardPositions(options)) {}
+        positions_(shardPositions(options)), batchSize_(batchSize(options, positions_, workers_.size())) {}
 
   FuzzSummary run() {
     runInItemOrder<JudgedBatch>(
@@ -182,15 +181,28 @@ class FuzzCampaign {
   }
 
  private:
+  // A case judged by a worker, with its result and its results line made there too (the line is
+  // made again when the case is the first failure of its kind, shrunk and drawn when recorded).
   struct JudgedCase {
     std::uint64_t caseSeed;
     SpecCase c;
     FuzzVerdict verdict;
+    CaseResult result;
+    std::string line;  // resultLine(result), without its newline
   };
   struct JudgedBatch {
     long skipped = 0;  // cases already in the results (--resume)
     std::vector<JudgedCase> cases;
   };
+
+  // Cases per batch: kFuzzBatch; with --max-failures one, so that the run stops at the failure
+  // itself; with several workers and few cases, fewer, so that each worker gets a few batches.
+  static long batchSize(const FuzzOptions& o, long positions, std::size_t workers) {
+    if (o.maxFailures) return 1;
+    const long batch = static_cast<long>(kFuzzBatch);
+    if (workers <= 1) return batch;
+    return std::clamp(positions / (4 * static_cast<long>(workers)), 1L, batch);
+  }
 
   // How many cases of the campaign this shard runs: the i < total with i mod N = K − 1.
   static long shardPositions(const FuzzOptions& o) {
@@ -219,36 +231,47 @@ class FuzzCampaign {
     std::vector<EngineResult> planned = w.engine->runBatch(batch);
     for (std::size_t k = 0; k < batch.size(); ++k) {
       FuzzVerdict v = judgeFuzzResult(std::move(planned[k]), *w.engine, w.vs, batch[k], options_.tolerance);
-      out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v)});
+      CaseResult r = resultOf(w, seeds[k], batch[k], v);
+      std::string line = resultLine(r);
+      line.pop_back();
+      out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v), std::move(r), std::move(line)});
     }
     return out;
   }
 
+  // The case's result as judged (a failure with the command that reproduces it).
+  CaseResult resultOf(const Worker& w, std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v) const {
+    const std::string engineName = w.engine->name(), vsName = w.vs ? w.vs->name() : "";
+    CaseResult r{engineName, "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
+                 caseSeed, "", vsName, std::nullopt, ""};
+    if (v.verdict == "fail" || v.verdict == "engine-failure") r.reproduce = reproduceCommand(engineName, vsName, caseSeed, options_);
+    return r;
+  }
+
   // The batch's cases recorded in order; false once the run is to stop (the time budget — cases
   // judged but not recorded are run again by a resumed run — or --max-failures).
-  bool recordBatch(int worker, const JudgedBatch& batch) {
+  bool recordBatch(int worker, JudgedBatch& batch) {
     summary_.skipped += batch.skipped;
-    for (const JudgedCase& j : batch.cases) {
+    for (JudgedCase& j : batch.cases) {
       if (options_.seconds && elapsed() >= *options_.seconds) return false;
-      record(workers_[static_cast<std::size_t>(worker)], j.caseSeed, j.c, j.verdict);
+      record(workers_[static_cast<std::size_t>(worker)], j);
       if (options_.maxFailures && summary_.fail + summary_.engineFailure >= *options_.maxFailures) return false;
     }
     return true;
   }
 
-  void record(const Worker& w, std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v) {
-    const std::string engineName = w.engine->name(), vsName = w.vs ? w.vs->name() : "";
-    CaseResult r{engineName, "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
-                 caseSeed, "", vsName, std::nullopt, ""};
+  void record(const Worker& w, JudgedCase& j) {
+    const FuzzVerdict& v = j.verdict;
     ++summary_.run;
     if (v.verdict == "pass") ++summary_.pass;
     else if (v.verdict == "not-applicable") ++summary_.notApplicable;
     else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
-    if (v.verdict == "fail" || v.verdict == "engine-failure") {
-      r.reproduce = reproduceCommand(engineName, vsName, caseSeed, options_);
-      if (shrunkKinds_.insert(v.kind).second) keepFailure(w, caseSeed, c, v, r);
+    if ((v.verdict == "fail" || v.verdict == "engine-failure") && shrunkKinds_.insert(v.kind).second) {
+      keepFailure(w, j.caseSeed, j.c, v, j.result);
+      j.line = resultLine(j.result);
+      j.line.pop_back();
     }
-    results_.append(r);  // a killed run keeps every result written so far
+    results_.appendLine(j.line);  // a killed run keeps every result written so far
     reportProgress();
   }
 
@@ -312,7 +335,7 @@ class FuzzCampaign {
   const FuzzOptions& options_;
   std::ostream& progress_;
   ResultsFile results_;  // read by the workers (done()), written by the one recording
-  const long batchSize_, positions_;
+  const long positions_, batchSize_;
   FuzzSummary summary_;
   std::set<std::string> shrunkKinds_;  // each kind of failure is shrunk (and kept) once per run
   const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
