@@ -193,6 +193,7 @@ class FuzzCampaign {
   struct JudgedBatch {
     long skipped = 0;  // cases already in the results (--resume)
     std::vector<JudgedCase> cases;
+    bool cut = false;  // the time budget ran out before every case was judged
   };
 
   // Cases per batch: kFuzzBatch; with --max-failures one, so that the run stops at the failure
@@ -230,6 +231,12 @@ class FuzzCampaign {
     }
     std::vector<EngineResult> planned = w.engine->runBatch(batch);
     for (std::size_t k = 0; k < batch.size(); ++k) {
+      // The time budget holds within a batch too: cases planned but not judged in time are not
+      // recorded (a resumed run runs them).
+      if (options_.seconds && elapsed() >= *options_.seconds) {
+        out.cut = true;
+        break;
+      }
       FuzzVerdict v = judgeFuzzResult(std::move(planned[k]), *w.engine, w.vs, batch[k], options_.tolerance);
       CaseResult r = resultOf(w, seeds[k], batch[k], v);
       std::string line = resultLine(r);
@@ -248,16 +255,16 @@ class FuzzCampaign {
     return r;
   }
 
-  // The batch's cases recorded in order; false once the run is to stop (the time budget — cases
-  // judged but not recorded are run again by a resumed run — or --max-failures).
+  // The batch's cases recorded in order; false once the run is to stop: the batch was cut by the
+  // time budget (the batches after it are not recorded, so the results stay the campaign's first
+  // cases), or --max-failures is reached.
   bool recordBatch(int worker, JudgedBatch& batch) {
     summary_.skipped += batch.skipped;
     for (JudgedCase& j : batch.cases) {
-      if (options_.seconds && elapsed() >= *options_.seconds) return false;
       record(workers_[static_cast<std::size_t>(worker)], j);
       if (options_.maxFailures && summary_.fail + summary_.engineFailure >= *options_.maxFailures) return false;
     }
-    return true;
+    return !batch.cut;
   }
 
   void record(const Worker& w, JudgedCase& j) {
