@@ -8,6 +8,7 @@
 #include "harness/engine_diff.h"
 #include "harness/failure_plot.h"
 #include "harness/judging.h"
+#include "harness/parallel_run.h"
 #include "harness/reproduce.h"
 #include "harness/spec_check.h"
 #include "harness/toolpath_compare.h"
@@ -146,27 +147,59 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
   return out;
 }
 
-CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream& progress) {
+namespace {
+
+// One case of the run, checked by a worker, with its results line (made there too); no result when
+// the results already hold it (--resume).
+struct CheckedCase {
+  std::string id;
+  std::optional<CaseResult> result;
+  std::string line;  // resultLine(*result), without its newline
+};
+
+// The cases of the shard (every N-th case of the list, from the K-th) checked on the workers and
+// recorded in list order.
+CheckSummary checkOnWorkers(const std::vector<Engine*>& engines, const CheckOptions& options, std::ostream& progress) {
   ResultsFile results(options.outDir, options.resume);
   const auto& done = results.done();
   CheckSummary s;
-  auto files = findSpecCaseFiles(options.specsDir + "/cases");
+  auto all = findSpecCaseFiles(options.specsDir + "/cases");
   if (!options.regressionsDir.empty() && std::filesystem::is_directory(options.regressionsDir)) {
-    for (auto& f : findSpecCaseFiles(options.regressionsDir)) files.push_back(std::move(f));
+    for (auto& f : findSpecCaseFiles(options.regressionsDir)) all.push_back(std::move(f));
   }
   std::optional<ExpectationMatcher> matcher;
   if (options.expectations) matcher.emplace(*options.expectations);
+  std::vector<std::string> files;
+  for (std::size_t i = static_cast<std::size_t>(options.shard - 1); i < all.size(); i += static_cast<std::size_t>(options.shards)) {
+    files.push_back(std::move(all[i]));
+  }
+  const auto check = [&](int worker, long item) -> std::optional<CheckedCase> {
+    if (item >= static_cast<long>(files.size())) return std::nullopt;
+    Engine& engine = *engines[static_cast<std::size_t>(worker)];
+    const SpecCase c = loadSpecCase(files[static_cast<std::size_t>(item)]);
+    if (done.count({engine.name(), c.id})) return CheckedCase{c.id, std::nullopt, ""};
+    CaseResult r = checkCase(engine, c);
+    std::string line = resultLine(r);
+    line.pop_back();
+    return CheckedCase{c.id, std::move(r), std::move(line)};
+  };
   const auto started = std::chrono::steady_clock::now();
   auto lastReport = started;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    const SpecCase c = loadSpecCase(files[i]);
-    if (done.count({engine.name(), c.id})) {
+  long recorded = 0;
+  const auto record = [&](int, CheckedCase& checked) {
+    ++recorded;
+    if (!checked.result) {
       ++s.skipped;
-      continue;
+      return true;
     }
-    CaseResult r = checkCase(engine, c);
+    CaseResult& r = *checked.result;
+    // The expectations are matched here, on the one thread that records (the matcher counts uses).
     const ExpectationStatus expected = matcher ? matcher->apply(r) : ExpectationStatus::None;
-    results.append(r);  // a killed run keeps every result written so far
+    if (matcher) {
+      checked.line = resultLine(r);  // with its expectation
+      checked.line.pop_back();
+    }
+    results.appendLine(checked.line);  // a killed run keeps every result written so far
     if (expected == ExpectationStatus::UnexpectedPass) {
       ++s.unexpectedPasses;
       progress << unexpectedPassText(r) << "\n";
@@ -178,18 +211,37 @@ CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream&
     else if (r.verdict == "not-applicable") ++s.notApplicable;
     else ++s.engineFailure;
     if ((r.verdict == "fail" || r.verdict == "engine-failure") && !known) {
-      progress << r.verdict << ": " << c.id << ": " << r.detail << "\n";
+      progress << r.verdict << ": " << checked.id << ": " << r.detail << "\n";
     }
     const auto now = std::chrono::steady_clock::now();
     if (now - lastReport > std::chrono::seconds(2)) {
-      progress << "  " << i + 1 << "/" << files.size() << " cases, " << s.fail << " failing\n";
+      progress << "  " << recorded << "/" << files.size() << " cases, " << s.fail << " failing\n";
       lastReport = now;
     }
-  }
-  if (matcher && s.skipped == 0) {
+    return true;
+  };
+  runInItemOrder<CheckedCase>(static_cast<int>(engines.size()), check, record);
+  // An entry unused by a whole run is stale; a shard or a resumed run saw only some of the cases.
+  if (matcher && s.skipped == 0 && options.shards == 1) {
     for (const Expectation* x : matcher->unused()) s.unusedExpectations.push_back(*x);
   }
   return s;
+}
+
+}  // namespace
+
+CheckSummary runCheck(const EnginesMaker& makeEngines, const CheckOptions& options, std::ostream& progress) {
+  std::vector<std::unique_ptr<Engine>> owned;
+  std::vector<Engine*> engines;
+  for (int w = 0; w < std::max(options.jobs, 1); ++w) {
+    owned.push_back(makeEngines().engine);
+    engines.push_back(owned.back().get());
+  }
+  return checkOnWorkers(engines, options, progress);
+}
+
+CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream& progress) {
+  return checkOnWorkers({&engine}, options, progress);
 }
 
 }  // namespace cyclecert

@@ -10,6 +10,7 @@
 #include "harness/engines/engine.h"
 #include "harness/expectations.h"
 #include "harness/results_file.h"
+#include "harness/worker_engines.h"
 
 namespace cyclecert {
 
@@ -21,6 +22,8 @@ struct CheckOptions {
   std::string outDir;    // results.jsonl goes here
   bool resume = false;
   const Expectations* expectations = nullptr;  // --expectations: known failures do not fail the run
+  int jobs = 1;               // workers (--jobs), each with its own engine; the results do not depend on it
+  int shard = 1, shards = 1;  // run shard K of N (1-based): case i of the list (specs, then regressions) when i mod N = K − 1
 };
 
 struct CheckSummary {
@@ -33,6 +36,10 @@ struct CheckSummary {
 };
 
 // Runs the cases, reporting progress on `progress` for runs longer than a few seconds.
+// With options.jobs workers, each with the engine makeEngines makes (its vs is not used); the
+// results and their order in results.jsonl are those of one worker (harness/parallel_run.h).
+CheckSummary runCheck(const EnginesMaker& makeEngines, const CheckOptions& options, std::ostream& progress);
+// On one worker with this engine (options.jobs is not used).
 CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream& progress);
 
 }  // namespace cyclecert

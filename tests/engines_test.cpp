@@ -147,8 +147,9 @@ TEST_F(CheckRun, AKilledRunKeepsItsResultsAndResumes) {
   if (pid == 0) {
     ::setpgid(0, 0);  // its own group, killed whole below as a CI runner would kill a job
     const std::string specs = (dir_ / "specs").string(), out = (dir_ / "out").string();
+    // One worker: with more, each worker's engine would answer its own first case.
     ::execl(CYCLECERT_CLI, "cyclecert", "check", "--engine", engine.c_str(), "--specs", specs.c_str(), "--out",
-            out.c_str(), "--timeout", "600", static_cast<char*>(nullptr));
+            out.c_str(), "--timeout", "600", "--jobs", "1", static_cast<char*>(nullptr));
     ::_exit(127);
   }
   // Wait for the first result, then kill the run while the engine hangs on the second case.

@@ -1,11 +1,13 @@
 // `cyclecert check` and `cyclecert engines`: the spec suite against one engine.
 #include <iostream>
+#include <tuple>
 
 #include "harness/campaign.h"
 #include "harness/check_run.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
 #include "harness/expectations.h"
+#include "harness/parallel_run.h"
 #include "harness/rule_catalogue.h"
 #include "harness/run_lock.h"
 #include "harness/run_record.h"
@@ -15,7 +17,8 @@ namespace cyclecert::cli {
 namespace {
 
 const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]]
-                       [--timeout S] [--expectations FILE [--strict]]
+                       [--timeout S] [--jobs N] [--shard K/N | --shard auto]
+                       [--expectations FILE [--strict]]
 
 Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
 failure kept as a spec case under corpus/regressions/, against engine E
@@ -27,7 +30,9 @@ OUT/run.lock; a second is refused). A result that cannot be written (disk full) 
 exit 2, saying how many results are safe. OUT/run.json records the run (engine and its
 version, cyclecert's version and git revision, the spec suite's hash, the start, the command line;
 --resume adds a record), and at the end the report is written: OUT/report.json, OUT/junit.xml and
-OUT/index.html (`cyclecert report`).
+OUT/index.html (`cyclecert report`). --jobs runs the cases on N threads, each with its own engine:
+the results are those of --jobs 1, in the same order. --shard splits the suite between runs
+(`cyclecert merge` joins them).
 
 Options:
   --engine E     reference | linuxcnc | process:COMMAND | mutant:NAME
@@ -39,6 +44,12 @@ Options:
   --timeout S    per-case timeout for engines in another process (default 10)
   --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
   --no-regressions    run the spec cases only
+  --jobs N       workers, each with its own engine (default: the number of cores)
+  --shard K/N    run only case i (of the spec cases, then the regressions, in file-name order) when
+                 i mod N = K−1
+  --shard auto   K/N from the environment: CYCLECERT_SHARD=K/N, else GitLab's CI_NODE_INDEX and
+                 CI_NODE_TOTAL, else a Kubernetes Indexed Job's JOB_COMPLETION_INDEX (0-based) with
+                 CYCLECERT_SHARD_COUNT, else a Slurm array's SLURM_ARRAY_TASK_ID, _COUNT and _MIN
   --expectations FILE the engine's known failures (JSON or `ID OUTCOME # reason` lines; README
                  "Expectation files"; `cyclecert baseline` writes one): a case failing as its entry
                  says is an expected failure, counted apart, and does not fail the run; an entry
@@ -61,6 +72,7 @@ Lists the engines `check` can run: the reference, any external program speaking 
 static int commandCheck(const std::vector<std::string>& args) {
   std::string engineName;
   CheckOptions options{defaultSpecsDir(), defaultRegressionsDir(), "build/check", false};
+  options.jobs = defaultJobs();
   EngineOptions engineOptions;
   bool mixCampaigns = false, strict = false;
   std::optional<Expectations> expectations;
@@ -75,7 +87,9 @@ static int commandCheck(const std::vector<std::string>& args) {
        {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
        {"--expectations", [&](const std::string& v) { expectations = readExpectations(v); }},
        {"--strict", [&] { strict = true; }},
-       {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
+       {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }},
+       {"--jobs", [&](const std::string& v) { options.jobs = jobsArg(v); }},
+       {"--shard", [&](const std::string& v) { std::tie(options.shard, options.shards) = shardArg(v); }}},
       "check");
   if (!positional.empty()) throw UsageError("unexpected argument '" + positional.front() + "'");
   if (engineName.empty()) throw UsageError("give --engine (see `cyclecert engines`)");
@@ -86,9 +100,10 @@ static int commandCheck(const std::vector<std::string>& args) {
   std::vector<std::string> argv{"cyclecert", "check"};
   argv.insert(argv.end(), args.begin(), args.end());
   const RunLock lock(options.outDir, commandLineText(argv));  // held until the report is written
-  recordRun(options.outDir, startRunRecord("check", *engine, nullptr, options.specsDir, std::nullopt, argv), options.resume,
-            mixCampaigns);
-  const CheckSummary s = runCheck(*engine, options, std::cerr);
+  RunRecord record = startRunRecord("check", *engine, nullptr, options.specsDir, std::nullopt, argv);
+  if (options.shards > 1) record.shard = std::to_string(options.shard) + "/" + std::to_string(options.shards);
+  recordRun(options.outDir, record, options.resume, mixCampaigns);
+  const CheckSummary s = runCheck(namedEngines(engineName, "", engineOptions), options, std::cerr);
   std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable
             << " not applicable, " << s.engineFailure << " engine failure(s)"
             << expectationCountsText(s.expectedFailures, s.unexpectedPasses + static_cast<long>(s.unusedExpectations.size()));

@@ -5,7 +5,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "harness/ci_shard.h"
 #include "harness/input_file.h"
+#include "harness/parallel_run.h"
 #include "reference/model/params.h"
 
 namespace cyclecert::cli {
@@ -64,6 +66,25 @@ double numberArg(const std::string& option, const std::string& text, double min,
     throw UsageError(s.str());
   }
   return v;
+}
+
+int jobsArg(const std::string& text) {
+  const bool digits = !text.empty() && text.size() <= 4 && text.find_first_not_of("0123456789") == std::string::npos;
+  const int jobs = digits ? std::stoi(text) : 0;
+  if (jobs < 1 || jobs > kMaxJobs) {
+    throw UsageError("--jobs expects a whole number of workers from 1 to " + std::to_string(kMaxJobs) +
+                     " (default: the number of cores, " + std::to_string(defaultJobs()) + " here), got '" + text + "'");
+  }
+  return jobs;
+}
+
+std::pair<int, int> shardArg(const std::string& text) {
+  try {
+    const Shard s = shardOption(text);
+    return {s.index, s.count};
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string(text == "auto" ? "--shard auto: " : "--shard K/N or auto: ") + e.what());
+  }
 }
 
 std::vector<std::pair<std::string, double>> parsedParams(const std::vector<std::string>& texts) {

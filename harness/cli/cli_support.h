@@ -40,6 +40,14 @@ void writeFile(const std::string& path, const std::string& text);  // "-" is sta
 // A number option within [min, max]; names the option when the text is not one.
 double numberArg(const std::string& option, const std::string& text, double min, double max);
 
+// --jobs N: a whole number of workers from 1 to kMaxJobs; the message names the default (the cores).
+inline constexpr int kMaxJobs = 1024;
+int jobsArg(const std::string& text);
+
+// --shard K/N or --shard auto (harness/ci_shard.h) as (K, N); a bad value or no shard in the
+// environment is a UsageError saying what is read and what would be accepted.
+std::pair<int, int> shardArg(const std::string& text);
+
 // --param NAME=VALUE texts, validated, as (name, value) settings.
 std::vector<std::pair<std::string, double>> parsedParams(const std::vector<std::string>& texts);
 

@@ -5,12 +5,14 @@
 #include <iostream>
 #include <random>
 #include <set>
+#include <tuple>
 
 #include "harness/campaign.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
 #include "harness/expectations.h"
 #include "harness/fuzz/fuzz_run.h"
+#include "harness/parallel_run.h"
 #include "harness/results_file.h"
 #include "harness/rule_catalogue.h"
 #include "harness/run_lock.h"
@@ -20,8 +22,8 @@ namespace cyclecert::cli {
 
 namespace {
 
-const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--shard K/N]
-                      [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
+const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--jobs N]
+                      [--shard K/N | --shard auto] [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
                       [--timeout S] [--formats LIST] [--cycles LIST] [--expectations FILE [--strict]]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
@@ -38,7 +40,10 @@ holds OUT/run.lock; a second is refused). A result that cannot be written (disk 
 with exit 2, saying how many results are safe. OUT/run.json records the run (engines
 and versions, git revision, spec suite hash, start, seed, command line), and at the end the report
 is written: OUT/report.json, OUT/junit.xml, OUT/index.html (`cyclecert report`). Shards split one
-campaign: run --shard 1/4 … --shard 4/4 with the same --seed and --cases, then `cyclecert merge`.
+campaign: run --shard 1/4 … --shard 4/4 with the same --seed and --cases, then `cyclecert merge`
+(in CI, --shard auto reads the shard from the CI system; examples/ci/ has GitHub Actions, GitLab,
+Kubernetes and Slurm set-ups). --jobs runs the cases on N threads, each with its own engine (one
+child process or rs274 each): the results are those of --jobs 1, written in the same order.
 
 Options:
   --engine E          reference | linuxcnc | process:COMMAND | mutant:NAME (`cyclecert engines`)
@@ -47,7 +52,13 @@ Options:
   --time SECONDS      stop after this long
   --seed S            the run's seed (default: random, printed); case i uses S + i·0x9E3779B97F4A7C15,
                       so `--seed <case seed> --cases 1` regenerates one case
+  --jobs N            workers, each with its own engine (default: the number of cores); the same
+                      results as --jobs 1
   --shard K/N         run only the cases i with i mod N = K−1
+  --shard auto        K/N from the environment: CYCLECERT_SHARD=K/N, else GitLab's CI_NODE_INDEX
+                      and CI_NODE_TOTAL, else a Kubernetes Indexed Job's JOB_COMPLETION_INDEX
+                      (0-based) with CYCLECERT_SHARD_COUNT (Kubernetes does not export the count),
+                      else a Slurm array's SLURM_ARRAY_TASK_ID, _COUNT and _MIN (and _STEP)
   --out DIR           where results.jsonl, run.json and the report go (default build/fuzz)
   --regressions DIR   where shrunk failures are written (default corpus/regressions)
   --no-save           do not write shrunk failures
@@ -120,18 +131,12 @@ std::uint64_t randomSeed() {
   return (static_cast<std::uint64_t>(device()) << 32) ^ device();
 }
 
-void parseShard(const std::string& text, FuzzOptions& o) {
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) throw UsageError("--shard expects K/N, e.g. 2/4, got '" + text + "'");
-  o.shards = static_cast<int>(numberArg("--shard N", text.substr(slash + 1), 1, 100000));
-  o.shard = static_cast<int>(numberArg("--shard K", text.substr(0, slash), 1, o.shards));
-}
-
 }  // namespace
 
 static int commandFuzz(const std::vector<std::string>& args) {
   std::string engineName, vsName;
   FuzzOptions options;
+  options.jobs = defaultJobs();
   options.regressionsDir = defaultRegressionsDir();
   std::optional<std::uint64_t> seed;
   EngineOptions engineOptions;
@@ -156,7 +161,8 @@ static int commandFuzz(const std::vector<std::string>& args) {
             throw UsageError("--seed expects a whole number from 0 to 2^64−1, got '" + v + "'");
           }
         }},
-       {"--shard", [&](const std::string& v) { parseShard(v, options); }},
+       {"--shard", [&](const std::string& v) { std::tie(options.shard, options.shards) = shardArg(v); }},
+       {"--jobs", [&](const std::string& v) { options.jobs = jobsArg(v); }},
        {"--out", [&](const std::string& v) { options.outDir = v; }},
        {"--regressions", [&](const std::string& v) { options.regressionsDir = v; }},
        {"--no-save", [&] { options.regressionsDir.clear(); }},
@@ -205,7 +211,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
   if (options.formats != kDefaultCycleFormats) record.formats = cycleFormatsText(options.formats);
   if (options.cycles != kDefaultFuzzCycles) record.cycles = fuzzCyclesText(options.cycles);
   recordRun(options.outDir, record, options.resume, mixCampaigns);
-  const FuzzSummary s = runFuzz(*engine, vs.get(), options, std::cerr);
+  const FuzzSummary s = runFuzz(namedEngines(engineName, vsName, engineOptions), options, std::cerr);
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
             << s.seconds << " s (" << static_cast<long>(s.run / std::max(s.seconds, 1e-9)) << "/s): " << s.pass
             << " pass, " << s.fail << " fail, " << s.notApplicable << " not applicable, " << s.engineFailure

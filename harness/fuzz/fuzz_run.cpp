@@ -1,5 +1,6 @@
 #include "harness/fuzz/fuzz_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 #include <iomanip>
@@ -11,6 +12,7 @@
 #include "harness/failure_plot.h"
 #include "harness/fuzz/regression_case.h"
 #include "harness/judging.h"
+#include "harness/parallel_run.h"
 #include "harness/reproduce.h"
 #include "harness/spec_check.h"
 #include "reference/model/alarms.h"
@@ -156,52 +158,127 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
   return f;
 }
 
-// One campaign: cases in batches (one engine call each), each judged, recorded and — the first
-// failure of each kind — shrunk, printed and kept.
+// One campaign: cases in batches (one engine call each) generated, planned and judged by the
+// workers, then recorded in case order — the first failure of each kind shrunk, printed and kept.
 class FuzzCampaign {
  public:
-  FuzzCampaign(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress)
-      : engine_(engine), vs_(vs), options_(options), progress_(progress), results_(options.outDir, options.resume) {
+  // One worker's engines: worker w uses workers[w].
+  struct Worker {
+    Engine* engine;
+    Engine* vs;
+  };
+
+  FuzzCampaign(std::vector<Worker> workers, const FuzzOptions& options, std::ostream& progress)
+      : workers_(std::move(workers)), options_(options), progress_(progress), results_(options.outDir, options.resume),
+        positions_(shardPositions(options)), batchSize_(batchSize(options, positions_, workers_.size())) {
     if (options.expectations) matcher_.emplace(*options.expectations);
   }
 
   FuzzSummary run() {
-    const long total = options_.cases ? *options_.cases : options_.seconds ? LONG_MAX : kDefaultFuzzCases;
-    for (long next = options_.shard - 1; next < total;) {
-      if (options_.seconds && elapsed() >= *options_.seconds) break;
-      if (options_.maxFailures && summary_.fail + summary_.engineFailure >= *options_.maxFailures) break;
-      std::vector<std::uint64_t> seeds;
-      std::vector<SpecCase> batch;
-      // With --max-failures one case at a time, so that the run stops at the failure itself.
-      const std::size_t batchSize = options_.maxFailures ? 1 : kFuzzBatch;
-      for (; next < total && batch.size() < batchSize; next += options_.shards) {
-        const std::uint64_t caseSeed = fuzzCaseSeed(options_.seed, next);
-        if (results_.done().count({engine_.name(), "fuzz-" + caseSeedTag(caseSeed)})) {
-          ++summary_.skipped;
-          continue;
-        }
-        seeds.push_back(caseSeed);
-        batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed, options_.formats, options_.cycles), caseSeedTag(caseSeed)));
-      }
-      std::vector<EngineResult> planned = engine_.runBatch(batch);
-      for (std::size_t k = 0; k < batch.size(); ++k) {
-        // The time budget holds within a batch too: cases planned but not judged are not recorded
-        // (a resumed run runs them).
-        if (options_.seconds && elapsed() >= *options_.seconds) break;
-        record(seeds[k], batch[k], std::move(planned[k]));
-      }
-    }
+    runInItemOrder<JudgedBatch>(
+        static_cast<int>(workers_.size()), [this](int worker, long item) { return judgeBatch(worker, item); },
+        [this](int worker, JudgedBatch& batch) { return recordBatch(worker, batch); });
     summary_.seconds = elapsed();
     return summary_;
   }
 
  private:
-  void record(std::uint64_t caseSeed, const SpecCase& c, EngineResult planned) {
-    const FuzzVerdict v = judgeFuzzResult(std::move(planned), engine_, vs_, c, options_.tolerance);
-    CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
-                 caseSeed, "", vs_ ? vs_->name() : "", std::nullopt, ""};
+  // A case judged by a worker, with its result and its results line made there too (the line is
+  // made again when the case is the first failure of its kind, shrunk and drawn when recorded).
+  struct JudgedCase {
+    std::uint64_t caseSeed;
+    SpecCase c;
+    FuzzVerdict verdict;
+    CaseResult result;
+    std::string line;  // resultLine(result), without its newline
+  };
+  struct JudgedBatch {
+    long skipped = 0;  // cases already in the results (--resume)
+    std::vector<JudgedCase> cases;
+    bool cut = false;  // the time budget ran out before every case was judged
+  };
+
+  // Cases per batch: kFuzzBatch; with --max-failures one, so that the run stops at the failure
+  // itself; with several workers and few cases, fewer, so that each worker gets a few batches.
+  static long batchSize(const FuzzOptions& o, long positions, std::size_t workers) {
+    if (o.maxFailures) return 1;
+    const long batch = static_cast<long>(kFuzzBatch);
+    if (workers <= 1) return batch;
+    return std::clamp(positions / (4 * static_cast<long>(workers)), 1L, batch);
+  }
+
+  // How many cases of the campaign this shard runs: the i < total with i mod N = K − 1.
+  static long shardPositions(const FuzzOptions& o) {
+    const long total = o.cases ? *o.cases : o.seconds ? LONG_MAX : kDefaultFuzzCases;
+    return total < o.shard ? 0 : (total - o.shard) / o.shards + 1;
+  }
+
+  // The shard's cases batchSize_·b … batchSize_·(b + 1) − 1 generated, planned and judged; nothing
+  // past the last case or the time budget.
+  std::optional<JudgedBatch> judgeBatch(int worker, long b) {
+    if (b >= positions_ / batchSize_ + (positions_ % batchSize_ != 0)) return std::nullopt;  // no overflow at LONG_MAX
+    if (options_.seconds && elapsed() >= *options_.seconds) return std::nullopt;
+    const Worker& w = workers_[static_cast<std::size_t>(worker)];
+    JudgedBatch out;
+    std::vector<std::uint64_t> seeds;
+    std::vector<SpecCase> batch;
+    for (long j = b * batchSize_; j < std::min(positions_, (b + 1) * batchSize_); ++j) {
+      const std::uint64_t caseSeed = fuzzCaseSeed(options_.seed, options_.shard - 1 + j * options_.shards);
+      if (results_.done().count({w.engine->name(), "fuzz-" + caseSeedTag(caseSeed)})) {
+        ++out.skipped;
+        continue;
+      }
+      seeds.push_back(caseSeed);
+      batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed, options_.formats, options_.cycles), caseSeedTag(caseSeed)));
+    }
+    std::vector<EngineResult> planned = w.engine->runBatch(batch);
+    for (std::size_t k = 0; k < batch.size(); ++k) {
+      // The time budget holds within a batch too: cases planned but not judged in time are not
+      // recorded (a resumed run runs them).
+      if (options_.seconds && elapsed() >= *options_.seconds) {
+        out.cut = true;
+        break;
+      }
+      FuzzVerdict v = judgeFuzzResult(std::move(planned[k]), *w.engine, w.vs, batch[k], options_.tolerance);
+      CaseResult r = resultOf(w, seeds[k], batch[k], v);
+      std::string line = resultLine(r);
+      line.pop_back();
+      out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v), std::move(r), std::move(line)});
+    }
+    return out;
+  }
+
+  // The case's result as judged (a failure with the command that reproduces it).
+  CaseResult resultOf(const Worker& w, std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v) const {
+    const std::string engineName = w.engine->name(), vsName = w.vs ? w.vs->name() : "";
+    CaseResult r{engineName, "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
+                 caseSeed, "", vsName, std::nullopt, ""};
+    if (v.verdict == "fail" || v.verdict == "engine-failure") r.reproduce = reproduceCommand(engineName, vsName, caseSeed, options_);
+    return r;
+  }
+
+  // The batch's cases recorded in order; false once the run is to stop: the batch was cut by the
+  // time budget (the batches after it are not recorded, so the results stay the campaign's first
+  // cases), or --max-failures is reached.
+  bool recordBatch(int worker, JudgedBatch& batch) {
+    summary_.skipped += batch.skipped;
+    for (JudgedCase& j : batch.cases) {
+      record(workers_[static_cast<std::size_t>(worker)], j);
+      if (options_.maxFailures && summary_.fail + summary_.engineFailure >= *options_.maxFailures) return false;
+    }
+    return !batch.cut;
+  }
+
+  void record(const Worker& w, JudgedCase& j) {
+    const FuzzVerdict& v = j.verdict;
+    // The expectations are matched here, on the one thread that records (the matcher counts uses).
+    CaseResult& r = j.result;
     const ExpectationStatus expected = matcher_ ? matcher_->apply(r, v.kind) : ExpectationStatus::None;
     const bool known = expected == ExpectationStatus::Expected && v.verdict != "not-applicable";  // an expected failure
+    if (matcher_) {
+      j.line = resultLine(r);  // with its expectation
+      j.line.pop_back();
+    }
     ++summary_.run;
     if (expected == ExpectationStatus::UnexpectedPass) {
       ++summary_.unexpectedPasses;
@@ -211,27 +288,28 @@ class FuzzCampaign {
     else if (v.verdict == "pass") ++summary_.pass;
     else if (v.verdict == "not-applicable") ++summary_.notApplicable;
     else (v.verdict == "fail" ? summary_.fail : summary_.engineFailure)++;
-    if (v.verdict == "fail" || v.verdict == "engine-failure") {
-      r.reproduce = reproduceCommand(engine_.name(), vs_ ? vs_->name() : "", caseSeed, options_);
-      if (!known && shrunkKinds_.insert(v.kind).second) keepFailure(caseSeed, c, v, r);
+    if ((v.verdict == "fail" || v.verdict == "engine-failure") && !known && shrunkKinds_.insert(v.kind).second) {
+      keepFailure(w, j.caseSeed, j.c, v, j.result);
+      j.line = resultLine(j.result);
+      j.line.pop_back();
     }
-    results_.append(r);  // a killed run keeps every result written so far
+    results_.appendLine(j.line);  // a killed run keeps every result written so far
     reportProgress();
   }
 
-  void keepFailure(std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v, CaseResult& r) {
-    FuzzFailure f = shrinkFailure(engine_, vs_, caseSeed, v, options_);
+  void keepFailure(const Worker& w, std::uint64_t caseSeed, const SpecCase& c, const FuzzVerdict& v, CaseResult& r) {
+    FuzzFailure f = shrinkFailure(*w.engine, w.vs, caseSeed, v, options_);
     const std::string& reproduce = r.reproduce;
     if (!options_.regressionsDir.empty()) {
       // The rules behind the failure: the oracle's on the shrunk case, else the case's.
       const std::vector<std::string>& rules = f.rules.empty() ? c.rules : f.rules;
-      f.regressionFile = writeRegressionCase(options_.regressionsDir, f, engine_.name(), vs_ ? vs_->name() : "", rules,
+      f.regressionFile = writeRegressionCase(options_.regressionsDir, f, w.engine->name(), w.vs ? w.vs->name() : "", rules,
                                              reproduce);
     }
     r.program = fuzzProgram(f.shrunk);
     r.file = f.regressionFile;
     r.detail = v.detail + " | shrunk in " + std::to_string(f.shrinkRuns) + " runs: " + f.detail;
-    drawShrunk(f, r);
+    drawShrunk(w, f, r);
     progress_ << "FAIL " << v.kind << " (seed " << caseSeed << "): " << f.detail << "\n  shrunk case ("
               << describeFuzzCase(f.shrunk) << "):\n";
     std::istringstream lines(r.program);
@@ -244,20 +322,20 @@ class FuzzCampaign {
   // The shrunk case run again (engines are deterministic), judged, and drawn — with --vs, the other
   // engine's toolpath over it. The result then shows the shrunk case throughout: its program, its
   // findings and its plot (the detail keeps the first finding of the case as generated).
-  void drawShrunk(const FuzzFailure& f, CaseResult& r) {
+  void drawShrunk(const Worker& w, const FuzzFailure& f, CaseResult& r) {
     const SpecCase shrunk = fuzzSpecCase(f.shrunk, caseSeedTag(f.caseSeed));
-    const EngineResult mine = engine_.run(shrunk);
-    const FuzzVerdict v = judgeFuzzResult(mine, engine_, nullptr, shrunk, options_.tolerance);
+    const EngineResult mine = w.engine->run(shrunk);
+    const FuzzVerdict v = judgeFuzzResult(mine, *w.engine, nullptr, shrunk, options_.tolerance);
     std::optional<PlotComparison> theirs;
-    if (vs_) {
-      const EngineResult other = vs_->run(shrunk);
+    if (w.vs) {
+      const EngineResult other = w.vs->run(shrunk);
       if (other.kind == EngineResult::Planned || other.kind == EngineResult::Alarmed) {
-        const auto d = compareEngineResults(mine, engine_.name(), other, vs_->name(), options_.tolerance);
-        theirs = PlotComparison{vs_->name(), other.path, d ? d->move : std::nullopt};
+        const auto d = compareEngineResults(mine, w.engine->name(), other, w.vs->name(), options_.tolerance);
+        theirs = PlotComparison{w.vs->name(), other.path, d ? d->move : std::nullopt};
       }
     }
     r.findings = v.findings;
-    if (const auto plot = failurePlot(shrunk, mine, engine_.name(), v.findings, options_.tolerance, theirs)) {
+    if (const auto plot = failurePlot(shrunk, mine, w.engine->name(), v.findings, options_.tolerance, theirs)) {
       r.plot = plotToJson(*plot);
     }
   }
@@ -275,11 +353,11 @@ class FuzzCampaign {
 
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(); }
 
-  Engine& engine_;
-  Engine* vs_;
+  const std::vector<Worker> workers_;
   const FuzzOptions& options_;
   std::ostream& progress_;
-  ResultsFile results_;
+  ResultsFile results_;  // read by the workers (done()), written by the one recording
+  const long positions_, batchSize_;
   FuzzSummary summary_;
   std::optional<ExpectationMatcher> matcher_;  // --expectations
   std::set<std::string> shrunkKinds_;  // each kind of failure is shrunk (and kept) once per run
@@ -289,8 +367,18 @@ class FuzzCampaign {
 
 }  // namespace
 
+FuzzSummary runFuzz(const EnginesMaker& makeEngines, const FuzzOptions& options, std::ostream& progress) {
+  std::vector<WorkerEngines> owned;
+  std::vector<FuzzCampaign::Worker> workers;
+  for (int w = 0; w < std::max(options.jobs, 1); ++w) {
+    owned.push_back(makeEngines());
+    workers.push_back({owned.back().engine.get(), owned.back().vs.get()});
+  }
+  return FuzzCampaign(std::move(workers), options, progress).run();
+}
+
 FuzzSummary runFuzz(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress) {
-  return FuzzCampaign(engine, vs, options, progress).run();
+  return FuzzCampaign({{&engine, vs}}, options, progress).run();
 }
 
 }  // namespace cyclecert

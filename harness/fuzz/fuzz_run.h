@@ -17,6 +17,7 @@
 #include "harness/expectations.h"
 #include "harness/fuzz/case_generator.h"
 #include "harness/results_file.h"
+#include "harness/worker_engines.h"
 
 namespace cyclecert {
 
@@ -34,6 +35,7 @@ struct FuzzOptions {
   CycleFormats formats = kDefaultCycleFormats;  // the cycle formats drawn (--formats)
   FuzzCycles cycles = kDefaultFuzzCycles;       // the cycles drawn (--cycles)
   const Expectations* expectations = nullptr;   // --expectations: known failures are neither counted as failing nor shrunk
+  int jobs = 1;                   // workers (--jobs), each with its own engines; the results do not depend on it
 };
 
 inline constexpr long kDefaultFuzzCases = 2000;
@@ -82,6 +84,10 @@ inline constexpr std::size_t kFuzzBatch = 64;
 
 // Runs the campaign; progress (cases/s, failures so far) goes to `progress` every few seconds,
 // and each failure as it is found, with its seed and the command that reproduces it.
+// With options.jobs workers, each with the engines makeEngines makes (harness/parallel_run.h): the
+// results, their order in results.jsonl and the failures kept are those of one worker.
+FuzzSummary runFuzz(const EnginesMaker& makeEngines, const FuzzOptions& options, std::ostream& progress);
+// On one worker with these engines (options.jobs is not used).
 FuzzSummary runFuzz(Engine& engine, Engine* vs, const FuzzOptions& options, std::ostream& progress);
 
 }  // namespace cyclecert
