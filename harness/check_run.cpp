@@ -92,7 +92,7 @@ std::optional<Finding> expectationFinding(const SpecCase& c, const EngineResult&
 
 }  // namespace
 
-CaseResult checkCase(Engine& engine, const SpecCase& c) {
+CaseResult checkCase(Engine& engine, const SpecCase& c, MetamorphicTally* relations) {
   CaseResult out;
   out.engine = engine.name();
   out.caseId = c.id;
@@ -135,12 +135,17 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
       if (out.detail.empty()) out.detail = out.findings.front().oracle + ": " + out.findings.front().message;
     }
   }
+  std::optional<MetamorphicViolation> violation;
+  if (relations) violation = addRelationVerdicts(engine, c, r, out, *relations);
   if (out.verdict.empty()) {
     out.verdict = "pass";
     return out;
   }
-  out.reproduce = reproduce;
-  if (const auto plot = failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
+  out.reproduce = relations ? metamorphicReproduceCommand(engine.name(), c.file, c.agreesWith.value_or(""))
+                            : reproduce;
+  if (violation && out.findings.front().oracle == metamorphicKind(violation->relation)) {
+    if (const auto plot = metamorphicPlot(*violation, engine.name(), c.tolerance)) out.plot = plotToJson(*plot);
+  } else if (const auto plot = failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
     out.plot = plotToJson(*plot);
   }
   return out;
@@ -162,7 +167,7 @@ CheckSummary runCheck(Engine& engine, const CheckOptions& options, std::ostream&
       ++s.skipped;
       continue;
     }
-    const CaseResult r = checkCase(engine, c);
+    const CaseResult r = checkCase(engine, c, options.metamorphic ? &s.metamorphic : nullptr);
     results.append(r);  // a killed run keeps every result written so far
     if (r.verdict == "pass") ++s.pass;
     else if (r.verdict == "fail") ++s.fail;

@@ -8,21 +8,26 @@
 #include <vector>
 
 #include "harness/engines/engine.h"
+#include "harness/metamorphic_run.h"
 #include "harness/results_file.h"
 
 namespace cyclecert {
 
-CaseResult checkCase(Engine& engine, const SpecCase& c);
+// With `relations` (--metamorphic), every metamorphic relation's follow-up runs through the engine
+// too and is counted there (harness/metamorphic_run.h).
+CaseResult checkCase(Engine& engine, const SpecCase& c, MetamorphicTally* relations = nullptr);
 
 struct CheckOptions {
   std::string specsDir;  // holds cases/
   std::string regressionsDir;  // shrunk fuzz failures (spec cases) run after the specs; "" for none
   std::string outDir;    // results.jsonl goes here
   bool resume = false;
+  bool metamorphic = false;  // --metamorphic: every case's follow-ups too
 };
 
 struct CheckSummary {
   int pass = 0, fail = 0, notApplicable = 0, engineFailure = 0, skipped = 0;
+  MetamorphicTally metamorphic;  // with --metamorphic
   bool clean() const { return fail == 0 && engineFailure == 0; }
 };
 

@@ -14,7 +14,7 @@ namespace cyclecert::cli {
 namespace {
 
 const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]]
-                       [--timeout S]
+                       [--timeout S] [--metamorphic]
 
 Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
 failure kept as a spec case under corpus/regressions/, against engine E
@@ -38,6 +38,14 @@ Options:
   --timeout S    per-case timeout for engines in another process (default 10)
   --regressions DIR   the regression cases to run after the specs (default corpus/regressions)
   --no-regressions    run the spec cases only
+  --metamorphic  also judge the engine against itself: for each case, every metamorphic relation
+                 (oracles/metamorphic: mirror, translate, scale, split, formats, …) that applies to
+                 its program writes a follow-up program, the engine runs it, and its toolpath must
+                 be the relation's transformation of the case's. A violation is a finding
+                 metamorphic:<relation>; a follow-up the engine fails on is an engine failure; a
+                 relation that does not apply, or that the engine answers "not applicable" to, is
+                 skipped. Counts per relation go to OUT/metamorphic.json. Off by default: each
+                 relation that applies is one more engine run per case
 Exit: 0 every case passes (or is not applicable), 1 a case fails or the engine failed, 2 bad usage,
 unreadable input, OUT in use by another run, another campaign in OUT, or a result not written.
 )HELP";
@@ -63,6 +71,7 @@ static int commandCheck(const std::vector<std::string>& args) {
        {"--regressions", [&](const std::string& v) { options.regressionsDir = v; }},
        {"--no-regressions", [&] { options.regressionsDir.clear(); }},
        {"--resume", [&] { options.resume = true; }},
+       {"--metamorphic", [&] { options.metamorphic = true; }},
        {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }}},
       "check");
@@ -80,6 +89,10 @@ static int commandCheck(const std::vector<std::string>& args) {
             << " not applicable, " << s.engineFailure << " engine failure(s)";
   if (s.skipped) std::cout << ", " << s.skipped << " already done";
   std::cout << "; results in " << options.outDir << "/results.jsonl\n";
+  if (options.metamorphic) {
+    writeTallyFile(options.outDir, s.metamorphic, options.resume);
+    std::cout << tallyText(s.metamorphic) << "; counts per relation in " << options.outDir << "/metamorphic.json\n";
+  }
   writeRunReport(options.outDir, options.specsDir);
   return s.clean() ? kExitOk : kExitAlarm;
 }

@@ -9,6 +9,7 @@
 
 #include "harness/engine_diff.h"
 #include "harness/failure_plot.h"
+#include "harness/fuzz/fuzz_relations.h"
 #include "harness/fuzz/regression_case.h"
 #include "harness/judging.h"
 #include "harness/reproduce.h"
@@ -35,7 +36,16 @@ std::string reproduceCommand(const std::string& engine, const std::string& vs, s
   std::string command = fuzzReproduceCommand(engine, vs, caseSeed);
   if (options.formats != kDefaultCycleFormats) command += " --formats " + cycleFormatsText(options.formats);
   if (options.cycles != kDefaultFuzzCycles) command += " --cycles " + fuzzCyclesText(options.cycles);
+  if (options.metamorphic) command += " --metamorphic";
   return command;
+}
+
+// A result judged as the run judges it: by the oracles (and `vs`), and with --metamorphic by the
+// relations too, counted in `tally` when it is given.
+FuzzVerdict judged(EngineResult r, Engine& engine, Engine* vs, const SpecCase& c, const FuzzOptions& options,
+                   MetamorphicTally* tally) {
+  if (!options.metamorphic) return judgeFuzzResult(std::move(r), engine, vs, c, options.tolerance);
+  return judgeFuzzResultWithRelations(std::move(r), engine, vs, c, options.tolerance, tally);
 }
 
 }  // namespace
@@ -142,7 +152,8 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
     auto candidates = current.shrinks();
     while (auto candidate = candidates.next()) {
       if (f.shrinkRuns++ >= options.shrinkBudget) break;
-      const FuzzVerdict v = judgeFuzzCase(engine, vs, fuzzSpecCase(candidate->value(), caseSeedTag(caseSeed)), options.tolerance);
+      const SpecCase c = fuzzSpecCase(candidate->value(), caseSeedTag(caseSeed));
+      const FuzzVerdict v = judged(engine.run(c), engine, vs, c, options, nullptr);
       if (v.verdict == first.verdict && v.kind == first.kind) {
         current = *candidate;
         f.detail = v.detail;
@@ -195,7 +206,7 @@ class FuzzCampaign {
 
  private:
   void record(std::uint64_t caseSeed, const SpecCase& c, EngineResult planned) {
-    const FuzzVerdict v = judgeFuzzResult(std::move(planned), engine_, vs_, c, options_.tolerance);
+    const FuzzVerdict v = judged(std::move(planned), engine_, vs_, c, options_, &summary_.metamorphic);
     CaseResult r{engine_.name(), "fuzz-" + caseSeedTag(caseSeed), "", c.rules, v.verdict, v.detail, v.findings, v.seconds,
                  caseSeed, "", vs_ ? vs_->name() : "", std::nullopt, ""};
     ++summary_.run;
@@ -238,7 +249,7 @@ class FuzzCampaign {
   void drawShrunk(const FuzzFailure& f, CaseResult& r) {
     const SpecCase shrunk = fuzzSpecCase(f.shrunk, caseSeedTag(f.caseSeed));
     const EngineResult mine = engine_.run(shrunk);
-    const FuzzVerdict v = judgeFuzzResult(mine, engine_, nullptr, shrunk, options_.tolerance);
+    const FuzzVerdict v = judged(mine, engine_, nullptr, shrunk, options_, nullptr);
     std::optional<PlotComparison> theirs;
     if (vs_) {
       const EngineResult other = vs_->run(shrunk);
@@ -248,7 +259,9 @@ class FuzzCampaign {
       }
     }
     r.findings = v.findings;
-    if (const auto plot = failurePlot(shrunk, mine, engine_.name(), v.findings, options_.tolerance, theirs)) {
+    if (v.violation) {
+      if (const auto plot = metamorphicPlot(*v.violation, engine_.name(), options_.tolerance)) r.plot = plotToJson(*plot);
+    } else if (const auto plot = failurePlot(shrunk, mine, engine_.name(), v.findings, options_.tolerance, theirs)) {
       r.plot = plotToJson(*plot);
     }
   }

@@ -15,6 +15,7 @@
 
 #include "harness/engines/engine.h"
 #include "harness/fuzz/case_generator.h"
+#include "harness/metamorphic_run.h"
 #include "harness/results_file.h"
 
 namespace cyclecert {
@@ -32,6 +33,7 @@ struct FuzzOptions {
   double tolerance = 1e-3;        // mm, for the oracles and the comparison with --vs
   CycleFormats formats = kDefaultCycleFormats;  // the cycle formats drawn (--formats)
   FuzzCycles cycles = kDefaultFuzzCycles;       // the cycles drawn (--cycles)
+  bool metamorphic = false;  // --metamorphic: the relations too (harness/fuzz/fuzz_relations.h)
 };
 
 inline constexpr long kDefaultFuzzCases = 2000;
@@ -50,6 +52,7 @@ struct FuzzSummary {
   long run = 0, pass = 0, fail = 0, notApplicable = 0, engineFailure = 0, skipped = 0;
   double seconds = 0;
   std::vector<FuzzFailure> failures;  // one per failing case, shrunk
+  MetamorphicTally metamorphic;       // with --metamorphic: the relations' counts (not the shrinker's runs)
   bool clean() const { return fail == 0 && engineFailure == 0; }
 };
 
@@ -69,6 +72,7 @@ struct FuzzVerdict {
   std::string verdict, kind, detail;
   std::vector<Finding> findings;
   double seconds = 0;
+  std::optional<MetamorphicViolation> violation;  // a metamorphic kind's: both paths, for the plot
 };
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance);
 // The same for a result the engine already gave (a batch's; moved in, its toolpath is not copied).
