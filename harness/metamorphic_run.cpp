@@ -1,5 +1,6 @@
 #include "harness/metamorphic_run.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -67,7 +68,8 @@ constexpr const char* kCrossDialectSourceProfile = "fanuc-0i-f";
 // - a follow-up under another profile, from a source not under fanuc-0i-f;
 // - a source alarming PS0003 (a word out of its range): metric-inch, param-default and the one-block
 //   formats rewrite that word (÷ 25.4, or into a parameter), and the alarm goes with it;
-// - transpose on a source alarming PS0322 (G71.LIMIT.HEIGHT has no G72 counterpart: README).
+// - transpose and hnc-one-block on a source alarming PS0322 (README: G71.LIMIT.HEIGHT has no G72
+//   counterpart, and seed 003 states none for the Huazhong G71).
 std::optional<std::string> outsideTheRelation(const Relation& r, const FollowUp& f, const SpecCase& source,
                                               const Toolpath& sourcePath) {
   if (!f.profile.empty() && f.profile != source.profile && source.profile != kCrossDialectSourceProfile) {
@@ -75,7 +77,9 @@ std::optional<std::string> outsideTheRelation(const Relation& r, const FollowUp&
   }
   const std::string code = sourcePath.alarm ? sourcePath.alarm->code : "";
   if (code == alarm::kOutOfRange) return std::string("the source alarms on a word's range, and the relation rewrites words");
-  if (code == alarm::kOverStartPoint && r.id == "transpose") return std::string("PS0322 has no G72 counterpart");
+  if (code == alarm::kOverStartPoint && (r.id == "transpose" || r.id == "hnc-one-block")) {
+    return std::string("PS0322 has no counterpart in the follow-up's cycle");
+  }
   return std::nullopt;
 }
 
@@ -120,6 +124,21 @@ std::vector<PlannedFollowUp> followUpsOf(const SpecCase& source, const Toolpath&
   return out;
 }
 
+// The probe: three feed lines from the origin, so that an affine map shows in where they end.
+constexpr Point kProbeU{1, 0}, kProbeV{0, 1}, kProbeCheck{0.37, 0.61};
+
+Toolpath probePath() {
+  Toolpath t;
+  for (Point p : {kProbeU, kProbeV, kProbeCheck}) {
+    Move m;
+    m.kind = MoveKind::Feed;
+    m.to = p;
+    m.feed = 1;
+    t.moves.push_back(m);
+  }
+  return t;
+}
+
 Finding violationFinding(const MetamorphicViolation& v) {
   Finding f;
   f.oracle = metamorphicKind(v.relation);
@@ -132,6 +151,29 @@ Finding violationFinding(const MetamorphicViolation& v) {
 }
 
 }  // namespace
+
+std::optional<BackMap> backMapOf(const FollowUp& f) {
+  Toolpath mapped;
+  try {
+    mapped = f.expectedPath(probePath());
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (mapped.moves.size() != 3) return std::nullopt;
+  const Point o = mapped.start, u = mapped.moves[0].to - o, v = mapped.moves[1].to - o;
+  const auto forward = [=](Point p) { return o + p.z * u + p.x * v; };
+  if (!nearlyEqual(forward(kProbeCheck), mapped.moves[2].to, 1e-9)) return std::nullopt;
+  const double det = u.z * v.x - v.z * u.x;
+  if (std::abs(det) < 1e-12) return std::nullopt;
+  BackMap back;
+  back.mirrors = det < 0;
+  back.identity = nearlyEqual(o, Point{}, 1e-12) && nearlyEqual(u, kProbeU, 1e-12) && nearlyEqual(v, kProbeV, 1e-12);
+  back.map = [=](Point q) {
+    const Point d = q - o;  // solve d = a·u + b·v
+    return Point{(d.z * v.x - v.z * d.x) / det, (u.z * d.x - d.z * u.x) / det};
+  };
+  return back;
+}
 
 std::string metamorphicKind(const std::string& relationId) { return kKindPrefix + relationId; }
 
@@ -233,8 +275,8 @@ RelationsVerdict checkRelations(Engine& engine, const SpecCase& source, const To
       continue;
     }
     ++count.violated;
-    MetamorphicViolation violation{r.id, r.rules, followUps[i].c, sourcePath, f.expectedPath(sourcePath), actual,
-                                   *divergence, std::nullopt};
+    MetamorphicViolation violation{r.id,    r.rules,      followUps[i].c, sourcePath, f.expectedPath(sourcePath), actual,
+                                   *divergence, std::nullopt, source,       backMapOf(f)};
     if (const auto d = firstMoveDivergence(violation.expected.moves, actual.path.moves, tolerance)) violation.move = d->move;
     v.findings.push_back(violationFinding(violation));
     v.violations.push_back(std::move(violation));
@@ -309,10 +351,19 @@ std::string metamorphicReproduceCommand(const std::string& engine, const std::st
 }
 
 std::optional<PlotInput> metamorphicPlot(const MetamorphicViolation& v, const std::string& engineName, double tolerance) {
-  const std::string label = engineName + ": follow-up (" + v.relation + ")";
-  const PlotComparison expected{"expected: " + v.relation + " of " + engineName + "'s source path", v.expected, v.move};
-  auto plot = failurePlot(v.followUp, v.actual, label, {}, tolerance, expected);
-  if (plot) plot->title = engineName + " \u2014 " + v.followUp.id + " (" + metamorphicKind(v.relation) + ")";
+  std::optional<PlotInput> plot;
+  if (v.back) {
+    Toolpath mappedBack = v.back->identity ? v.actual.path : mapToolpath(v.actual.path, v.back->map, v.back->mirrors);
+    mappedBack.alarm = v.actual.path.alarm;
+    std::optional<std::size_t> move;
+    if (const auto d = firstMoveDivergence(v.source.moves, mappedBack.moves, tolerance)) move = d->move;
+    const std::string label = "follow-up (" + v.relation + ")" + (v.back->identity ? "" : ", mapped back");
+    plot = failurePlot(v.sourceCase, EngineResult::planned(v.source), "source", {}, tolerance, PlotComparison{label, std::move(mappedBack), move});
+  } else {
+    const PlotComparison expected{"expected (" + v.relation + " of the source's path)", v.expected, v.move};
+    plot = failurePlot(v.followUp, v.actual, "follow-up (" + v.relation + ")", {}, tolerance, expected);
+  }
+  if (plot) plot->title = engineName + " \u2014 " + v.sourceCase.id + " (" + metamorphicKind(v.relation) + ")";
   return plot;
 }
 

@@ -13,6 +13,7 @@
 //   violated       it is not: a finding `metamorphic:<relation>` with the relation's rule IDs;
 //   engine failure the engine crashed, hung or garbled its reply on the follow-up — reported as
 //                  an engine failure, never as a violation.
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@
 #include "harness/results_file.h"
 #include "harness/spec_case.h"
 #include "oracles/judgement.h"
+#include "oracles/metamorphic/relations.h"
 #include "reports/svg/toolpath_svg.h"
 
 namespace cyclecert {
@@ -57,6 +59,18 @@ std::string tallyText(const MetamorphicTally& tally);
 // OUT/metamorphic.json: the tally of the run (with `resume`, added to the tally already there).
 void writeTallyFile(const std::string& outDir, const MetamorphicTally& tally, bool resume);
 
+// The way back from a follow-up's coordinates to the source's, when the relation's expected path is
+// an affine map of points (mirror, translate, scale, transpose; the identity for the relations that
+// rewrite words only): found by mapping probe points through the relation's expectedPath.
+struct BackMap {
+  std::function<Point(Point)> map;
+  bool mirrors = false;   // the map reverses orientation: arcs change direction
+  bool identity = false;  // the follow-up's path should be the source's as it is
+};
+
+// The relation's way back, or nothing when its expected path is no affine map of points.
+std::optional<BackMap> backMapOf(const FollowUp& followUp);
+
 // One relation the engine's follow-up violated: both programs, both paths, the first divergence.
 struct MetamorphicViolation {
   std::string relation;              // its id
@@ -67,6 +81,8 @@ struct MetamorphicViolation {
   EngineResult actual;               // the engine's result on the follow-up
   std::string divergence;            // the first divergence, for a person
   std::optional<std::size_t> move;   // the first move of `actual` that parts from `expected`, if any
+  SpecCase sourceCase;               // the source case, for drawing on its contours
+  std::optional<BackMap> back;       // nothing when the expected path is no map of points
 };
 
 struct RelationsVerdict {
@@ -107,9 +123,11 @@ std::optional<MetamorphicViolation> addRelationVerdicts(Engine& engine, const Sp
 std::string metamorphicReproduceCommand(const std::string& engine, const std::string& caseFile,
                                         const std::string& agreesWith);
 
-// The picture of a violation, in the follow-up's coordinates: the follow-up's contours, the
-// engine's follow-up path, and over it the path the relation expects (the source's path mapped by
-// the relation), both labelled, the first divergence ringed.
+// The picture of a violation, in the source's coordinates when the relation maps points (`back`):
+// the source's contours, the engine's source path, and over it the follow-up's path mapped back
+// onto the source, both labelled, the first divergence ringed. Otherwise (hnc-one-block drops a
+// move) in the follow-up's: its contours, the engine's follow-up path and over it the path the
+// relation expects.
 std::optional<PlotInput> metamorphicPlot(const MetamorphicViolation& v, const std::string& engineName, double tolerance);
 
 }  // namespace cyclecert

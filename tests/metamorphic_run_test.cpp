@@ -20,6 +20,7 @@
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/metamorphic_run.h"
 #include "oracles/metamorphic/relations.h"
+#include "reference/gcode/parser.h"
 
 namespace cyclecert {
 namespace {
@@ -82,10 +83,17 @@ TEST(MetamorphicRun, AFaultOnlyARelationReachesFailsTheCaseWithTheRelationsFindi
   EXPECT_NE(r.reproduce.find("--metamorphic"), std::string::npos) << r.reproduce;
   EXPECT_EQ(tally.byRelation.at("translate-z").violated, 1);
   EXPECT_EQ(tally.byRelation.at("mirror-z").held, 1);  // z ≤ 0 after the mirror: no fault there
-  // The plot shows the follow-up's path with the expected one over it, both labelled.
+  // The plot: the source's path on the source's contours, and the follow-up's mapped back over it
+  // (z − 12.5), both labelled; they part at the feed, not in geometry.
   ASSERT_TRUE(r.plot);
-  EXPECT_NE(r.plot->dump().find("expected: "), std::string::npos);
-  EXPECT_NE(r.plot->dump().find("follow-up"), std::string::npos);
+  EXPECT_EQ((*r.plot)["path_label"], "source");
+  EXPECT_EQ((*r.plot)["overlay_label"], "follow-up (translate-z), mapped back");
+  ASSERT_EQ((*r.plot)["overlay"]["moves"].size(), (*r.plot)["path"]["moves"].size());
+  for (const char* axis : {"x", "z"}) {
+    EXPECT_NEAR((*r.plot)["overlay"]["moves"][0]["to"][axis].get<double>(),
+                (*r.plot)["path"]["moves"][0]["to"][axis].get<double>(), 1e-9);
+  }
+  EXPECT_NE(r.plot->dump().find("first divergence: move"), std::string::npos);
 }
 
 TEST(MetamorphicRun, TheViolationCarriesBothProgramsAndBothPaths) {
@@ -105,6 +113,31 @@ TEST(MetamorphicRun, TheViolationCarriesBothProgramsAndBothPaths) {
   ASSERT_TRUE(it->actual.path.moves[*it->move].feed);
   EXPECT_NEAR(*it->actual.path.moves[*it->move].feed, 2 * *it->expected.moves[*it->move].feed, 1e-12);
   EXPECT_FALSE(relationsClean(v));
+}
+
+// The report draws a violation on the source: the follow-up's path mapped back by the inverse of
+// the relation's point map, found by probing its expected path.
+TEST(MetamorphicRun, TheWayBackInvertsEachRelationsMapOfPoints) {
+  const SpecCase c = specCase(kStepped);
+  const auto reference = makeEngine("reference");
+  const Toolpath source = reference->run(c).path;
+  const Program program = parseProgram(c.program, c.file);
+  for (const Relation& r : allRelations()) {
+    std::string whyNot;
+    const auto f = r.transform(program, c.params, whyNot);
+    if (!f) continue;
+    const auto back = backMapOf(*f);
+    ASSERT_TRUE(back) << r.id;
+    const Toolpath expected = f->expectedPath(source);
+    ASSERT_EQ(expected.moves.size(), source.moves.size()) << r.id;
+    for (std::size_t i = 0; i < source.moves.size(); ++i) {
+      EXPECT_TRUE(nearlyEqual(back->map(expected.moves[i].to), source.moves[i].to, 1e-9)) << r.id << " move " << i;
+    }
+    const bool mirrors = r.id == "mirror-z" || r.id == "mirror-x" || r.id == "transpose";
+    EXPECT_EQ(back->mirrors, mirrors) << r.id;
+    const bool moves = mirrors || r.id == "translate-z" || r.id == "translate-x" || r.id == "scale-k";
+    EXPECT_EQ(back->identity, !moves) << r.id;
+  }
 }
 
 TEST(MetamorphicRun, AFollowUpTheEngineFailsOnIsAnEngineFailureNotAViolation) {
@@ -236,6 +269,43 @@ TEST_F(CheckRun, MetamorphicOnTheCommandLine) {
   std::ifstream counts(dir_ / "out/metamorphic.json");
   const nlohmann::json tally = nlohmann::json::parse(counts);
   EXPECT_GE(tally["relations"]["translate-z"]["violated"], 1);
+}
+
+}  // namespace
+}  // namespace cyclecert
+
+namespace cyclecert {
+namespace {
+
+std::string output(const std::string& command, int& exitCode) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  const int status = ::pclose(pipe);
+  exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return out;
+}
+
+// `diff --metamorphic`: each engine against itself. The mutant that reads a Haas program with the
+// wrong controller's reader agrees with the reference on the 0i-F case, and fails haas-one-block.
+TEST(MetamorphicDiff, ShowsEachEnginesRelationsAndFailsOnAViolation) {
+  const std::string input = source("specs/cases/fanuc-0i-f/g71/css-g96-in-shape.json");
+  int code = 0;
+  const std::string plain = output(std::string(CYCLECERT_CLI) + " diff --engine mutant:pocket-order --vs reference " + input, code);
+  EXPECT_EQ(code, 0) << plain;
+  const std::string text =
+      output(std::string(CYCLECERT_CLI) + " diff --engine mutant:pocket-order --vs reference " + input + " --metamorphic", code);
+  EXPECT_EQ(code, 1) << text;
+  EXPECT_NE(text.find("metamorphic:haas-one-block (HAAS.G71.FMT"), std::string::npos) << text;
+  EXPECT_NE(text.find("metamorphic relations on reference: "), std::string::npos) << text;
+  const std::string json = output(
+      std::string(CYCLECERT_CLI) + " diff --engine mutant:pocket-order --vs reference " + input + " --metamorphic --json", code);
+  const nlohmann::json j = nlohmann::json::parse(json);
+  EXPECT_EQ(j["metamorphic"]["mutant:pocket-order"]["violations"][0]["relation"], "haas-one-block");
+  EXPECT_EQ(j["metamorphic"]["mutant:pocket-order"]["violations"][0]["follow_up"]["profile"], "haas");
+  EXPECT_TRUE(j["metamorphic"]["reference"]["violations"].empty());
+  EXPECT_GT(j["metamorphic"]["reference"]["counts"]["held"], 10);
 }
 
 }  // namespace
