@@ -145,7 +145,8 @@ CaseResult checkCase(Engine& engine, const SpecCase& c, MetamorphicTally* relati
                             : reproduce;
   if (violation && out.findings.front().oracle == metamorphicKind(violation->relation)) {
     if (const auto plot = metamorphicPlot(*violation, engine.name(), c.tolerance)) out.plot = plotToJson(*plot);
-  } else if (const auto plot = failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
+  } else if (const auto plot =
+                 failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
     out.plot = plotToJson(*plot);
   }
   return out;

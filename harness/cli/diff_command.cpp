@@ -334,7 +334,8 @@ static int commandDiff(const std::vector<std::string>& args) {
   // --metamorphic: each engine against itself, on the case it planned (or alarmed on).
   std::vector<std::pair<std::string, RelationsVerdict>> relations;
   if (a.metamorphic) {
-    for (const auto& [engine, result, name] : {std::tuple{engineA.get(), &resultA, &aName}, std::tuple{engineB.get(), &resultB, &bName}}) {
+    for (const auto& [engine, result, name] :
+         {std::tuple{engineA.get(), &resultA, &aName}, std::tuple{engineB.get(), &resultB, &bName}}) {
       if (comparable(*result)) relations.emplace_back(*name, checkRelations(*engine, c, result->path, tolerance));
     }
   }
