@@ -61,26 +61,20 @@ std::string oneLine(const std::string& programText) {
 // (oracles/metamorphic/README.md: GSK's direct return, DTP = 1, and 0i-C's pocket order differ).
 constexpr const char* kCrossDialectSourceProfile = "fanuc-0i-f";
 
-// Why a relation the program passes is still outside what it can judge, from what the harness
-// knows and the relation does not (the source's profile and the engine's answer); nothing when it
-// applies. Each is a limit the relations' README states, or one these runs found (the relations
+// Whether a relation the program passes is still outside what it can judge, from what the harness
+// knows and the relation does not (the source's profile and the engine's answer). Each is a limit the relations' README states, or one these runs found (the relations
 // rewrite words, so a source alarming on a word's text is no source for them):
 // - a follow-up under another profile, from a source not under fanuc-0i-f;
 // - a source alarming PS0003 (a word out of its range): metric-inch, param-default and the one-block
 //   formats rewrite that word (÷ 25.4, or into a parameter), and the alarm goes with it;
 // - transpose and hnc-one-block on a source alarming PS0322 (README: G71.LIMIT.HEIGHT has no G72
 //   counterpart, and seed 003 states none for the Huazhong G71).
-std::optional<std::string> outsideTheRelation(const Relation& r, const FollowUp& f, const SpecCase& source,
-                                              const Toolpath& sourcePath) {
-  if (!f.profile.empty() && f.profile != source.profile && source.profile != kCrossDialectSourceProfile) {
-    return "the follow-up runs under " + f.profile + ", compared with a " + kCrossDialectSourceProfile + " reading";
-  }
+bool outsideTheRelation(const Relation& r, const FollowUp& f, const SpecCase& source, const Toolpath& sourcePath) {
+  const bool crossDialect = !f.profile.empty() && f.profile != source.profile;
+  if (crossDialect && source.profile != kCrossDialectSourceProfile) return true;
   const std::string code = sourcePath.alarm ? sourcePath.alarm->code : "";
-  if (code == alarm::kOutOfRange) return std::string("the source alarms on a word's range, and the relation rewrites words");
-  if (code == alarm::kOverStartPoint && (r.id == "transpose" || r.id == "hnc-one-block")) {
-    return std::string("PS0322 has no counterpart in the follow-up's cycle");
-  }
-  return std::nullopt;
+  if (code == alarm::kOutOfRange) return true;
+  return code == alarm::kOverStartPoint && (r.id == "transpose" || r.id == "hnc-one-block");
 }
 
 // A relation's transformation of the source, or nothing (counted as not applying).
@@ -275,9 +269,19 @@ RelationsVerdict checkRelations(Engine& engine, const SpecCase& source, const To
       continue;
     }
     ++count.violated;
-    MetamorphicViolation violation{r.id,    r.rules,      followUps[i].c, sourcePath, f.expectedPath(sourcePath), actual,
-                                   *divergence, std::nullopt, source,       backMapOf(f)};
-    if (const auto d = firstMoveDivergence(violation.expected.moves, actual.path.moves, tolerance)) violation.move = d->move;
+    MetamorphicViolation violation;
+    violation.relation = r.id;
+    violation.rules = r.rules;
+    violation.followUp = followUps[i].c;
+    violation.source = sourcePath;
+    violation.expected = f.expectedPath(sourcePath);
+    violation.actual = std::move(actual);
+    violation.divergence = *divergence;
+    if (const auto d = firstMoveDivergence(violation.expected.moves, violation.actual.path.moves, tolerance)) {
+      violation.move = d->move;
+    }
+    violation.sourceCase = source;
+    violation.back = backMapOf(f);
     v.findings.push_back(violationFinding(violation));
     v.violations.push_back(std::move(violation));
   }
