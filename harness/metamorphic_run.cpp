@@ -62,16 +62,18 @@ std::string oneLine(const std::string& programText) {
 constexpr const char* kCrossDialectSourceProfile = "fanuc-0i-f";
 
 // Whether a relation the program passes is still outside what it can judge, from what the harness
-// knows and the relation does not (the source's profile and the engine's answer). Each is a limit the relations' README states, or one these runs found (the relations
-// rewrite words, so a source alarming on a word's text is no source for them):
-// - a follow-up under another profile, from a source not under fanuc-0i-f;
+// knows and the relation does not (the source's profile and the engine's answer). Each is a limit
+// the relations' README states, or one these runs found (the relations rewrite words, so a source
+// alarming on a word's text is no source for them):
+// - hnc-one-block and haas-one-block (whose follow-ups run under another profile) from a source
+//   not under fanuc-0i-f (relations added later that change the profile decide for themselves);
 // - a source alarming PS0003 (a word out of its range): metric-inch, param-default and the one-block
 //   formats rewrite that word (÷ 25.4, or into a parameter), and the alarm goes with it;
 // - transpose and hnc-one-block on a source alarming PS0322 (README: G71.LIMIT.HEIGHT has no G72
 //   counterpart, and seed 003 states none for the Huazhong G71).
 bool outsideTheRelation(const Relation& r, const FollowUp& f, const SpecCase& source, const Toolpath& sourcePath) {
-  const bool crossDialect = !f.profile.empty() && f.profile != source.profile;
-  if (crossDialect && source.profile != kCrossDialectSourceProfile) return true;
+  const bool crossDialect = r.id == "hnc-one-block" || r.id == "haas-one-block";
+  if (crossDialect && f.profile != source.profile && source.profile != kCrossDialectSourceProfile) return true;
   const std::string code = sourcePath.alarm ? sourcePath.alarm->code : "";
   if (code == alarm::kOutOfRange) return true;
   return code == alarm::kOverStartPoint && (r.id == "transpose" || r.id == "hnc-one-block");
