@@ -66,7 +66,7 @@ A file ending in .json is a spec case; anything else is a program.
 JSON: {"input", "profile", "tolerance", "engines": [{"name", "outcome", "moves", "alarm", "detail",
        "seconds"}, …], "comparable", "agree", "divergence": null | {"text", "move": N | null},
        "context": [{"move", "a", "b"}], "svg"}   (moves are numbered from 0); with --metamorphic
-      also "metamorphic": {ENGINE: {"counts", "violations": [{"relation", "rules", "divergence",
+       also "metamorphic": {ENGINE: {"counts", "violations": [{"relation", "rules", "divergence",
        "move", "follow_up": {"profile", "program"}}], "engine_failure"}}
 Exit: 0 the engines agree (and, with --metamorphic, neither violates a relation or fails on a
 follow-up), 1 they diverge — or either engine is not applicable or failed, so they cannot be
