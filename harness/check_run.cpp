@@ -93,7 +93,7 @@ std::optional<Finding> expectationFinding(const SpecCase& c, const EngineResult&
 
 }  // namespace
 
-CaseResult checkCase(Engine& engine, const SpecCase& c) {
+CaseResult checkCase(Engine& engine, const SpecCase& c, MetamorphicTally* relations) {
   CaseResult out;
   out.engine = engine.name();
   out.caseId = c.id;
@@ -136,12 +136,18 @@ CaseResult checkCase(Engine& engine, const SpecCase& c) {
       if (out.detail.empty()) out.detail = out.findings.front().oracle + ": " + out.findings.front().message;
     }
   }
+  std::optional<MetamorphicViolation> violation;
+  if (relations) violation = addRelationVerdicts(engine, c, r, out, *relations);
   if (out.verdict.empty()) {
     out.verdict = "pass";
     return out;
   }
-  out.reproduce = reproduce;
-  if (const auto plot = failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
+  out.reproduce = relations ? metamorphicReproduceCommand(engine.name(), c.file, c.agreesWith.value_or(""))
+                            : reproduce;
+  if (violation && out.findings.front().oracle == metamorphicKind(violation->relation)) {
+    if (const auto plot = metamorphicPlot(*violation, engine.name(), c.tolerance)) out.plot = plotToJson(*plot);
+  } else if (const auto plot =
+                 failurePlot(c, r, engine.name(), out.findings, c.tolerance, comparisonFor(c, r, agreement.theirs))) {
     out.plot = plotToJson(*plot);
   }
   return out;
@@ -155,6 +161,7 @@ struct CheckedCase {
   std::string id;
   std::optional<CaseResult> result;
   std::string line;  // resultLine(*result), without its newline
+  MetamorphicTally relations;  // --metamorphic: the case's follow-ups, counted when it is recorded
 };
 
 // The cases of the shard (every N-th case of the list, from the K-th) checked on the workers and
@@ -177,11 +184,12 @@ CheckSummary checkOnWorkers(const std::vector<Engine*>& engines, const CheckOpti
     if (item >= static_cast<long>(files.size())) return std::nullopt;
     Engine& engine = *engines[static_cast<std::size_t>(worker)];
     const SpecCase c = loadSpecCase(files[static_cast<std::size_t>(item)]);
-    if (done.count({engine.name(), c.id})) return CheckedCase{c.id, std::nullopt, ""};
-    CaseResult r = checkCase(engine, c);
+    if (done.count({engine.name(), c.id})) return CheckedCase{c.id, std::nullopt, "", {}};
+    MetamorphicTally relations;
+    CaseResult r = checkCase(engine, c, options.metamorphic ? &relations : nullptr);
     std::string line = resultLine(r);
     line.pop_back();
-    return CheckedCase{c.id, std::move(r), std::move(line)};
+    return CheckedCase{c.id, std::move(r), std::move(line), std::move(relations)};
   };
   const auto started = std::chrono::steady_clock::now();
   auto lastReport = started;
@@ -193,6 +201,7 @@ CheckSummary checkOnWorkers(const std::vector<Engine*>& engines, const CheckOpti
       return true;
     }
     CaseResult& r = *checked.result;
+    s.metamorphic.add(checked.relations);
     // The expectations are matched here, on the one thread that records (the matcher counts uses).
     const ExpectationStatus expected = matcher ? matcher->apply(r) : ExpectationStatus::None;
     if (matcher) {

@@ -9,12 +9,15 @@
 
 #include "harness/engines/engine.h"
 #include "harness/expectations.h"
+#include "harness/metamorphic_run.h"
 #include "harness/results_file.h"
 #include "harness/worker_engines.h"
 
 namespace cyclecert {
 
-CaseResult checkCase(Engine& engine, const SpecCase& c);
+// With `relations` (--metamorphic), every metamorphic relation's follow-up runs through the engine
+// too and is counted there (harness/metamorphic_run.h).
+CaseResult checkCase(Engine& engine, const SpecCase& c, MetamorphicTally* relations = nullptr);
 
 struct CheckOptions {
   std::string specsDir;  // holds cases/
@@ -24,6 +27,7 @@ struct CheckOptions {
   const Expectations* expectations = nullptr;  // --expectations: known failures do not fail the run
   int jobs = 1;               // workers (--jobs), each with its own engine; the results do not depend on it
   int shard = 1, shards = 1;  // run shard K of N (1-based): case i of the list (specs, then regressions) when i mod N = K − 1
+  bool metamorphic = false;  // --metamorphic: every case's follow-ups too
 };
 
 struct CheckSummary {
@@ -31,6 +35,7 @@ struct CheckSummary {
   // With expectations: fail and engineFailure count only the failures no entry covers.
   int expectedFailures = 0, unexpectedPasses = 0;
   std::vector<Expectation> unusedExpectations;  // entries no result of a whole run matched (not with --resume)
+  MetamorphicTally metamorphic;  // with --metamorphic
   bool clean() const { return fail == 0 && engineFailure == 0; }
   bool strictClean() const { return clean() && unexpectedPasses == 0 && unusedExpectations.empty(); }
 };

@@ -17,7 +17,7 @@ namespace cyclecert::cli {
 namespace {
 
 const char* kCheckHelp = R"HELP(Usage: cyclecert check --engine E [--specs DIR] [--out DIR] [--resume [--mix-campaigns]]
-                       [--timeout S] [--jobs N] [--shard K/N | --shard auto]
+                       [--timeout S] [--jobs N] [--shard K/N | --shard auto] [--metamorphic]
                        [--expectations FILE [--strict]]
 
 Runs every spec case under DIR/cases (default: the repository's specs/), then every shrunk fuzz
@@ -55,6 +55,14 @@ Options:
                  says is an expected failure, counted apart, and does not fail the run; an entry
                  whose case passes now, or that matches nothing, is reported as unexpectedly passing
   --strict       with --expectations: exit 1 on an unexpectedly passing entry too
+  --metamorphic  also judge the engine against itself: for each case, every metamorphic relation
+                 (oracles/metamorphic: mirror, translate, scale, split, formats, …) that applies to
+                 its program writes a follow-up program, the engine runs it, and its toolpath must
+                 be the relation's transformation of the case's. A violation is a finding
+                 metamorphic:<relation>; a follow-up the engine fails on is an engine failure; a
+                 relation that does not apply, or that the engine answers "not applicable" to, is
+                 skipped. Counts per relation go to OUT/metamorphic.json. Off by default: each
+                 relation that applies is one more engine run per case
 Exit: 0 every case passes (or is not applicable, or fails as expected), 1 a case fails or the engine
 failed (not as expected), or with --strict an entry passes unexpectedly, 2 bad usage, unreadable
 input or expectation file, OUT in use by another run, another campaign in OUT, or a result not
@@ -84,6 +92,7 @@ static int commandCheck(const std::vector<std::string>& args) {
        {"--regressions", [&](const std::string& v) { options.regressionsDir = v; }},
        {"--no-regressions", [&] { options.regressionsDir.clear(); }},
        {"--resume", [&] { options.resume = true; }},
+       {"--metamorphic", [&] { options.metamorphic = true; }},
        {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
        {"--expectations", [&](const std::string& v) { expectations = readExpectations(v); }},
        {"--strict", [&] { strict = true; }},
@@ -110,6 +119,10 @@ static int commandCheck(const std::vector<std::string>& args) {
   if (s.skipped) std::cout << ", " << s.skipped << " already done";
   std::cout << "; results in " << options.outDir << "/results.jsonl\n";
   for (const Expectation& x : s.unusedExpectations) std::cerr << unusedExpectationText(x) << "\n";
+  if (options.metamorphic) {
+    writeTallyFile(options.outDir, s.metamorphic, options.resume);
+    std::cout << tallyText(s.metamorphic) << "; counts per relation in " << options.outDir << "/metamorphic.json\n";
+  }
   writeRunReport(options.outDir, options.specsDir);
   return (strict ? s.strictClean() : s.clean()) ? kExitOk : kExitAlarm;
 }

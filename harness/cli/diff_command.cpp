@@ -10,6 +10,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,7 @@
 #include "harness/engine_diff.h"
 #include "harness/engines/engine.h"
 #include "harness/failure_plot.h"
+#include "harness/metamorphic_run.h"
 #include "harness/reference_plan.h"
 #include "harness/spec_case.h"
 #include "harness/toolpath_compare.h"
@@ -52,15 +54,23 @@ Options:
   --svg OUT            write an SVG of both toolpaths over the contours (A rapids dashed red, feeds
                        blue; B rapids dashed purple, feeds green), the first divergence ringed
   --timeout S          per-run timeout for engines in another process (default 10)
+  --metamorphic        also run every metamorphic relation that applies (oracles/metamorphic) on
+                       each engine: its follow-up programs through the same engine, whose toolpaths
+                       must be the relation's transformations of its own; shows per engine the
+                       relations run, held, violated (with the first divergence and the follow-up
+                       program) and skipped
   --json               the result as JSON on standard output instead of the text
   --help               this help
 
 A file ending in .json is a spec case; anything else is a program.
 JSON: {"input", "profile", "tolerance", "engines": [{"name", "outcome", "moves", "alarm", "detail",
        "seconds"}, …], "comparable", "agree", "divergence": null | {"text", "move": N | null},
-       "context": [{"move", "a", "b"}], "svg"}   (moves are numbered from 0)
-Exit: 0 the engines agree, 1 they diverge — or either engine is not applicable or failed, so
-they cannot be compared —, 2 bad usage or unreadable input.
+       "context": [{"move", "a", "b"}], "svg"}   (moves are numbered from 0); with --metamorphic
+       also "metamorphic": {ENGINE: {"counts", "violations": [{"relation", "rules", "divergence",
+       "move", "follow_up": {"profile", "program"}}], "engine_failure"}}
+Exit: 0 the engines agree (and, with --metamorphic, neither violates a relation or fails on a
+follow-up), 1 they diverge — or either engine is not applicable or failed, so they cannot be
+compared, or a relation is violated —, 2 bad usage or unreadable input.
 )HELP";
 
 struct DiffArgs {
@@ -70,6 +80,7 @@ struct DiffArgs {
   std::size_t context = 3;
   EngineOptions engineOptions;
   bool json = false;
+  bool metamorphic = false;
 };
 
 DiffArgs parseDiffArgs(const std::vector<std::string>& args) {
@@ -89,7 +100,8 @@ DiffArgs parseDiffArgs(const std::vector<std::string>& args) {
         }},
        {"--svg", [&](const std::string& v) { d.svgOut = v; }},
        {"--timeout", [&](const std::string& v) { d.engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }},
-       {"--json", [&] { d.json = true; }}},
+       {"--json", [&] { d.json = true; }},
+       {"--metamorphic", [&] { d.metamorphic = true; }}},
       "diff");
   if (positional.size() > 1) throw UsageError("more than one input given ('" + positional[0] + "', '" + positional[1] + "')");
   if (positional.empty()) throw UsageError("give a PROGRAM.nc or CASE.json (see `cyclecert diff --help`)");
@@ -319,6 +331,16 @@ static int commandDiff(const std::vector<std::string>& args) {
   const bool agree = canCompare && !divergence;
   std::vector<ContextRow> rows;
   if (divergence && divergence->move) rows = contextRows(resultA.path, resultB.path, *divergence->move, a.context);
+  // --metamorphic: each engine against itself, on the case it planned (or alarmed on).
+  std::vector<std::pair<std::string, RelationsVerdict>> relations;
+  if (a.metamorphic) {
+    for (const auto& [engine, result, name] :
+         {std::tuple{engineA.get(), &resultA, &aName}, std::tuple{engineB.get(), &resultB, &bName}}) {
+      if (comparable(*result)) relations.emplace_back(*name, checkRelations(*engine, c, result->path, tolerance));
+    }
+  }
+  const bool relationsHold =
+      std::all_of(relations.begin(), relations.end(), [](const auto& r) { return relationsClean(r.second); });
 
   if (!a.svgOut.empty()) {
     // The file's name, not its path, so that the title stays on the canvas.
@@ -344,6 +366,10 @@ static int commandDiff(const std::vector<std::string>& args) {
       const auto text = [](const std::optional<std::string>& t) { return t ? ordered_json(*t) : ordered_json(nullptr); };
       out["context"].push_back({{"move", r.move}, {"a", text(r.a)}, {"b", text(r.b)}});
     }
+    if (a.metamorphic) {
+      out["metamorphic"] = ordered_json::object();
+      for (const auto& [name, verdict] : relations) out["metamorphic"][name] = relationsJson(verdict);
+    }
     // Replies of external engines may hold anything; the output must still be JSON.
     std::cout << out.dump(2, ' ', false, ordered_json::error_handler_t::replace) << "\n";
   } else {
@@ -359,9 +385,10 @@ static int commandDiff(const std::vector<std::string>& args) {
       std::cout << "first divergence: " << divergence->text << "\n";
       if (!rows.empty()) printContext(std::cout, rows, *divergence->move, aName, bName);
     }
+    for (const auto& [name, verdict] : relations) std::cout << relationsText(name, verdict);
     if (!a.svgOut.empty() && a.svgOut != "-") std::cout << "svg written to " << a.svgOut << "\n";
   }
-  return agree ? kExitOk : kExitAlarm;
+  return agree && relationsHold ? kExitOk : kExitAlarm;
 }
 
 extern const Command kDiffCommand{"diff", kDiffHelp, commandDiff};

@@ -24,7 +24,7 @@ namespace {
 
 const char* kFuzzHelp = R"HELP(Usage: cyclecert fuzz --engine E [--vs B] [--cases N | --time SECONDS] [--seed S] [--jobs N]
                       [--shard K/N | --shard auto] [--out DIR] [--regressions DIR | --no-save] [--resume [--mix-campaigns]]
-                      [--timeout S] [--formats LIST] [--cycles LIST] [--expectations FILE [--strict]]
+                      [--timeout S] [--formats LIST] [--cycles LIST] [--metamorphic] [--expectations FILE [--strict]]
 
 Generates G71/G72 cases (lines, chamfers and arcs; monotone and with pockets; all four quadrants;
 degenerate segments; Δd, e, Δu, Δw valid, on their boundary and out of range; RF1, DTP, R16, NSP,
@@ -63,7 +63,17 @@ Options:
   --regressions DIR   where shrunk failures are written (default corpus/regressions)
   --no-save           do not write shrunk failures
   --shrink-budget R   engine runs spent shrinking one failure at most (default 400)
-  --tolerance T       mm, for the oracles and --vs (default 0.001)
+  --tolerance T       mm, for the oracles, --vs and --metamorphic (default 0.001)
+  --metamorphic       also judge the engine against itself, no reference needed: on each case the
+                      oracles (and --vs) pass, every metamorphic relation that applies (mirror,
+                      translate, scale, split, absolute/incremental, R/IK, planes, units, formats,
+                      transpose, …: oracles/metamorphic) writes a follow-up program, E runs it, and
+                      its toolpath must be the relation's transformation of the case's. A violation
+                      fails the case as "metamorphic:<relation>" (shrunk like any failure); a
+                      follow-up E fails on is an engine failure; relations that do not apply, or
+                      that E answers "not applicable" to, are skipped. Counts per relation go to
+                      OUT/metamorphic.json. Off by default: each relation that applies is one more
+                      engine run per case
   --max-failures N    stop once N cases have failed
   --resume            continue the run in OUT (--cases may grow); refused when OUT holds another
                       campaign (another --engine, --vs, engine version, --seed, --formats, --cycles, --shard or
@@ -172,6 +182,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
        {"--max-failures",
         [&](const std::string& v) { options.maxFailures = static_cast<long>(numberArg("--max-failures", v, 1, 1e12)); }},
        {"--resume", [&] { options.resume = true; }},
+       {"--metamorphic", [&] { options.metamorphic = true; }},
        {kMixCampaignsFlag, [&] { mixCampaigns = true; }},
        {"--timeout", [&](const std::string& v) { engineOptions.timeoutSeconds = numberArg("--timeout", v, 0.01, 86400); }},
        {"--formats",
@@ -221,6 +232,10 @@ static int commandFuzz(const std::vector<std::string>& args) {
   for (const FuzzFailure& f : s.failures) {
     std::cout << "  " << f.kind << ": seed " << f.caseSeed << (f.regressionFile.empty() ? "" : ", kept as " + f.regressionFile)
               << "\n";
+  }
+  if (options.metamorphic) {
+    writeTallyFile(options.outDir, s.metamorphic, options.resume);
+    std::cout << tallyText(s.metamorphic) << "; counts per relation in " << options.outDir << "/metamorphic.json\n";
   }
   writeRunReport(options.outDir, defaultSpecsDir());
   return s.clean() && !(strict && s.unexpectedPasses) ? kExitOk : kExitAlarm;

@@ -10,6 +10,7 @@
 
 #include "harness/engine_diff.h"
 #include "harness/failure_plot.h"
+#include "harness/fuzz/fuzz_relations.h"
 #include "harness/fuzz/regression_case.h"
 #include "harness/judging.h"
 #include "harness/parallel_run.h"
@@ -37,7 +38,16 @@ std::string reproduceCommand(const std::string& engine, const std::string& vs, s
   std::string command = fuzzReproduceCommand(engine, vs, caseSeed);
   if (options.formats != kDefaultCycleFormats) command += " --formats " + cycleFormatsText(options.formats);
   if (options.cycles != kDefaultFuzzCycles) command += " --cycles " + fuzzCyclesText(options.cycles);
+  if (options.metamorphic) command += " --metamorphic";
   return command;
+}
+
+// A result judged as the run judges it: by the oracles (and `vs`), and with --metamorphic by the
+// relations too, counted in `tally` when it is given.
+FuzzVerdict judged(EngineResult r, Engine& engine, Engine* vs, const SpecCase& c, const FuzzOptions& options,
+                   MetamorphicTally* tally) {
+  if (!options.metamorphic) return judgeFuzzResult(std::move(r), engine, vs, c, options.tolerance);
+  return judgeFuzzResultWithRelations(std::move(r), engine, vs, c, options.tolerance, tally);
 }
 
 }  // namespace
@@ -144,7 +154,8 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
     auto candidates = current.shrinks();
     while (auto candidate = candidates.next()) {
       if (f.shrinkRuns++ >= options.shrinkBudget) break;
-      const FuzzVerdict v = judgeFuzzCase(engine, vs, fuzzSpecCase(candidate->value(), caseSeedTag(caseSeed)), options.tolerance);
+      const SpecCase c = fuzzSpecCase(candidate->value(), caseSeedTag(caseSeed));
+      const FuzzVerdict v = judged(engine.run(c), engine, vs, c, options, nullptr);
       if (v.verdict == first.verdict && v.kind == first.kind) {
         current = *candidate;
         f.detail = v.detail;
@@ -191,6 +202,7 @@ class FuzzCampaign {
     FuzzVerdict verdict;
     CaseResult result;
     std::string line;  // resultLine(result), without its newline
+    MetamorphicTally tally;  // --metamorphic: the case's follow-ups, counted when it is recorded
   };
   struct JudgedBatch {
     long skipped = 0;  // cases already in the results (--resume)
@@ -239,11 +251,12 @@ class FuzzCampaign {
         out.cut = true;
         break;
       }
-      FuzzVerdict v = judgeFuzzResult(std::move(planned[k]), *w.engine, w.vs, batch[k], options_.tolerance);
+      MetamorphicTally tally;
+      FuzzVerdict v = judged(std::move(planned[k]), *w.engine, w.vs, batch[k], options_, &tally);
       CaseResult r = resultOf(w, seeds[k], batch[k], v);
       std::string line = resultLine(r);
       line.pop_back();
-      out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v), std::move(r), std::move(line)});
+      out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v), std::move(r), std::move(line), std::move(tally)});
     }
     return out;
   }
@@ -271,6 +284,7 @@ class FuzzCampaign {
 
   void record(const Worker& w, JudgedCase& j) {
     const FuzzVerdict& v = j.verdict;
+    summary_.metamorphic.add(j.tally);
     // The expectations are matched here, on the one thread that records (the matcher counts uses).
     CaseResult& r = j.result;
     const ExpectationStatus expected = matcher_ ? matcher_->apply(r, v.kind) : ExpectationStatus::None;
@@ -325,7 +339,7 @@ class FuzzCampaign {
   void drawShrunk(const Worker& w, const FuzzFailure& f, CaseResult& r) {
     const SpecCase shrunk = fuzzSpecCase(f.shrunk, caseSeedTag(f.caseSeed));
     const EngineResult mine = w.engine->run(shrunk);
-    const FuzzVerdict v = judgeFuzzResult(mine, *w.engine, nullptr, shrunk, options_.tolerance);
+    const FuzzVerdict v = judged(mine, *w.engine, nullptr, shrunk, options_, nullptr);
     std::optional<PlotComparison> theirs;
     if (w.vs) {
       const EngineResult other = w.vs->run(shrunk);
@@ -335,7 +349,9 @@ class FuzzCampaign {
       }
     }
     r.findings = v.findings;
-    if (const auto plot = failurePlot(shrunk, mine, w.engine->name(), v.findings, options_.tolerance, theirs)) {
+    if (v.violation) {
+      if (const auto plot = metamorphicPlot(*v.violation, w.engine->name(), options_.tolerance)) r.plot = plotToJson(*plot);
+    } else if (const auto plot = failurePlot(shrunk, mine, w.engine->name(), v.findings, options_.tolerance, theirs)) {
       r.plot = plotToJson(*plot);
     }
   }

@@ -16,6 +16,7 @@
 #include "harness/engines/engine.h"
 #include "harness/expectations.h"
 #include "harness/fuzz/case_generator.h"
+#include "harness/metamorphic_run.h"
 #include "harness/results_file.h"
 #include "harness/worker_engines.h"
 
@@ -36,6 +37,7 @@ struct FuzzOptions {
   FuzzCycles cycles = kDefaultFuzzCycles;       // the cycles drawn (--cycles)
   const Expectations* expectations = nullptr;   // --expectations: known failures are neither counted as failing nor shrunk
   int jobs = 1;                   // workers (--jobs), each with its own engines; the results do not depend on it
+  bool metamorphic = false;  // --metamorphic: the relations too (harness/fuzz/fuzz_relations.h)
 };
 
 inline constexpr long kDefaultFuzzCases = 2000;
@@ -55,6 +57,7 @@ struct FuzzSummary {
   long expectedFailures = 0, unexpectedPasses = 0;  // with expectations (fail, engineFailure: the others)
   double seconds = 0;
   std::vector<FuzzFailure> failures;  // one per failing case, shrunk
+  MetamorphicTally metamorphic;       // with --metamorphic: the relations' counts (not the shrinker's runs)
   bool clean() const { return fail == 0 && engineFailure == 0; }
 };
 
@@ -74,6 +77,7 @@ struct FuzzVerdict {
   std::string verdict, kind, detail;
   std::vector<Finding> findings;
   double seconds = 0;
+  std::optional<MetamorphicViolation> violation;  // a metamorphic kind's: both paths, for the plot
 };
 FuzzVerdict judgeFuzzCase(Engine& engine, Engine* vs, const SpecCase& c, double tolerance);
 // The same for a result the engine already gave (a batch's; moved in, its toolpath is not copied).
