@@ -12,6 +12,7 @@
 #include "reference/gcode/parser.h"
 #include "reference/gcode/writer.h"
 #include "reference/model/alarms.h"
+#include "reference/model/profile.h"
 #include "reports/svg/plot_json.h"
 
 namespace cyclecert {
@@ -70,8 +71,11 @@ constexpr const char* kCrossDialectSourceProfile = "fanuc-0i-f";
 // - a source alarming PS0003 (a word out of its range): metric-inch, param-default and the one-block
 //   formats rewrite that word (÷ 25.4, or into a parameter), and the alarm goes with it;
 // - transpose and hnc-one-block on a source alarming PS0322 (README: G71.LIMIT.HEIGHT has no G72
-//   counterpart, and seed 003 states none for the Huazhong G71).
+//   counterpart, and seed 003 states none for the Huazhong G71);
+// - scale-k on a case with a tool nose radius (a SINUMERIK finish compensates it on its own): the
+//   relation scales the program, not the tool, and the compensated path does not scale with it.
 bool outsideTheRelation(const Relation& r, const FollowUp& f, const SpecCase& source, const Toolpath& sourcePath) {
+  if (r.id == "scale-k" && source.tool && source.tool->noseRadius > 0) return true;
   const bool crossDialect = r.id == "hnc-one-block" || r.id == "haas-one-block";
   if (crossDialect && f.profile != source.profile && source.profile != kCrossDialectSourceProfile) return true;
   const std::string code = sourcePath.alarm ? sourcePath.alarm->code : "";
@@ -86,32 +90,49 @@ struct PlannedFollowUp {
   SpecCase c;
 };
 
+// A SINUMERIK case: its main program and contour subprograms are read by the relations'
+// transformSiemens (the FANUC reader cannot read them).
+bool isSiemensCase(const SpecCase& c) {
+  const Profile* p = findProfile(c.profile);
+  return p && p->dialect == Dialect::Siemens;
+}
+
+// The relation's follow-up of the source, or nothing (whyNot says why when the relation refuses).
+std::optional<FollowUp> transformed(const Relation& r, const SpecCase& source, const std::optional<Program>& program,
+                                    std::string& whyNot) {
+  try {
+    if (isSiemensCase(source)) {
+      if (!r.transformSiemens) return std::nullopt;
+      return r.transformSiemens(SiemensSource{source.program, source.subprograms}, source.params, whyNot);
+    }
+    if (program) return r.transform(*program, source.params, whyNot);
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
 std::vector<PlannedFollowUp> followUpsOf(const SpecCase& source, const Toolpath& sourcePath, MetamorphicTally& tally) {
   std::vector<PlannedFollowUp> out;
   std::optional<Program> program;
-  try {
-    program = parseProgram(source.program, source.file);
-  } catch (const std::exception&) {
-    // A program the G code reader refuses (a SINUMERIK program): no relation reads it.
+  if (!isSiemensCase(source)) {
+    try {
+      program = parseProgram(source.program, source.file);
+    } catch (const std::exception&) {
+      // A program the G code reader refuses: no relation reads it.
+    }
   }
   for (const Relation& r : allRelations()) {
     RelationCount& count = tally.byRelation[r.id];
     std::string whyNot;
-    std::optional<FollowUp> f;
-    if (program) {
-      try {
-        f = r.transform(*program, source.params, whyNot);
-      } catch (const std::exception&) {
-        f.reset();
-      }
-    }
+    std::optional<FollowUp> f = transformed(r, source, program, whyNot);
     if (!f || outsideTheRelation(r, *f, source, sourcePath)) {
       ++count.doesNotApply;
       continue;
     }
     const std::string profile = f->profile.empty() ? source.profile : f->profile;
     try {
-      SpecCase c = followUpCase(source, r.id, writeProgram(f->program), profile, f->params);
+      SpecCase c = f->siemens ? followUpCase(source, r.id, f->siemens->program, profile, f->params, f->siemens->subprograms)
+                              : followUpCase(source, r.id, writeProgram(f->program), profile, f->params);
       out.push_back({&r, std::move(*f), std::move(c)});
     } catch (const std::exception&) {
       ++count.doesNotApply;  // a follow-up that is no valid case (a parameter the profile refuses)
@@ -223,8 +244,14 @@ void writeTallyFile(const std::string& outDir, const MetamorphicTally& tally, bo
 }
 
 SpecCase followUpCase(const SpecCase& source, const std::string& relationId, const std::string& programText,
-                      const std::string& profile, const std::vector<std::pair<std::string, double>>& params) {
+                      const std::string& profile, const std::vector<std::pair<std::string, double>>& params,
+                      const std::optional<std::vector<std::pair<std::string, std::string>>>& subprograms) {
   nlohmann::json j = source.raw.is_object() ? source.raw : nlohmann::json::object();
+  if (subprograms) {
+    nlohmann::json subs = nlohmann::json::object();
+    for (const auto& [name, text] : *subprograms) subs[name] = text;
+    j["subprograms"] = subs;
+  }
   j["id"] = source.id + "/metamorphic-" + relationId;
   j["title"] = "follow-up of " + source.id + " by the metamorphic relation " + relationId;
   if (!j.contains("rules")) j["rules"] = source.rules;

@@ -95,9 +95,10 @@ struct RelationsVerdict {
 // The follow-up case of a relation: the source case (its tool, mode, subprograms, rules) with the
 // follow-up's program, profile and parameters, no stock (the relations move the part) and no
 // expectation but the oracles' ({"oracles": "pass"}) — a whole valid case, since process engines
-// receive it as JSON.
+// receive it as JSON. A SINUMERIK follow-up brings its own contour subprograms.
 SpecCase followUpCase(const SpecCase& source, const std::string& relationId, const std::string& programText,
-                      const std::string& profile, const std::vector<std::pair<std::string, double>>& params);
+                      const std::string& profile, const std::vector<std::pair<std::string, double>>& params,
+                      const std::optional<std::vector<std::pair<std::string, std::string>>>& subprograms = std::nullopt);
 
 // Every relation on case `source`, whose toolpath (or alarm) the engine gave as `sourcePath`; the
 // follow-ups run through `engine` in one batch. Lengths agree within `tolerance` (mm).
