@@ -60,7 +60,7 @@ struct Command {
 };
 
 extern const Command kPlanCommand, kJudgeCommand, kCheckCommand, kEnginesCommand, kDiffCommand, kFuzzCommand,
-    kMergeCommand, kReportCommand, kRulesCommand, kParamsCommand, kProfilesCommand;
+    kMergeCommand, kReportCommand, kRulesCommand, kParamsCommand, kProfilesCommand, kBaselineCommand;
 
 // The report files of the run in `outDir` (`cyclecert report`; `check` and `fuzz` at the end of a
 // run), with one line on standard output saying the headline numbers and where they are.

@@ -9,10 +9,6 @@
 #include "reference/model/alarms.h"
 #include "reference/model/program.h"
 
-namespace cyclecert::cli {
-extern const Command kBaselineCommand;  // baseline_command.cpp
-}
-
 namespace {
 
 using namespace cyclecert;
