@@ -38,9 +38,9 @@ figures() {
   local log=$1
   local execs cov ft corp
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
-  ft=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
-  corp=$(grep -o 'corp: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
+  cov=$( (grep -o 'cov: [0-9]*' "$log" || true) | tail -1 | cut -d' ' -f2)
+  ft=$( (grep -o 'ft: [0-9]*' "$log" || true) | tail -1 | cut -d' ' -f2)
+  corp=$( (grep -o 'corp: [0-9]*' "$log" || true) | tail -1 | cut -d' ' -f2)
   printf '%s %s %s %s' "${execs:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}"
 }
 
@@ -61,7 +61,7 @@ for target in "$@"; do
   start=$(date +%s)
   if ! "$binary" "${args[@]}" "$work/$target" > "$log" 2>&1; then
     saved=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
-    kind=$(grep -o 'ERROR: [A-Za-z]*: [a-z-]*\|ERROR: libFuzzer: [a-z-]*' "$log" | head -1)
+    kind=$(grep -o -m 1 'ERROR: [A-Za-z]*: [a-z-]*' "$log" || true)
     echo "fuzz: FINDING in $target: ${kind:-the target failed}" >&2
     grep -m 20 -E 'ERROR|SUMMARY|#[0-9]+ 0x' "$log" >&2 || tail -20 "$log" >&2
     if [ -n "$saved" ]; then
