@@ -33,6 +33,15 @@ dict_for() {
   esac
 }
 
+# Inputs longer than this are cut (libFuzzer's -max_len; default: the corpus's longest). A results
+# file of 4 KB holds several result lines with plots, and keeps the corpus small.
+max_len_args() {
+  case "$1" in
+    results) echo "-max_len=4096" ;;
+    *) echo "" ;;
+  esac
+}
+
 # The last "cov: N ft: M corp: K/…" figures and the executions of a libFuzzer log.
 figures() {
   local log=$1
@@ -57,6 +66,8 @@ for target in "$@"; do
   args=(-max_total_time="$seconds" -timeout="$timeout_s" -rss_limit_mb="$rss_mb" -malloc_limit_mb="$rss_mb"
         -print_final_stats=1 -close_fd_mask=1 -artifact_prefix="$findings/$target-")
   [ -n "$dict" ] && args+=(-dict="$dict")
+  max_len=$(max_len_args "$target")
+  [ -n "$max_len" ] && args+=("$max_len")
   echo "fuzz: $target for $seconds s (corpus $(ls "$corpus" | wc -l) inputs; log $log)"
   start=$(date +%s)
   if ! "$binary" "${args[@]}" "$work/$target" > "$log" 2>&1; then
@@ -75,7 +86,7 @@ for target in "$@"; do
   if [ "$mode" = --merge ]; then
     merged="$work/$target.merged"
     mkdir -p "$merged"
-    "$binary" -merge=1 -timeout="$timeout_s" -rss_limit_mb="$rss_mb" -close_fd_mask=1 "$merged" "$corpus" "$work/$target" \
+    "$binary" -merge=1 $max_len -timeout="$timeout_s" -rss_limit_mb="$rss_mb" -close_fd_mask=1 "$merged" "$corpus" "$work/$target" \
       > "$findings/$target.merge.log" 2>&1 || { echo "fuzz: merging $target's corpus failed: $findings/$target.merge.log" >&2; exit 1; }
     rm -rf "$corpus"
     mv "$merged" "$corpus"
