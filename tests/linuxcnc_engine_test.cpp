@@ -361,6 +361,15 @@ TEST_F(LinuxCnc, GarbageCanonicalOutputIsAnError) {
   EXPECT_FALSE(empty.sawCycle);
 }
 
+// Found by tests/fuzz/linuxcnc_canon_fuzz.cpp: an ARC_FEED whose rotation is beyond a long was cast
+// to long for the message (undefined behaviour; UBSan stopped there). The message shows the number.
+TEST_F(LinuxCnc, AnArcOfAHugeRotationIsAnErrorShowingIt) {
+  const std::string out = "   5 N..... SELECT_PLANE(CANON_PLANE_XZ)\n"
+                          "   6 N..... ARC_FEED(1.0, 2.0, 0.0, 0.0, -2e21, 0.0, 0.0, 0.0, 0.0)\n";
+  const std::string error = parseCanonical(out).error;
+  EXPECT_NE(error.find("ARC_FEED with rotation -2e+21 (full turns)"), std::string::npos) << error;
+}
+
 TEST_F(LinuxCnc, ReadsRs274ErrorsAsAlarms) {
   const std::map<std::string, int> lines = {{"o100 endsub", 3}, {"G1 X22.4 Z2.1", 4}};
   const Alarm a = linuxCncAlarm("executing\n(2.1,18.2) (2.1,11.2)\nG7X error: Not monotonic\no100 endsub\n", lines);

@@ -59,7 +59,7 @@ std::string verdictOf(const json& report, const std::string& engine, const std::
 }
 
 TEST(ReportModel, AFindingFailsTheRulesItNamesAndTheCaseStillPassesTheOthers) {
-  const json report = buildReport({line("e", "p/g71/a", "fail", {"G71.A", "G71.B"}, {finding("retract", {"G71.B"})})}, {},
+  const json report = buildReport({line("e", "p/g71/a", "fail", {"G71.A", "G71.B"}, json::array({finding("retract", {"G71.B"})}))}, {},
                                   kCatalogue);
   EXPECT_EQ(verdictOf(report, "e", "G71.B"), "fail");
   EXPECT_EQ(ruleOf(engineOf(report, "e"), "G71.B")["failing"], json({"p/g71/a"}));
@@ -75,7 +75,7 @@ TEST(ReportModel, AnUnmetExpectationFailsEveryRuleTheCaseCites) {
 }
 
 TEST(ReportModel, AFindingsRuleTheCaseDoesNotCiteFailsToo) {
-  const json report = buildReport({line("e", "p/g71/a", "fail", {"G71.A"}, {finding("feeds", {"G71.D"})})}, {}, kCatalogue);
+  const json report = buildReport({line("e", "p/g71/a", "fail", {"G71.A"}, json::array({finding("feeds", {"G71.D"})}))}, {}, kCatalogue);
   const json& d = ruleOf(engineOf(report, "e"), "G71.D");
   EXPECT_EQ(d["verdict"], "fail");
   EXPECT_EQ(d["failing"], json({"p/g71/a"}));
@@ -192,7 +192,7 @@ TEST(ReportModel, CaseKinds) {
 
 TEST(ReportModel, AReportCaseKeepsWhatAPersonNeedsAndDropsTheWitness) {
   json l = fuzzLine("e", 42, "fail");
-  l["findings"] = {finding("retract", {"G71.B"})};
+  l["findings"] = json::array({finding("retract", {"G71.B"})});
   l["program"] = "G00 X8 Z0;\n";
   l["reproduce"] = "cyclecert fuzz --engine 'e' --seed 42 --cases 1";
   const json report = buildReport({l}, {}, kCatalogue);

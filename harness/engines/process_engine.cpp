@@ -20,8 +20,8 @@
 #include <optional>
 
 #include "harness/engines/engines.h"
+#include "harness/engines/process_reply.h"
 #include "harness/engines/subprocess.h"
-#include "reference/model/toolpath_json.h"
 
 namespace cyclecert {
 
@@ -118,7 +118,7 @@ class ProcessEngine : public Engine {
     if (const std::string problem = readLine(line, deadline); !problem.empty()) return restartAfter(problem);
     nlohmann::json reply;
     try {
-      reply = parseJsonDocument(line, "the reply to request " + std::to_string(request));
+      reply = parseProcessReply(line, request);
     } catch (const std::exception& e) {
       return restartAfter("invalid JSON reply to request " + std::to_string(request) + ": " + quotedLine(line) + " (" +
                           e.what() + ")");
@@ -137,23 +137,7 @@ class ProcessEngine : public Engine {
     if (more.size() <= kQuotedBytes) more += process_->readWaiting(kQuotedBytes + 1 - more.size());
     if (!more.empty()) return restartAfter("after its reply, the engine wrote more: " + quotedLine(more));
     answered_ = request;
-    return resultOf(reply);
-  }
-
-  EngineResult resultOf(const nlohmann::json& reply) {
-    try {
-      if (reply.contains("toolpath")) return EngineResult::planned(toolpathFromJson(reply["toolpath"]));
-      if (reply.contains("alarm")) {
-        Toolpath t;
-        t.alarm = alarmFromJson(reply["alarm"], "/alarm");
-        return EngineResult::planned(std::move(t));
-      }
-      if (reply.contains("not_applicable")) return EngineResult::notApplicable(reply["not_applicable"].dump());
-      if (reply.contains("error")) return EngineResult::failed("the engine reported: " + reply["error"].dump());
-    } catch (const std::exception& e) {
-      return EngineResult::failed(std::string("reply: ") + e.what());
-    }
-    return EngineResult::failed("a reply with none of toolpath, alarm, not_applicable, error");
+    return processReplyResult(reply);
   }
 
   // One line within the deadline; the problem in words, or "" on success.

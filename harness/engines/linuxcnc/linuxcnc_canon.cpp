@@ -141,7 +141,9 @@ CanonicalParse parseCanonical(const std::string& text) {
       }
       const double rotation = v[4];
       if (rotation == 0 || std::abs(rotation) > 1) {
-        fail("ARC_FEED with rotation " + std::to_string(static_cast<long>(rotation)) + " (full turns)");
+        std::ostringstream turns;
+        turns << rotation;  // any finite double (a cast to long is undefined beyond its range)
+        fail("ARC_FEED with rotation " + turns.str() + " (full turns)");
         continue;
       }
       m.kind = MoveKind::Feed;
