@@ -10,6 +10,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 struct CliRun {
   int exitCode;
@@ -39,6 +42,14 @@ class CliFixture : public ::testing::Test {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+  }
+
+  // A JSON-lines file (results.jsonl), one value per line.
+  static std::vector<nlohmann::json> jsonLines(const std::string& file) {
+    std::vector<nlohmann::json> lines;
+    std::istringstream in(read(file));
+    for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+    return lines;
   }
 
   // `prefix`: shell text run before the command in the same shell (e.g. "ulimit -f 16; exec").

@@ -42,12 +42,6 @@ class ExpectationsCli : public CliFixture {
                path(out) + " " + extra);
   }
 
-  static std::vector<json> jsonLines(const std::string& file) {
-    std::vector<json> lines;
-    std::istringstream in(read(file));
-    for (std::string line; std::getline(in, line);) lines.push_back(json::parse(line));
-    return lines;
-  }
 };
 
 TEST_F(ExpectationsCli, ABaselineOfARunMakesTheSameRunGreen) {

@@ -40,12 +40,6 @@ class ReportCli : public CliFixture {
                " " + extra);
   }
 
-  static std::vector<json> jsonLines(const std::string& file) {
-    std::vector<json> lines;
-    std::istringstream in(read(file));
-    for (std::string line; std::getline(in, line);) lines.push_back(json::parse(line));
-    return lines;
-  }
 };
 
 TEST_F(ReportCli, ACheckRunLeavesItsReportWithPlotsOfTheFailures) {
