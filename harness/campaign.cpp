@@ -38,15 +38,17 @@ std::vector<std::string> mergedFields(const json& a, const json& b) {
   if (text(a, "command") != text(b, "command")) return {};
   // Runs of different engines fill different engines' parts of one report, which compares them.
   if (text(a, "engine") != text(b, "engine")) return {"spec_suite_hash"};
-  if (text(a, "command") == "fuzz") return {"engine_version", "vs", "seed", "formats", "cycles", "shards", "spec_suite_hash"};
-  return {"engine_version", "spec_suite_hash"};
+  if (text(a, "command") == "fuzz") {
+    return {"engine_version", "vs", "seed", "formats", "cycles", "metamorphic", "shards", "spec_suite_hash"};
+  }
+  return {"engine_version", "metamorphic", "spec_suite_hash"};
 }
 
 }  // namespace
 
 std::optional<CampaignDifference> resumeDifference(const std::vector<SourcedRecord>& existing, const SourcedRecord& next) {
-  static const std::vector<std::string> sameCommand{"engine", "engine_version", "vs",
-                                                     "seed",   "formats",        "cycles", "shard", "spec_suite_hash"};
+  static const std::vector<std::string> sameCommand{"engine", "engine_version", "vs",          "seed",
+                                                     "formats", "cycles",       "metamorphic", "shard", "spec_suite_hash"};
   static const std::vector<std::string> otherCommand{"engine", "engine_version"};
   for (const SourcedRecord& r : existing) {
     const bool same = text(r.record, "command") == text(next.record, "command");
@@ -81,8 +83,9 @@ std::optional<CampaignDifference> mergeDifference(const std::vector<std::vector<
 
 std::string differenceText(const CampaignDifference& d) {
   const std::string name = d.field == "shards" ? "shard count" : d.field;
-  // formats, cycles: absent in a record is the default (two-block; g71,g72)
+  // formats, cycles, metamorphic: absent in a record is the default (two-block; g71,g72; off)
   const auto value = [&](const std::string& v) {
+    if (d.field == "metamorphic") return std::string(v == "none" ? "off" : "on");
     if (v != "none") return v;
     return d.field == "formats" ? std::string("two-block") : d.field == "cycles" ? std::string("g71,g72") : v;
   };

@@ -55,6 +55,7 @@ json runRecordJson(const RunRecord& r) {
   if (!r.shard.empty()) j["shard"] = r.shard;
   if (!r.formats.empty()) j["formats"] = r.formats;  // absent: the default, as in records written before --formats
   if (!r.cycles.empty()) j["cycles"] = r.cycles;     // absent: the default (g71,g72), as before --cycles
+  if (r.metamorphic) j["metamorphic"] = true;        // absent: without the relations, as before --metamorphic
   return j;
 }
 
@@ -110,6 +111,7 @@ void checkSameCampaign(const std::string& outDir, const std::vector<json>& runs,
   if (d->field == "seed" && d->first != "none") hint += " (--seed " + d->first + ")";
   if (d->field == "formats") hint += " (--formats " + (d->first == "none" ? std::string("two-block") : d->first) + ")";
   if (d->field == "cycles") hint += " (--cycles " + (d->first == "none" ? std::string("g71,g72") : d->first) + ")";
+  if (d->field == "metamorphic") hint += d->first == "none" ? " (without --metamorphic)" : " (with --metamorphic)";
   throw CampaignMismatchError("cannot resume the run in '" + outDir + "': this run is of another campaign: " +
                               differenceText(*d) + "; " + hint + ", write to another --out, or give " +
                               kMixCampaignsFlag + " to mix the two in one report knowingly");

@@ -24,6 +24,7 @@ struct RunRecord {
   std::string shard;          // fuzz: "K/N" with --shard, else ""
   std::string formats;        // fuzz: --formats when not the default (two-block), else "": another campaign
   std::string cycles;         // fuzz: --cycles when not the default (g71,g72), else "": another campaign
+  bool metamorphic = false;   // --metamorphic: the relations judged the cases too — another campaign
   std::vector<std::string> argv;
 };
 

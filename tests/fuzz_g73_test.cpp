@@ -380,5 +380,21 @@ TEST_F(FuzzG73Cli, CyclesOptionDrawsG73AndBadNamesExitWith2) {
   EXPECT_NE(more.out.find("50 already done"), std::string::npos) << more.out;
 }
 
+// run.json records --metamorphic: a resume with and without the relations is another campaign,
+// refused and named (the relations judge the cases more strictly: the two would mix in one report).
+TEST_F(FuzzG73Cli, ResumingWithoutTheRelationsARunMadeWithThemIsAnotherCampaign) {
+  const std::string out = path("meta-out");
+  const CliRun first = run("fuzz --engine reference --cycles g73 --cases 20 --seed 3 --no-save --metamorphic --out " + out);
+  EXPECT_EQ(first.exitCode, 0) << first.out << first.err;
+  EXPECT_NE(read(out + "/run.json").find("\"metamorphic\": true"), std::string::npos) << read(out + "/run.json");
+  const CliRun other = run("fuzz --engine reference --cycles g73 --cases 40 --seed 3 --no-save --resume --out " + out);
+  EXPECT_EQ(other.exitCode, 2) << other.out << other.err;
+  EXPECT_NE(other.err.find("metamorphic on in"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("off in this run"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("(with --metamorphic)"), std::string::npos) << other.err;
+  const CliRun more = run("fuzz --engine reference --cycles g73 --cases 40 --seed 3 --no-save --resume --metamorphic --out " + out);
+  EXPECT_EQ(more.exitCode, 0) << more.out << more.err;
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -111,6 +111,7 @@ static int commandCheck(const std::vector<std::string>& args) {
   const RunLock lock(options.outDir, commandLineText(argv));  // held until the report is written
   RunRecord record = startRunRecord("check", *engine, nullptr, options.specsDir, std::nullopt, argv);
   if (options.shards > 1) record.shard = std::to_string(options.shard) + "/" + std::to_string(options.shards);
+  record.metamorphic = options.metamorphic;
   recordRun(options.outDir, record, options.resume, mixCampaigns);
   const CheckSummary s = runCheck(namedEngines(engineName, "", engineOptions), options, std::cerr);
   std::cout << "check " << engine->name() << ": " << s.pass << " pass, " << s.fail << " fail, " << s.notApplicable

@@ -221,6 +221,7 @@ static int commandFuzz(const std::vector<std::string>& args) {
   if (options.shards > 1) record.shard = std::to_string(options.shard) + "/" + std::to_string(options.shards);
   if (options.formats != kDefaultCycleFormats) record.formats = cycleFormatsText(options.formats);
   if (options.cycles != kDefaultFuzzCycles) record.cycles = fuzzCyclesText(options.cycles);
+  record.metamorphic = options.metamorphic;
   recordRun(options.outDir, record, options.resume, mixCampaigns);
   const FuzzSummary s = runFuzz(namedEngines(engineName, vsName, engineOptions), options, std::cerr);
   std::cout << "fuzz " << engine->name() << (vs ? " vs " + vs->name() : "") << ": " << s.run << " cases in "
