@@ -44,6 +44,20 @@ class CliFixture : public ::testing::Test {
     return s.str();
   }
 
+  // A small spec suite in the scratch folder: these cases of the repository's specs/cases (by id)
+  // and its rule catalogue, so that `check --specs` is quick. Returns the suite's folder.
+  std::string copySpecSuite(const std::vector<std::string>& caseIds) const {
+    const std::string source = CYCLECERT_SOURCE_DIR;
+    std::filesystem::create_directories(dir_ / "specs");
+    std::filesystem::copy_file(source + "/specs/rules.json", dir_ / "specs/rules.json");
+    for (const std::string& id : caseIds) {
+      const std::filesystem::path to = dir_ / "specs/cases" / (id + ".json");
+      std::filesystem::create_directories(to.parent_path());
+      std::filesystem::copy_file(source + "/specs/cases/" + id + ".json", to);
+    }
+    return path("specs");
+  }
+
   // A JSON-lines file (results.jsonl), one value per line.
   static std::vector<nlohmann::json> jsonLines(const std::string& file) {
     std::vector<nlohmann::json> lines;

@@ -27,14 +27,7 @@ class ExpectationsCli : public CliFixture {
  protected:
   void SetUp() override {
     CliFixture::SetUp();
-    const std::string source = CYCLECERT_SOURCE_DIR;
-    fs::create_directories(dir_ / "specs");
-    fs::copy_file(source + "/specs/rules.json", dir_ / "specs/rules.json");
-    for (const char* id : {kFailing[0], kFailing[1], kPassing}) {
-      const fs::path to = dir_ / "specs/cases" / (std::string(id) + ".json");
-      fs::create_directories(to.parent_path());
-      fs::copy_file(source + "/specs/cases/" + id + ".json", to);
-    }
+    copySpecSuite({kFailing[0], kFailing[1], kPassing});
   }
 
   CliRun check(const std::string& out, const std::string& extra = "") const {

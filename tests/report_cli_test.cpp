@@ -25,14 +25,7 @@ class ReportCli : public CliFixture {
  protected:
   void SetUp() override {
     CliFixture::SetUp();
-    const std::string source = CYCLECERT_SOURCE_DIR;
-    fs::create_directories(dir_ / "specs");
-    fs::copy_file(source + "/specs/rules.json", dir_ / "specs/rules.json");
-    for (const char* id : kCases) {
-      const fs::path to = dir_ / "specs/cases" / (std::string(id) + ".json");
-      fs::create_directories(to.parent_path());
-      fs::copy_file(source + "/specs/cases/" + id + ".json", to);
-    }
+    copySpecSuite({std::begin(kCases), std::end(kCases)});
   }
 
   CliRun check(const std::string& out, const std::string& extra = "") const {

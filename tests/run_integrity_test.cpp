@@ -50,14 +50,7 @@ class RunIntegrity : public CliFixture {
   }
 
   // A small spec suite: one case and the rule catalogue, so that `check` is quick.
-  std::string smallSpecs() const {
-    const std::string source = CYCLECERT_SOURCE_DIR;
-    const fs::path to = dir_ / "specs/cases/fanuc-0i-f/g71/g01-head-stepped-shaft.json";
-    fs::create_directories(to.parent_path());
-    fs::copy_file(source + "/specs/cases/fanuc-0i-f/g71/g01-head-stepped-shaft.json", to);
-    fs::copy_file(source + "/specs/rules.json", dir_ / "specs/rules.json");
-    return path("specs");
-  }
+  std::string smallSpecs() const { return copySpecSuite({"fanuc-0i-f/g71/g01-head-stepped-shaft"}); }
 };
 
 // --- the lock ---------------------------------------------------------------------------------
