@@ -95,7 +95,7 @@ std::vector<Finding> besides(std::vector<Finding> findings, const std::string& o
 // z ∈ [−30, 3].
 const char* kG71 =
     "G00 X50 Z3;\nG71 U2 R0.5;\nG71 P10 Q40 U0.5 W0.2 F0.25;\nN10 G00 X30;\nN20 G01 Z-20;\nN30 X40 Z-30;\nN40 X48;\n";
-constexpr double kG71F = 0.25, kG71E = 0.5, kG71Dd = 2;
+constexpr double kG71F = 0.25;
 const Point kG71A{3, 25};
 
 // Levels A'.x − k·Δd = 23.25, 21.25, 19.25, 17.25 (15.25 = B'.x is not strictly between).
@@ -142,7 +142,7 @@ Toolpath g71PathWithoutSemiFinish() {
 // B' (45.1, −7.9) → (30.1, −7.9) → C' (15.1, −1.9); on the taper x = 30.1 − 2.5·(z + 7.9). The cut
 // runs along −x, the infeed along −z; the retract is +e in x (back) and +e in z (out).
 const char* kG72 = "G00 X90 Z1;\nG72 W2.5 R0.5;\nG72 P10 Q20 U0.2 W0.1 F150;\nN10 G00 Z-8;\nG01 X60;\nN20 X30 Z-2;\nM30;\n";
-constexpr double kG72F = 150, kG72E = 0.5, kG72Dd = 2.5;
+constexpr double kG72F = 150;
 const Point kG72A{1, 45};
 
 // Levels A'.z − k·Δd = −1.4, −3.9, −6.4 (−8.9 is past B'.z = −7.9).
