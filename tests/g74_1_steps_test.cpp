@@ -3,6 +3,7 @@
 // Plane points are (z, x radius). Unless a test says otherwise P and Q are in mm (--param 182#7=1).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -342,6 +343,24 @@ TEST(G74_1Layers, ALayerRunsOverTheCyclesOfTheLayerAboveThatReachedItsBottom) {
   ASSERT_FALSE(layerEnds.empty());
   EXPECT_NEAR(layerEnds.front().x, 12, 1e-9);  // layer 1's Amf: u 8
   EXPECT_NEAR(layerEnds.back().x, 12, 1e-9);   // layer 2's
+}
+
+// Found by the metamorphic relation scale-k on a fuzzer's case: the groove below (∠a 20°, rounded
+// corners, Δk 1.875, e 0.025) has the far flank's last axial cycle 7.5 deep — computed through the
+// round r4 as 7.500000024 — and the pecks land on 7.5 by (Δk + e) exactly: 1.875, 3.75, 5.625, 7.5.
+// The last one reaches Bmn (STEP5); the plan went on with a retract and a feed of 2.4e-8 mm, one peck
+// more than the same part 2.5 times smaller plans. The last cycle (x 5.001) feeds four times.
+TEST(G74_1Steps, APeckLandingOnBmnWithinARoundingErrorReachesIt) {
+  const Toolpath t = planGsk(
+      "G00 X62.2 Z-73.75 F0.1;\nG74.1 X62.2 Z-75 P21000 Q18750 H-7.825 D-9.2 A20;\nG74.1 R0.025 E0.325 P0111;\n",
+      {});
+  ASSERT_FALSE(t.alarm) << t.alarm->message;
+  int pecksOfTheLastCycle = 0;
+  for (const Move& m : t.moves) {
+    if (m.phase != MovePhase::Pass || m.kind != MoveKind::Feed) continue;
+    if (std::abs(m.to.x - t.moves.back().to.x) > 1e-9 && std::abs(m.to.x - 5.001) < 0.001) ++pecksOfTheLastCycle;
+  }
+  EXPECT_EQ(pecksOfTheLastCycle, 4);  // 1.875, 3.75, 5.625, 7.5
 }
 
 }  // namespace

@@ -459,7 +459,10 @@ bool holdsOnDrawnCase(const Relation& r, const SpecCase& c) {
     SiemensVerdict v = judgeSiemens(r, c);
     if (!v.followUp) return false;
     if (const auto d = checkRelation(r, *v.followUp, v.source, v.actual, kTol)) {
-      RC_FAIL(r.id + ": " + *d + "\nsource:\n" + c.program + "\nfollow-up:\n" + v.followUp->siemens->program);
+      std::string subprograms;
+      for (const auto& [name, text] : c.subprograms) subprograms += "\n" + name + ":\n" + text;
+      RC_FAIL(r.id + ": " + *d + "\nsource:\n" + c.program + "\nfollow-up:\n" + v.followUp->siemens->program +
+              "\nsource subprograms:" + subprograms);
     }
     return true;
   }

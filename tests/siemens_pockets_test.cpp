@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -435,6 +436,31 @@ TEST(SiemensAxisAllowance, ALevelAtADomesTopFollowsTheFlatFalzAddsToWhereTheProf
     if (m.phase == MovePhase::Pass && m.pass == 1 && m.kind == MoveKind::Feed) deepest = std::min(deepest, m.to.z);
   }
   EXPECT_NEAR(deepest, -1.51, 1e-6);
+}
+
+// A rounding tangent to the face line before it (CYCLE95 VARI 4, face internal roughing, FALX on
+// the transverse axis): with the allowance the line's end and the rounding's start overlap, and the
+// two meet where the line touches the rounding's circle. Found by the metamorphic relation scale-k on
+// a fuzzer's case: the part planned, the same part 2.5 times as large alarmed "a groove narrower than
+// the allowances" — the tangency was decided on the discriminant, which grows with the part's size to
+// the fourth power, against a fixed 1e-12. Every scale of the part plans (the allowance scaled too).
+TEST(SiemensAxisAllowance, ARoundingTangentToTheLineBeforeItPlansAtEveryScale) {
+  for (const double k : {1.0, 2.5, 10.0, 0.4}) {
+    const auto n = [k](double v) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.6g", v * k);
+      return std::string(text);
+    };
+    const std::string program = "T1 D1\nG0 X" + n(13.22) + " Z" + n(-0.92) + "\nCYCLE95(\"L1\", " + n(0.5) +
+                                ", 0, " + n(0.22) + ", 0, 0.1, 0.1, 0.05, 4, 0, 0, " + n(0.1) + ")\nM02\n";
+    const std::string contour = "G1X" + n(11.58) + "Z0\nG1X" + n(6.72) + "Z0RND=" + n(0.26) + "\nG1X" + n(4.18) +
+                                "Z" + n(-0.1) + "\nRET\n";
+    PlanRequest request{program, "tangent.mpf", "sinumerik-802d", {}, {}};
+    request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+    const Toolpath path = planWithReference(request);
+    EXPECT_FALSE(path.alarm) << "scale " << k << ": " << path.alarm->message;
+    EXPECT_FALSE(path.moves.empty()) << "scale " << k;
+  }
 }
 
 }  // namespace

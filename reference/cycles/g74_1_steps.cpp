@@ -30,6 +30,17 @@ struct GrooveLayer {
 
 std::string mm(double v) { return shortDecimalText(v); }
 
+// A peck that ends this close to Bmn has reached it (STEP3, STEP5: "reaching or passing Bmn"). Bmn is
+// the rough profile's depth under the blade, computed through the flanks and the corner rounds: on a
+// round near its tangent point the computation carries a rounding error of up to ~1e-8 mm that grows
+// with the part's size. Without this the pecks, landing on Bmn by Δk + e exactly, add a feed of that
+// error — and a part scaled up plans one peck more than the part (found by scale-k). One nanometre
+// is far below any least input increment (0.001 mm IS-B, 0.0001 mm IS-C). An interpretation.
+constexpr double kPeckReachesBmnWithin = 1e-6;  // mm
+
+// Where a feed meant to end at `next` ends: at Bmn when it reaches or passes it.
+double feedEnd(double next, double bmn) { return next < bmn - kPeckReachesBmnWithin ? next : bmn; }
+
 class G74_1Planner {
  public:
   explicit G74_1Planner(const G74_1Cycle& c)
@@ -94,7 +105,7 @@ class G74_1Planner {
   // G74_1.STEP3: feed Δk along z towards the floor; reaching or passing Bmn, feed to Bmn (I19).
   // Returns the depth reached.
   double step3FirstFeed(std::size_t m, const AxialCycle& cycle) {
-    const double to = std::min(layers_[m].top + c_.peck, cycle.end);
+    const double to = feedEnd(layers_[m].top + c_.peck, cycle.end);
     move(MoveKind::Feed, cycle.u, to, m, "G74_1.STEP3");
     return to;
   }
@@ -107,8 +118,7 @@ class G74_1Planner {
   // G74_1.STEP5: feed (Δk + e) from the retracted point if it ends strictly between Amn and Bmn;
   // else feed to Bmn. Returns the depth reached.
   double step5FeedAgain(std::size_t m, const AxialCycle& cycle, double reached) {
-    const double next = reached - c_.retract + (c_.peck + c_.retract);
-    const double to = next < cycle.end - kGeomEps ? next : cycle.end;
+    const double to = feedEnd(reached - c_.retract + (c_.peck + c_.retract), cycle.end);
     move(MoveKind::Feed, cycle.u, to, m, "G74_1.STEP5");
     return to;
   }

@@ -57,14 +57,18 @@ std::vector<Segment> piecesOf(const std::vector<Segment>& profile) {
   return pieces;
 }
 
-// Where the carriers of two pieces (a line's infinite line, an arc's full circle) cross.
+// Where the carriers of two pieces (a line's infinite line, an arc's full circle) cross. A line
+// touching a circle (a rounding tangent to the line before it) crosses it once, at the foot of the
+// centre: the tangency is decided on lengths in mm (kGeomEps), so it holds at every scale of the part.
 std::vector<Point> lineCircle(Point a, Point d, Point c, double r) {
-  const Point f = a - c;
-  const double A = dot(d, d), B = 2 * dot(f, d), C = dot(f, f) - r * r;
-  const double disc = B * B - 4 * A * C;
-  if (A <= 0 || disc < -1e-12) return {};
-  const double root = std::sqrt(std::max(0.0, disc));
-  return {a + ((-B - root) / (2 * A)) * d, a + ((-B + root) / (2 * A)) * d};
+  const double A = dot(d, d);
+  if (A <= 0) return {};
+  const Point foot = a + (dot(c - a, d) / A) * d;
+  const double offCentre = distance(foot, c);
+  if (offCentre > r + kGeomEps) return {};
+  const double halfChord = std::sqrt(std::max(0.0, r * r - offCentre * offCentre));
+  const Point u = (1 / std::sqrt(A)) * d;
+  return {foot + (-halfChord) * u, foot + halfChord * u};
 }
 
 std::vector<Point> carrierCrossings(const Segment& p, const Segment& q) {
