@@ -10,7 +10,7 @@
 #include "harness/engines/engine.h"
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
 #include "harness/fuzz/fuzz_run.h"
-#include "harness/judging.h"
+#include "harness/judge/judging.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/judging.h"
+#include "harness/judge/judging.h"
 
 namespace {
 

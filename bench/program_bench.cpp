@@ -12,7 +12,7 @@
 #include <string>
 
 #include "bench/plan_loop.h"
-#include "harness/judging.h"
+#include "harness/judge/judging.h"
 
 namespace {
 

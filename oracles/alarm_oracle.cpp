@@ -1,7 +1,7 @@
 // alarm: the engine alarms exactly where the documented checks require it — it must not plan a
 // shape the rules forbid, nor alarm on one they allow. One comparison, two oracles: `alarm` for the
 // FANUC-dialect programs, `siemens-alarm` for the SINUMERIK ones (LCYC95.ALARMS: 61002, 61610, 10931
-// read from the program, harness/siemens_reading.h), each citing its own rules.
+// read from the program, harness/judge/siemens_reading.h), each citing its own rules.
 #include <sstream>
 
 #include "oracles/oracles.h"

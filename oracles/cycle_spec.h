@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "oracles/groove/groove_spec.h"
+#include "oracles/siemens/siemens_cycle_spec.h"
 #include "reference/model/cycle_family.h"
 #include "reference/model/geometry.h"
 #include "reference/model/params.h"
@@ -13,8 +15,6 @@
 #include "reference/model/program.h"
 #include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
-#include "oracles/groove/groove_spec.h"
-#include "oracles/siemens/siemens_cycle_spec.h"
 
 namespace cyclecert {
 
@@ -91,7 +91,7 @@ struct ProgramSpec {
   // run of ns…nf among them, which makes hasFinishingCycle true). Empty for other programs.
   std::vector<ProgramMove> runAfterHuazhong;
   // SINUMERIK programs (profiles sinumerik-802s/-802d): the profile's stock-removal cycle, each call
-  // as the front end reads it (harness/siemens_reading.h), and the alarm the controller must stop
+  // as the front end reads it (harness/judge/siemens_reading.h), and the alarm the controller must stop
   // with (LCYC95.ALARMS: 61002, 61610, 10931), read from the program. `cycles` stays empty.
   std::optional<CycleFamily> siemensFamily;
   std::vector<SiemensCycleSpec> siemensCycles;

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 
 namespace cyclecert {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/check_run.h"
+#include "harness/run/check_run.h"
 
 namespace cyclecert {
 

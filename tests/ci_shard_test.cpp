@@ -1,4 +1,4 @@
-// --shard auto: the shard read from each CI system's variables (harness/ci_shard.h), set in the
+// --shard auto: the shard read from each CI system's variables (harness/run/ci_shard.h), set in the
 // process environment by the test and restored after it.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "harness/ci_shard.h"
+#include "harness/run/ci_shard.h"
 
 namespace cyclecert {
 namespace {

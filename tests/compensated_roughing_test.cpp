@@ -5,9 +5,9 @@
 // by hand in the comments.
 #include <gtest/gtest.h>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
+#include "harness/spec/spec_case.h"
 #include "oracles/material/boost_geometry.h"
 #include "oracles/material_replay.h"
 

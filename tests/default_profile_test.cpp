@@ -3,9 +3,9 @@
 // reference, a fuzz case and the fuzzer's profile choice read it.
 #include <gtest/gtest.h>
 
+#include "harness/engines/reference_plan.h"
 #include "harness/fuzz/case_generator.h"
 #include "harness/fuzz/named_choices.h"
-#include "harness/reference_plan.h"
 #include "reference/profiles/default_profile.h"
 #include "tests/small_g71_program.h"
 

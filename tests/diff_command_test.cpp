@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/rule_catalogue.h"
+#include "harness/spec/rule_catalogue.h"
 
 namespace {
 

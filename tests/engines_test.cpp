@@ -13,11 +13,11 @@
 #include <sstream>
 #include <thread>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
-#include "harness/reference_plan.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 #include "tests/check_run_fixture.h"
 
 namespace cyclecert {

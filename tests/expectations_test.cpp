@@ -1,4 +1,4 @@
-// Expectation files (harness/expectations.h): reading JSON and text, the errors on malformed files
+// Expectation files (harness/results/expectations.h): reading JSON and text, the errors on malformed files
 // (file, line:column or JSON path, what was expected), matching results by case, rule and kind,
 // unexpected passes, and the baseline written from results read back to the same entries.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "harness/expectations.h"
-#include "harness/results_file.h"
+#include "harness/results/expectations.h"
+#include "harness/results/results_file.h"
 
 namespace {
 

@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 
 namespace cyclecert {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/check_run.h"
 #include "harness/fuzz/case_generator.h"
+#include "harness/run/check_run.h"
 
 namespace cyclecert {
 

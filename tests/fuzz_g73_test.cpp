@@ -10,12 +10,12 @@
 #include <map>
 #include <sstream>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
+#include "harness/engines/reference_plan.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/fuzz/regression_case.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/spec_case.h"
 #include "tests/cli_fixture.h"
 #include "tests/fuzz_fixture.h"
 

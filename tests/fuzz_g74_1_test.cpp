@@ -11,12 +11,12 @@
 #include <map>
 #include <set>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
+#include "harness/engines/reference_plan.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/fuzz/g74_1_case_generator.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/alarms.h"
 #include "tests/cli_fixture.h"
 #include "tests/fuzz_fixture.h"

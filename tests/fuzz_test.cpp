@@ -9,12 +9,12 @@
 #include <set>
 #include <sstream>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/fuzz/regression_case.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 #include "oracles/metamorphic/path_compare.h"
 #include "tests/cli_fixture.h"
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <string>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 #include "reference/cycles/g73.h"
 #include "reference/model/alarms.h"
 #include "reference/model/params.h"

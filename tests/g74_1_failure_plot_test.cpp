@@ -1,12 +1,12 @@
 // A failure's plot on a G74.1 cycle cut with a grooving tool draws, at each finding's move, the
-// region the blade's end face sweeps there (harness/failure_plot.h): the tool width I and the side
+// region the blade's end face sweeps there (harness/results/failure_plot.h): the tool width I and the side
 // the blade stands on (towards the groove's start, against d) come from the program.
 #include <gtest/gtest.h>
 
-#include "harness/failure_plot.h"
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
+#include "harness/results/failure_plot.h"
+#include "harness/spec/spec_case.h"
 
 namespace cyclecert {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "oracles/cycle_spec.h"
 #include "oracles/judgement.h"
 #include "tests/cli_fixture.h"

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 #include "reference/model/params.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

@@ -3,7 +3,7 @@
 // PS0009 (PROG.RANGE, PROG.ADDRESS), each naming line and column.
 #include <gtest/gtest.h>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/gcode/parser.h"
 #include "reference/model/alarms.h"
 #include "tests/small_g71_program.h"

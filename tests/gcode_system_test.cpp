@@ -4,8 +4,8 @@
 // what it means there and the parameter that selects it. Issue 14.
 #include <gtest/gtest.h>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 #include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
 #include "reference/model/profile.h"

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "oracles/cycle_spec.h"
 #include "oracles/judgement.h"
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 #include "oracles/run_after_cycle.h"
 #include "reference/model/alarms.h"
 

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "harness/input_file.h"
-#include "harness/spec_case.h"
+#include "harness/io/input_file.h"
+#include "harness/spec/spec_case.h"
 #include "tests/cli_fixture.h"
 
 namespace cyclecert {

@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "harness/rule_catalogue.h"
+#include "harness/spec/rule_catalogue.h"
 
 namespace {
 

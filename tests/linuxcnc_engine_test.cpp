@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
-#include "harness/spec_case.h"
+#include "harness/spec/spec_case.h"
 
 namespace cyclecert {
 namespace {

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "harness/engines/reference_plan.h"
 #include "harness/fuzz/case_generator.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/spec/spec_case.h"
 #include "oracles/metamorphic/path_compare.h"
 #include "oracles/metamorphic/relations.h"
 #include "reference/gcode/parser.h"

@@ -1,4 +1,4 @@
-// The metamorphic relations run against an engine (harness/metamorphic_run.h, `--metamorphic` on
+// The metamorphic relations run against an engine (harness/judge/metamorphic_run.h, `--metamorphic` on
 // check, fuzz and diff): an engine with a fault the oracles do not see on the spec cases — it only
 // shows on programs that start far from the part, which the relations write — fails a relation;
 // a follow-up the engine fails on is an engine failure, one it answers "not applicable" to is
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "check_run_fixture.h"
-#include "harness/check_run.h"
 #include "harness/fuzz/fuzz_relations.h"
 #include "harness/fuzz/fuzz_run.h"
-#include "harness/metamorphic_run.h"
+#include "harness/judge/metamorphic_run.h"
+#include "harness/run/check_run.h"
 #include "oracles/metamorphic/relations.h"
 #include "reference/gcode/parser.h"
 
@@ -194,7 +194,7 @@ TEST(MetamorphicRun, RelationsThatDoNotApplyAreSkippedAndCounted) {
 
 // Every spec case the reference plans (or alarms on), under every relation that applies to it: the
 // reference is judged against itself. A violation here is a reference defect or a relation's.
-// Before harness/metamorphic_run.cpp's outsideTheRelation, 25 of these failed, all by the
+// Before the relations' limits (relationJudges, each relation's `outside`), 25 of these failed, all by the
 // relations' limits, none a reference defect: haas-one-block from GSK sources (19: the direct
 // return, DTP = 1) and from a 0i-C one (pocket order), PS0003 sources under metric-inch,
 // param-default, fs10-one-block and haas-one-block (the rewritten word is then in range), and
@@ -275,6 +275,17 @@ TEST_F(CheckRun, MetamorphicOnTheCommandLine) {
   std::ifstream counts(dir_ / "out/metamorphic.json");
   const nlohmann::json tally = nlohmann::json::parse(counts);
   EXPECT_GE(tally["relations"]["translate-z"]["violated"], 1);
+  // The report carries the counts (report.json "metamorphic") and shows them; the plain run's does not.
+  std::ifstream reportFile(dir_ / "out/report.json");
+  const nlohmann::json report = nlohmann::json::parse(reportFile);
+  ASSERT_TRUE(report.contains("metamorphic"));
+  EXPECT_EQ(report["metamorphic"]["relations"]["translate-z"]["violated"], tally["relations"]["translate-z"]["violated"]);
+  std::ifstream plainReport(dir_ / "plain/report.json");
+  EXPECT_FALSE(nlohmann::json::parse(plainReport).contains("metamorphic"));
+  std::ifstream html(dir_ / "out/index.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("<h2>Metamorphic relations</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<code>translate-z</code>"), std::string::npos);
 }
 
 }  // namespace

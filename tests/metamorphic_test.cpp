@@ -2,7 +2,7 @@
 // reference's toolpath of the follow-up program is the expected transformation of the source's,
 // (b) a RapidCheck property shows the same on random monotone type I contours, (c) a wrong
 // expectation is detected, so that the comparison can fail. The relations never plan: the tests do,
-// with the reference (harness/reference_plan.h).
+// with the reference (harness/engines/reference_plan.h).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/reference_plan.h"
-#include "harness/rule_catalogue.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/spec/rule_catalogue.h"
 #include "oracles/metamorphic/lathe_program.h"
 #include "oracles/metamorphic/path_compare.h"
 #include "oracles/metamorphic/relations.h"

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "harness/judging.h"
+#include "harness/judge/judging.h"
 #include "reference/interpreter/g_codes.h"
 #include "reference/model/alarms.h"
 #include "reference/model/toolpath_json.h"

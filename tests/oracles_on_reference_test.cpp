@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

@@ -1,4 +1,4 @@
-// --jobs N: the ordered worker pool (harness/parallel_run.h), and `check` and `fuzz` runs whose
+// --jobs N: the ordered worker pool (harness/run/parallel_run.h), and `check` and `fuzz` runs whose
 // results files and kept regressions are those of --jobs 1 (sorted, the timing left out).
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "cli_fixture.h"
-#include "harness/parallel_run.h"
+#include "harness/run/parallel_run.h"
 
 namespace cyclecert {
 namespace {
@@ -197,6 +197,25 @@ TEST_F(JobsCli, ATimeBudgetStopsTwoJobsAndKeepsWhatTheyRecorded) {
   EXPECT_GE(seconds, 1.0) << r.out;
   EXPECT_LT(seconds, 3.0) << r.out;
   EXPECT_EQ(static_cast<long>(sortedResults("out").size()), cases);  // every case counted is recorded, once
+}
+
+// --time bounds a batch too: an engine taking a quarter second a case would take 16 s over one
+// batch of 64 cases once it had started it in time (LinuxCNC's 64-case batches overran `make run`'s
+// --time 30 by half a minute). The cases are given in chunks that fit in the time left.
+TEST_F(JobsCli, ATimeBudgetBoundsTheBatchOfASlowEngine) {
+  const std::string engine = "'process:" + std::string(CYCLECERT_SOURCE_DIR) + "/tests/data/engines/slow.sh'";
+  for (const int jobs : {1, 2}) {
+    const std::string out = "out" + std::to_string(jobs);
+    const auto start = std::chrono::steady_clock::now();
+    const CliRun r = run("fuzz --engine " + engine + " --no-save --seed 4 --time 2 --jobs " + std::to_string(jobs) +
+                         " --out " + path(out));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+    EXPECT_LT(seconds, 5.0) << "jobs " << jobs << ": " << r.out;
+    const long cases = std::stol(r.out.substr(r.out.find(": ") + 2));
+    EXPECT_GT(cases, 0) << r.out;
+    EXPECT_EQ(static_cast<long>(sortedResults(out).size()), cases) << r.out;
+  }
 }
 
 TEST_F(JobsCli, CheckWritesTheSameResultsInTheSameOrderWithTwoJobs) {

@@ -5,7 +5,7 @@
 
 #include <chrono>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/offset.h"
 
 namespace cyclecert {

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "harness/engines/engine.h"
-#include "harness/judging.h"
-#include "harness/spec_case.h"
+#include "harness/judge/judging.h"
+#include "harness/spec/spec_case.h"
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
 

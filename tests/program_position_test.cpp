@@ -4,7 +4,7 @@
 // never a plan from a guessed point (PROG.WCS, PROG.POSITION, PROG.GCODES).
 #include <gtest/gtest.h>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 #include "tests/small_g71_program.h"
 

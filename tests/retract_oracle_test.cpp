@@ -3,8 +3,8 @@
 // after every pass of the reference's own path). With e > 0 a missing retract is still found.
 #include <gtest/gtest.h>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 
 namespace cyclecert {
 namespace {

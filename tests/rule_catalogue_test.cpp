@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <set>
 
-#include "harness/rule_catalogue.h"
+#include "harness/spec/rule_catalogue.h"
 
 namespace cyclecert {
 namespace {

@@ -16,8 +16,8 @@
 #include <sstream>
 #include <thread>
 
-#include "harness/campaign.h"
-#include "harness/run_lock.h"
+#include "harness/run/campaign.h"
+#include "harness/run/run_lock.h"
 #include "tests/cli_fixture.h"
 
 extern char** environ;

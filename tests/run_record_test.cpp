@@ -8,11 +8,11 @@
 #include <regex>
 
 #include "cyclecert_git_revision.h"
-#include "harness/campaign.h"
 #include "harness/engines/engine.h"
-#include "harness/rule_catalogue.h"
-#include "harness/run_record.h"
-#include "harness/spec_suite_hash.h"
+#include "harness/run/campaign.h"
+#include "harness/run/run_record.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_suite_hash.h"
 
 namespace cyclecert {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "oracles/cycle_spec.h"
 #include "reference/gcode/parser.h"
 #include "reference/model/alarms.h"

@@ -16,12 +16,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
+#include "harness/engines/reference_plan.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/fuzz/siemens_case_generator.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/spec_case.h"
 #include "tests/fuzz_fixture.h"
 
 namespace cyclecert {

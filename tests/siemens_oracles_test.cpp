@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 #include "oracles/judgement.h"
 #include "oracles/siemens/siemens_allowance_rectangle.h"
 

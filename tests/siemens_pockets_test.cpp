@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 #include "reference/siemens/siemens_axis_allowance.h"
 #include "reference/siemens/siemens_cycles.h"

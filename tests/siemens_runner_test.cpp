@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 #include "reference/model/profile.h"
 #include "reference/siemens/siemens_runner.h"

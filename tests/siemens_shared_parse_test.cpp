@@ -1,5 +1,5 @@
 // A SINUMERIK program is read twice per judged case — by the reference engine and by the oracles'
-// reading (harness/siemens_reading.h) — and parsed once (issue 16's throughput): the Siemens runner
+// reading (harness/judge/siemens_reading.h) — and parsed once (issue 16's throughput): the Siemens runner
 // reads its texts through the parsers it is given (SiemensRunInput::parsers), and the harness's
 // (siemensRunInputFor) keep what they parsed. What they share must be the same parse, a text that
 // does not parse must fail every time, and a subprogram no cycle names must stay unparsed.
@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/program.h"
 #include "reference/profiles/default_profile.h"
 #include "reference/siemens/siemens_parser.h"

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/spec_case.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/program.h"
 #include "reference/siemens/siemens_parser.h"
 #include "reference/siemens/siemens_subprograms.h"

@@ -4,7 +4,7 @@
 // first the cycle starts at A = (x 20, z 2); with U+ allowance a start below x 20 is PS0322.
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "harness/spec_case.h"
+#include "harness/spec/spec_case.h"
 
 namespace cyclecert {
 namespace {

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <set>
 
-#include "harness/reference_plan.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
-#include "harness/spec_check.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/spec_check.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 
 namespace cyclecert {
 namespace {

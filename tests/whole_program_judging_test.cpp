@@ -4,8 +4,8 @@
 // whether or not the engine draws them, and a wrong pass of the cycle is still found.
 #include <gtest/gtest.h>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
 
 namespace cyclecert {
 namespace {

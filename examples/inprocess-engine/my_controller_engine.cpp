@@ -3,7 +3,7 @@
 #include <chrono>
 #include <exception>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 
 namespace my_controller {

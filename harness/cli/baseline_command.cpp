@@ -1,8 +1,8 @@
-// `cyclecert baseline`: an expectation file (harness/expectations.h) from a run's results.
+// `cyclecert baseline`: an expectation file (harness/results/expectations.h) from a run's results.
 #include <iostream>
 
 #include "harness/cli/cli_support.h"
-#include "harness/expectations.h"
+#include "harness/results/expectations.h"
 
 namespace cyclecert::cli {
 

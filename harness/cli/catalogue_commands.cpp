@@ -4,8 +4,8 @@
 #include <map>
 
 #include "harness/cli/cli_support.h"
-#include "harness/rule_catalogue.h"
-#include "harness/spec_case.h"
+#include "harness/spec/rule_catalogue.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/params.h"
 #include "reference/model/profile.h"
 

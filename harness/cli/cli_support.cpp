@@ -5,9 +5,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "harness/ci_shard.h"
-#include "harness/input_file.h"
-#include "harness/parallel_run.h"
+#include "harness/io/input_file.h"
+#include "harness/run/ci_shard.h"
+#include "harness/run/parallel_run.h"
 #include "reference/model/params.h"
 
 namespace cyclecert::cli {

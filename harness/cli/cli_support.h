@@ -44,7 +44,7 @@ double numberArg(const std::string& option, const std::string& text, double min,
 inline constexpr int kMaxJobs = 1024;
 int jobsArg(const std::string& text);
 
-// --shard K/N or --shard auto (harness/ci_shard.h) as (K, N); a bad value or no shard in the
+// --shard K/N or --shard auto (harness/run/ci_shard.h) as (K, N); a bad value or no shard in the
 // environment is a UsageError saying what is read and what would be accepted.
 std::pair<int, int> shardArg(const std::string& text);
 

@@ -1,37 +1,32 @@
 // `cyclecert diff`: two engines on one program or spec case — their outcomes, where they first
 // part (with the moves around it side by side), and an SVG of both toolpaths.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <optional>
-#include <regex>
-#include <set>
 #include <sstream>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
 
 #include "harness/cli/cli_support.h"
-#include "harness/engine_diff.h"
 #include "harness/engines/engine.h"
-#include "harness/failure_plot.h"
-#include "harness/metamorphic_run.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
-#include "harness/toolpath_compare.h"
-#include "reference/model/params.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/engine_diff.h"
+#include "harness/judge/metamorphic_run.h"
+#include "harness/judge/toolpath_compare.h"
+#include "harness/results/failure_plot.h"
+#include "harness/spec/program_case.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/profile.h"
-#include "reference/profiles/default_profile.h"
 #include "reports/svg/toolpath_svg.h"
 
 namespace cyclecert::cli {
 
 namespace {
 
-using nlohmann::json;
 using nlohmann::ordered_json;  // the --json output, in the order the help lists its fields
 
 const char* kDiffHelp = R"HELP(Usage: cyclecert diff --engine A --vs B PROGRAM.nc|CASE.json [options]
@@ -111,99 +106,11 @@ DiffArgs parseDiffArgs(const std::vector<std::string>& args) {
   return d;
 }
 
-bool isCaseFile(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".json";
-}
-
-// Sets parameter `name` in a case's "params" object, dropping any other key that names the same
-// parameter (number vs mnemonic), so the value given last is the one every engine applies.
-void setParam(json& params, const std::string& name, double value) {
-  const ParamSpec* spec = MachineParams::find(name);
-  for (auto it = params.begin(); it != params.end();) {
-    const ParamSpec* other = MachineParams::find(it.key());
-    if (spec && other && other->number == spec->number) it = params.erase(it);
-    else ++it;
-  }
-  params[name] = value;
-}
-
-// The rule IDs a bare program's case cites: its "(rules: …)" header comment (the corpus
-// convention), else the format rule of each cycle it calls. Metadata only — no engine acts on it —
-// but a valid case needs at least one.
-json rulesOfProgram(const std::string& text) {
-  static const std::regex header(R"(\(\s*rules\s*:\s*([^)]*)\))", std::regex::icase);
-  static const std::regex ruleId(R"(^[A-Z0-9_]+(\.[A-Z0-9_]+)*$)");
-  std::vector<std::string> rules;
-  std::set<std::string> seen;
-  auto add = [&](const std::string& id) {
-    if (std::regex_match(id, ruleId) && seen.insert(id).second) rules.push_back(id);
-  };
-  if (std::smatch m; std::regex_search(text, m, header)) {
-    std::istringstream list(std::regex_replace(m[1].str(), std::regex(","), " "));
-    for (std::string id; list >> id;) add(id);
-  }
-  if (rules.empty()) {
-    static const std::regex comment(R"(\([^)]*\))");
-    static const std::regex cycle(R"(G0*(7[0-3])(?![0-9.]))", std::regex::icase);
-    const std::string code = std::regex_replace(text, comment, " ");
-    for (auto it = std::sregex_iterator(code.begin(), code.end(), cycle); it != std::sregex_iterator(); ++it) {
-      const std::string g = (*it)[1].str();
-      add(g == "70" ? "G70.EX" : g == "71" ? "G71.FMT.ZX" : g == "72" ? "G72.FMT" : "G73.EX");
-    }
-  }
-  if (rules.empty()) add("G71.FMT.ZX");  // a program without a cycle: still one rule for a valid case
-  return rules;
-}
-
-// "<profile>/diff/<file stem>", within the schema's id pattern.
-std::string caseIdFor(const std::string& path, const std::string& profile) {
-  std::string name = std::filesystem::path(path).stem().string();
-  for (char& c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.' && c != '-') c = '_';
-  }
-  if (name.empty() || name[0] == '.' || name[0] == '-') name = "program" + name;
-  return profile + "/diff/" + name;
-}
-
-// A bare program as a spec case, because that is what every engine takes (a process engine receives
-// `raw`, so it must be a whole valid case). It has no hand-derived expectation, so it says only
-// {"oracles": "pass"} (the kind a shrunk fuzz case has: whoever judges it runs the oracles, nothing
-// is compared with a made-up toolpath). `diff` itself never judges the expectation: it only
-// compares the two engines.
-SpecCase caseForProgram(const std::string& path, const DiffArgs& a) {
-  const std::string text = readFile(path);
-  std::string profile = a.profile.empty() ? profileFromHeader(text) : a.profile;
-  profile = profileNameOrDefault(profile);
-  json params = json::object();
-  for (const auto& [name, value] : parsedParams(a.params)) setParam(params, name, value);
-  json expect = {{"oracles", "pass"}};
-  if (a.tolerance && *a.tolerance > 0) expect["tolerance"] = *a.tolerance;  // the schema wants it positive
-  const json c = {{"id", caseIdFor(path, profile)},
-                  {"title", path},
-                  {"rules", rulesOfProgram(text)},
-                  {"profile", profile},
-                  {"params", params},
-                  {"program", text},
-                  {"expect", expect},
-                  {"derivation",
-                   "not a spec case: " + path + " wrapped by `cyclecert diff` to compare two engines on it; "
-                   "nothing was derived by hand"}};
-  // Invalid UTF-8 (a comment in a legacy encoding) becomes U+FFFD, the same for both engines.
-  return parseSpecCase(c.dump(-1, ' ', false, json::error_handler_t::replace), path);
-}
-
-SpecCase caseFromFile(const std::string& path, const DiffArgs& a) {
-  SpecCase c = parseSpecCase(readFile(path), path);
-  if (a.profile.empty() && a.params.empty()) return c;
-  // Overrides go into the JSON and the case is read again, so that `raw` (what process engines
-  // receive) and the parsed case stay the same case.
-  json raw = c.raw;
-  if (!a.profile.empty()) raw["profile"] = a.profile;
-  if (!raw.contains("params")) raw["params"] = json::object();
-  for (const auto& [name, value] : parsedParams(a.params)) setParam(raw["params"], name, value);
-  return parseSpecCase(raw.dump(), path);
+SpecCase diffedCase(const DiffArgs& a) {
+  const auto params = parsedParams(a.params);
+  if (isSpecCaseFile(a.input)) return withCaseOverrides(parseSpecCase(readFile(a.input), a.input), a.profile, params);
+  return specCaseForProgram(a.input, readFile(a.input), "diff",
+                            {a.profile, params, a.tolerance, "`cyclecert diff` to compare two engines on it"});
 }
 
 // ---- reporting ------------------------------------------------------------------------------
@@ -224,8 +131,6 @@ std::string outcomeText(const EngineResult& r) {
   return "engine failure: " + r.detail;
 }
 
-bool comparable(const EngineResult& r) { return r.kind == EngineResult::Planned || r.kind == EngineResult::Alarmed; }
-
 // What the person reads when the engines agree.
 std::string agreementText(const EngineResult& a, const EngineResult& b, double tolerance) {
   std::ostringstream s;
@@ -243,7 +148,7 @@ std::string notComparableText(const EngineResult& a, const std::string& aName, c
                               const std::string& bName) {
   std::string who;
   for (const auto& [r, name] : {std::pair{&a, &aName}, std::pair{&b, &bName}}) {
-    if (comparable(*r)) continue;
+    if (hasOutcome(*r)) continue;
     if (!who.empty()) who += " and ";
     who += *name + (r->kind == EngineResult::NotApplicable ? " is not applicable" : " failed");
   }
@@ -295,7 +200,7 @@ ordered_json engineJson(const std::string& name, const EngineResult& r) {
 }
 
 std::string svgLabel(const std::string& name, const EngineResult& r) {
-  return comparable(r) ? name : name + " (" + kindName(r.kind) + ")";
+  return hasOutcome(r) ? name : name + " (" + kindName(r.kind) + ")";
 }
 
 // Engine B's toolpath over engine A's, on A's contours (B's when A recorded no cycle), with a ring
@@ -315,7 +220,7 @@ static int commandDiff(const std::vector<std::string>& args) {
   // Both engines first, so that a misspelt --vs is reported before anything runs.
   const auto engineA = makeEngine(a.engineA, a.engineOptions);
   const auto engineB = makeEngine(a.engineB, a.engineOptions);
-  const SpecCase c = isCaseFile(a.input) ? caseFromFile(a.input, a) : caseForProgram(a.input, a);
+  const SpecCase c = diffedCase(a);
   if (!findProfile(c.profile)) throw UnknownProfile(c.profile);
   const double tolerance = a.tolerance.value_or(c.tolerance);
 
@@ -326,7 +231,7 @@ static int commandDiff(const std::vector<std::string>& args) {
 
   const EngineResult resultA = engineA->run(c);
   const EngineResult resultB = engineB->run(c);
-  const bool canCompare = comparable(resultA) && comparable(resultB);
+  const bool canCompare = hasOutcome(resultA) && hasOutcome(resultB);
   const auto divergence = compareEngineResults(resultA, aName, resultB, bName, tolerance);
   const bool agree = canCompare && !divergence;
   std::vector<ContextRow> rows;
@@ -336,7 +241,7 @@ static int commandDiff(const std::vector<std::string>& args) {
   if (a.metamorphic) {
     for (const auto& [engine, result, name] :
          {std::tuple{engineA.get(), &resultA, &aName}, std::tuple{engineB.get(), &resultB, &bName}}) {
-      if (comparable(*result)) relations.emplace_back(*name, checkRelations(*engine, c, result->path, tolerance));
+      if (hasOutcome(*result)) relations.emplace_back(*name, checkRelations(*engine, c, result->path, tolerance));
     }
   }
   const bool relationsHold =

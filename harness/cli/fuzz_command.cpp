@@ -7,16 +7,16 @@
 #include <set>
 #include <tuple>
 
-#include "harness/campaign.h"
 #include "harness/cli/cli_support.h"
 #include "harness/engines/engine.h"
-#include "harness/expectations.h"
 #include "harness/fuzz/fuzz_run.h"
-#include "harness/parallel_run.h"
-#include "harness/results_file.h"
-#include "harness/rule_catalogue.h"
-#include "harness/run_lock.h"
-#include "harness/run_record.h"
+#include "harness/results/expectations.h"
+#include "harness/results/results_file.h"
+#include "harness/run/campaign.h"
+#include "harness/run/parallel_run.h"
+#include "harness/run/run_lock.h"
+#include "harness/run/run_record.h"
+#include "harness/spec/rule_catalogue.h"
 
 namespace cyclecert::cli {
 

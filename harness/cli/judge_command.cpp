@@ -2,9 +2,9 @@
 #include <iostream>
 
 #include "harness/cli/cli_support.h"
-#include "harness/input_file.h"
-#include "harness/judging.h"
-#include "harness/spec_case.h"
+#include "harness/io/input_file.h"
+#include "harness/judge/judging.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/toolpath_json.h"
 
 namespace cyclecert::cli {

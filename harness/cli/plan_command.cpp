@@ -5,9 +5,9 @@
 #include <optional>
 
 #include "harness/cli/cli_support.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
-#include "harness/spec_check.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/spec_check.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/toolpath_json.h"
 
 namespace cyclecert::cli {

@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "harness/cli/cli_support.h"
-#include "harness/report_files.h"
-#include "harness/rule_catalogue.h"
+#include "harness/results/report_files.h"
+#include "harness/spec/rule_catalogue.h"
 
 namespace cyclecert::cli {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/spec_case.h"
+#include "harness/spec/spec_case.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
@@ -24,6 +24,10 @@ struct EngineResult {
 };
 
 std::string kindName(EngineResult::Kind k);  // "planned", "alarm", "not-applicable", "engine-failure"
+
+// Whether the engine answered the case — a toolpath or an alarm — so that its result can be judged
+// and compared; not applicable and engine failures are results of their own.
+inline bool hasOutcome(const EngineResult& r) { return r.kind == EngineResult::Planned || r.kind == EngineResult::Alarmed; }
 
 class Engine {
  public:

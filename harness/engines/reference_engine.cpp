@@ -3,7 +3,7 @@
 
 #include "cyclecert_version.h"
 #include "harness/engines/engines.h"
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

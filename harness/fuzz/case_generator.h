@@ -47,7 +47,7 @@
 
 #include <rapidcheck.h>
 
-#include "harness/spec_case.h"
+#include "harness/spec/spec_case.h"
 #include "reference/profiles/default_profile.h"
 
 namespace cyclecert {

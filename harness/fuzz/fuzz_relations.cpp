@@ -7,7 +7,7 @@ namespace cyclecert {
 FuzzVerdict judgeFuzzResultWithRelations(EngineResult r, Engine& engine, Engine* vs, const SpecCase& c, double tolerance,
                                          MetamorphicTally* tally) {
   std::optional<Toolpath> source;
-  if (r.kind == EngineResult::Planned || r.kind == EngineResult::Alarmed) source = r.path;
+  if (hasOutcome(r)) source = r.path;
   FuzzVerdict v = judgeFuzzResult(std::move(r), engine, vs, c, tolerance);
   if (!source || v.verdict == "fail" || v.verdict == "engine-failure") return v;
   RelationsVerdict relations = checkRelations(engine, c, *source, tolerance);

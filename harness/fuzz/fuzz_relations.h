@@ -1,10 +1,10 @@
 #pragma once
 // `fuzz --metamorphic`: a generated case judged by the oracles (judgeFuzzResult) and then, when
-// nothing failed yet, by the metamorphic relations (harness/metamorphic_run.h) — the engine against
+// nothing failed yet, by the metamorphic relations (harness/judge/metamorphic_run.h) — the engine against
 // itself. A violation fails the case with kind "metamorphic:<relation>", which the shrinker keeps
 // like any other kind; a follow-up the engine fails on makes the case an engine failure.
 #include "harness/fuzz/fuzz_run.h"
-#include "harness/metamorphic_run.h"
+#include "harness/judge/metamorphic_run.h"
 
 namespace cyclecert {
 

@@ -8,14 +8,14 @@
 #include <set>
 #include <sstream>
 
-#include "harness/engine_diff.h"
-#include "harness/failure_plot.h"
 #include "harness/fuzz/fuzz_relations.h"
 #include "harness/fuzz/regression_case.h"
-#include "harness/judging.h"
-#include "harness/parallel_run.h"
-#include "harness/reproduce.h"
-#include "harness/spec_check.h"
+#include "harness/judge/engine_diff.h"
+#include "harness/judge/judging.h"
+#include "harness/judge/spec_check.h"
+#include "harness/results/failure_plot.h"
+#include "harness/run/parallel_run.h"
+#include "harness/run/reproduce.h"
 #include "reference/model/alarms.h"
 #include "reports/svg/plot_json.h"
 
@@ -171,6 +171,11 @@ FuzzFailure shrinkFailure(Engine& engine, Engine* vs, std::uint64_t caseSeed, co
 
 // One campaign: cases in batches (one engine call each) generated, planned and judged by the
 // workers, then recorded in case order — the first failure of each kind shrunk, printed and kept.
+// --time: the first chunk of cases an engine is given, to measure how long a case takes it; then
+// chunks planned in this share of the time left (the rest for judging them).
+constexpr std::size_t kFirstTimedChunk = 1;
+constexpr double kTimedChunkShare = 0.8;
+
 class FuzzCampaign {
  public:
   // One worker's engines: worker w uses workers[w].
@@ -229,7 +234,7 @@ class FuzzCampaign {
   // past the last case or the time budget.
   std::optional<JudgedBatch> judgeBatch(int worker, long b) {
     if (b >= positions_ / batchSize_ + (positions_ % batchSize_ != 0)) return std::nullopt;  // no overflow at LONG_MAX
-    if (options_.seconds && elapsed() >= *options_.seconds) return std::nullopt;
+    if (budgetSpent()) return std::nullopt;
     const Worker& w = workers_[static_cast<std::size_t>(worker)];
     JudgedBatch out;
     std::vector<std::uint64_t> seeds;
@@ -243,22 +248,58 @@ class FuzzCampaign {
       seeds.push_back(caseSeed);
       batch.push_back(fuzzSpecCase(generateFuzzCase(caseSeed, options_.formats, options_.cycles), caseSeedTag(caseSeed)));
     }
-    std::vector<EngineResult> planned = w.engine->runBatch(batch);
-    for (std::size_t k = 0; k < batch.size(); ++k) {
-      // The time budget holds within a batch too: cases planned but not judged in time are not
-      // recorded (a resumed run runs them).
-      if (options_.seconds && elapsed() >= *options_.seconds) {
-        out.cut = true;
-        break;
+    for (std::size_t k = 0; k < batch.size() && !out.cut;) {
+      const std::size_t n = chunkThatFits(worker, batch.size() - k);
+      std::vector<EngineResult> planned = planChunk(worker, batch, k, n);
+      for (std::size_t i = 0; i < n; ++i, ++k) {
+        // The time budget holds within a batch too: cases planned but not judged in time are not
+        // recorded (a resumed run runs them).
+        if (budgetSpent()) {
+          out.cut = true;
+          break;
+        }
+        MetamorphicTally tally;
+        FuzzVerdict v = judged(std::move(planned[i]), *w.engine, w.vs, batch[k], options_, &tally);
+        CaseResult r = resultOf(w, seeds[k], batch[k], v);
+        std::string line = resultLine(r);
+        line.pop_back();
+        out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v), std::move(r), std::move(line), std::move(tally)});
       }
-      MetamorphicTally tally;
-      FuzzVerdict v = judged(std::move(planned[k]), *w.engine, w.vs, batch[k], options_, &tally);
-      CaseResult r = resultOf(w, seeds[k], batch[k], v);
-      std::string line = resultLine(r);
-      line.pop_back();
-      out.cases.push_back({seeds[k], std::move(batch[k]), std::move(v), std::move(r), std::move(line), std::move(tally)});
     }
     return out;
+  }
+
+  bool budgetSpent() const { return options_.seconds && elapsed() >= *options_.seconds; }
+
+  // --time bounds a batch too. An engine that plans a batch in one go (LinuxCNC: one rs274 per
+  // batch) or case after case (a process engine) is given it in chunks that fit in the time left,
+  // by the seconds a case has taken this worker so far; the first chunk is small, to measure.
+  // Without --time, the whole batch.
+  std::size_t chunkThatFits(int worker, std::size_t rest) const {
+    if (!options_.seconds) return rest;
+    const double perCase = secondsPerCase_[static_cast<std::size_t>(worker)];
+    if (perCase <= 0) return std::min(rest, kFirstTimedChunk);
+    const double left = kTimedChunkShare * (*options_.seconds - elapsed());
+    return std::clamp(static_cast<std::size_t>(std::max(left, 0.0) / perCase), std::size_t{1}, rest);
+  }
+
+  // Cases k … k + n − 1 of the batch planned by the worker's engine (moved out for the call and
+  // back), and the seconds per case measured.
+  std::vector<EngineResult> planChunk(int worker, std::vector<SpecCase>& batch, std::size_t k, std::size_t n) {
+    Engine& engine = *workers_[static_cast<std::size_t>(worker)].engine;
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<EngineResult> planned;
+    if (k == 0 && n == batch.size()) {
+      planned = engine.runBatch(batch);
+    } else {
+      std::vector<SpecCase> chunk(std::make_move_iterator(batch.begin() + static_cast<std::ptrdiff_t>(k)),
+                                  std::make_move_iterator(batch.begin() + static_cast<std::ptrdiff_t>(k + n)));
+      planned = engine.runBatch(chunk);
+      std::move(chunk.begin(), chunk.end(), batch.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (n > 0) secondsPerCase_[static_cast<std::size_t>(worker)] = seconds / static_cast<double>(n);
+    return planned;
   }
 
   // The case's result as judged (a failure with the command that reproduces it).
@@ -343,7 +384,7 @@ class FuzzCampaign {
     std::optional<PlotComparison> theirs;
     if (w.vs) {
       const EngineResult other = w.vs->run(shrunk);
-      if (other.kind == EngineResult::Planned || other.kind == EngineResult::Alarmed) {
+      if (hasOutcome(other)) {
         const auto d = compareEngineResults(mine, w.engine->name(), other, w.vs->name(), options_.tolerance);
         theirs = PlotComparison{w.vs->name(), other.path, d ? d->move : std::nullopt};
       }
@@ -374,6 +415,8 @@ class FuzzCampaign {
   std::ostream& progress_;
   ResultsFile results_;  // read by the workers (done()), written by the one recording
   const long positions_, batchSize_;
+  // --time: the seconds a case took each worker's engine in its last chunk (each worker writes its own).
+  std::vector<double> secondsPerCase_ = std::vector<double>(workers_.size(), 0.0);
   FuzzSummary summary_;
   std::optional<ExpectationMatcher> matcher_;  // --expectations
   std::set<std::string> shrunkKinds_;  // each kind of failure is shrunk (and kept) once per run

@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "harness/engines/engine.h"
-#include "harness/expectations.h"
 #include "harness/fuzz/case_generator.h"
-#include "harness/metamorphic_run.h"
-#include "harness/results_file.h"
-#include "harness/worker_engines.h"
+#include "harness/judge/metamorphic_run.h"
+#include "harness/results/expectations.h"
+#include "harness/results/results_file.h"
+#include "harness/run/worker_engines.h"
 
 namespace cyclecert {
 
@@ -88,7 +88,7 @@ inline constexpr std::size_t kFuzzBatch = 64;
 
 // Runs the campaign; progress (cases/s, failures so far) goes to `progress` every few seconds,
 // and each failure as it is found, with its seed and the command that reproduces it.
-// With options.jobs workers, each with the engines makeEngines makes (harness/parallel_run.h): the
+// With options.jobs workers, each with the engines makeEngines makes (harness/run/parallel_run.h): the
 // results, their order in results.jsonl and the failures kept are those of one worker.
 FuzzSummary runFuzz(const EnginesMaker& makeEngines, const FuzzOptions& options, std::ostream& progress);
 // On one worker with these engines (options.jobs is not used).

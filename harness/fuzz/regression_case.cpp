@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "harness/spec/program_case.h"
+
 namespace cyclecert {
 
 namespace {
@@ -29,7 +31,7 @@ std::string writeRegressionCase(const std::string& dir, const FuzzFailure& failu
   j["title"] = "shrunk fuzz failure (" + failure.kind + ") of " + engineName + ": " + describeFuzzCase(failure.shrunk);
   j["rules"] = rules;
   // A case with one invalid parameter keeps the alarm it must raise; the others, every oracle.
-  if (!c.expectedAlarm) j["expect"] = {{"oracles", "pass"}};
+  if (!c.expectedAlarm) j["expect"] = everyOracleExpectation();
   // Agreement is a live comparison with a built-in engine; another engine's output is not kept.
   if (failure.kind == "diverges" && vsName == "reference" && !c.expectedAlarm) j["expect"]["agrees_with"] = vsName;
   j["derivation"] =

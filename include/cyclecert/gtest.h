@@ -28,10 +28,10 @@
 #include <sstream>
 #include <string>
 
-#include "harness/check_run.h"
 #include "harness/engines/engine.h"
 #include "harness/fuzz/fuzz_run.h"
-#include "harness/spec_case.h"
+#include "harness/run/check_run.h"
+#include "harness/spec/spec_case.h"
 
 namespace cyclecert::gtest {
 

@@ -10,6 +10,7 @@
 #include "oracles/metamorphic/word_edit.h"
 #include "reference/gcode/writer.h"
 #include "reference/interpreter/g_codes.h"
+#include "reference/model/alarms.h"
 
 namespace cyclecert {
 
@@ -319,6 +320,13 @@ Relation gCodeSystemRelation(GCodeSystem system) {
   return r;
 }
 
+// The one-block relations move a case into another dialect; their expected path is the FANUC 0i-F
+// reading of the source (README: GSK's direct return, DTP = 1, and 0i-C's pocket order differ), or
+// the source already in that dialect.
+bool writtenFromFanucOrIn(const SourceRun& run, std::string_view profile) {
+  return run.profile == "fanuc-0i-f" || run.profile == profile;
+}
+
 }  // namespace
 
 Relation haasOneBlockRelation() {
@@ -333,6 +341,7 @@ Relation haasOneBlockRelation() {
       "Expected: the same toolpath. Handles the vocabulary of lathe_program.h (no G41/G42, so Haas's "
       "compensation inside P…Q is not exercised).";
   r.rules = {"HAAS.G71.FMT", "HAAS.G71.D", "HAAS.G71.R1", "HAAS.G71.SETTINGS"};
+  r.outside = [](const SourceRun& run) { return !writtenFromFanucOrIn(run, "haas"); };
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) {
     return toOneBlock(p, params, OneBlockDialect::Haas, whyNot);
   };
@@ -377,6 +386,10 @@ Relation huazhongOneBlockRelation() {
       "which seed 003 does not state) fails the relation by design. Handles the vocabulary of "
       "lathe_program.h.";
   r.rules = {"HNC.G71.FMT", "HNC.G71.FST", "HNC.G71.RETURN", "G70.EX"};
+  // PS0322 (G71.LIMIT.HEIGHT) is not stated by seed 003 for the Huazhong G71.
+  r.outside = [](const SourceRun& run) {
+    return !writtenFromFanucOrIn(run, "hnc") || run.alarm == alarm::kOverStartPoint;
+  };
   r.transform = toHuazhong;
   r.compare = compareToolpaths;
   return r;

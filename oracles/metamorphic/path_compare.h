@@ -1,6 +1,6 @@
 #pragma once
 // Comparing a toolpath with what a metamorphic relation expects of it, within a tolerance.
-// (harness/toolpath_compare.h compares move lists the same way for the spec cases; the oracles
+// (harness/judge/toolpath_compare.h compares move lists the same way for the spec cases; the oracles
 // cannot depend on the harness, so this one lives here.)
 #include <optional>
 #include <string>

@@ -13,6 +13,7 @@
 #include "oracles/metamorphic/word_edit.h"
 #include "reference/gcode/writer.h"
 #include "reference/interpreter/plane.h"
+#include "reference/model/alarms.h"
 #include "reference/model/params.h"
 
 namespace cyclecert {
@@ -201,6 +202,9 @@ Relation scale(double k) {
       "lathe_program.h."
       " Also G73 (Δi, Δk, 5135, 5136 scaled; d not), G74.1 programs and SINUMERIK texts (transformSiemens); README \"Families\".";
   r.rules = {"G71.OP", "G71.DD.MODAL", "G71.E.MODAL", "G72.DD", "G71.ALLOW.UNITS", "G72.ALLOW", "G71.FST"};
+  // The relation scales the program, not the tool: a compensated path (a SINUMERIK finish with a
+  // nose radius) does not scale with it.
+  r.outside = [](const SourceRun& run) { return run.noseRadius; };
   r.transform = [k](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     if (isGrooveProgram(p)) return scaleGroove(k, p, params, whyNot);
     const auto lathe = readWithG73(p, params, whyNot);
@@ -545,6 +549,8 @@ Relation transpose() {
       "vocabulary of lathe_program.h. G73 stays G73: its reliefs exchange axes, Δk (W) → Δi U, Δi (U, a "
       "radius) → Δk W, with parameters 5135 ⇄ 5136 (README \"Families\").";
   r.rules = {"G72.FMT", "G72.POINTS", "G72.DD", "G72.ALLOW", "G71.OP", "G72.STEP3", "G72.RETRACT", "G72.TYPE.SELECT"};
+  // G71.LIMIT.HEIGHT (PS0322) has no G72 counterpart: such a source fails the relation by design.
+  r.outside = [](const SourceRun& run) { return run.alarm == alarm::kOverStartPoint; };
   r.transform = [](const Program& p, const ParamSettings& params, std::string& whyNot) -> std::optional<FollowUp> {
     const auto lathe = readWithG73(p, params, whyNot);
     if (!lathe) return std::nullopt;
@@ -623,6 +629,11 @@ const Relation* findRelation(std::string_view id) {
     if (r.id == id) return &r;
   }
   return nullptr;
+}
+
+bool relationJudges(const Relation& r, const SourceRun& run) {
+  if (run.alarm == alarm::kOutOfRange) return false;
+  return !r.outside || !r.outside(run);
 }
 
 std::optional<std::string> checkRelation(const Relation& relation, const FollowUp& followUp, const Toolpath& source,

@@ -39,6 +39,13 @@ struct FollowUp {
 using PathComparison =
     std::function<std::optional<std::string>(const Toolpath& expected, const Toolpath& actual, double tol)>;
 
+// What the harness knows of a source's run that a relation cannot read from the program.
+struct SourceRun {
+  std::string profile;      // the profile the source ran under
+  bool noseRadius = false;  // its tool has a nose radius: a compensated path
+  std::string alarm;        // the alarm code the engine raised on it; empty when it planned
+};
+
 struct Relation {
   std::string id;           // "mirror-z", …
   std::string description;  // what it does, the words it handles and what it refuses
@@ -54,7 +61,15 @@ struct Relation {
       transformSiemens = nullptr;
   // compareToolpaths, or compareGeometry for split-segment.
   PathComparison compare;
+  // The sources the relation cannot judge although it transforms their program — a limit its
+  // description states —, from how they ran; empty: none beyond relationJudges' common one.
+  std::function<bool(const SourceRun&)> outside = nullptr;
 };
+
+// Whether the relation judges a follow-up of a source that ran so: never when the source alarmed
+// PS0003 (a word out of its range: every relation rewrites words — ÷ 25.4, into a parameter, into
+// another format — and the alarm goes with the word), nor where the relation's `outside` says so.
+bool relationJudges(const Relation& r, const SourceRun& run);
 
 // Every relation, in a stable order: mirror-z, mirror-x, translate-z, translate-x, scale-k,
 // split-segment, abs-inc, r-ik, plane-g17, plane-g19, metric-inch, param-default, transpose,

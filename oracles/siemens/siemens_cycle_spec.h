@@ -1,7 +1,7 @@
 #pragma once
 // What a SINUMERIK stock-removal cycle call asks (LCYC95 on the 802S/C, CYCLE95 on the 802D), as
 // the oracles read it: the call's position, contour and parameters — taken from the Siemens front
-// end (the harness runs it with recording planners, harness/siemens_reading.h), never from a
+// end (the harness runs it with recording planners, harness/judge/siemens_reading.h), never from a
 // planner's moves — and what the rules derive from them, in the stock-removal frame: the roughing
 // profile, the computed start point, the equal infeed levels, CYCLE95's undercuts, the finishing path.
 //

@@ -46,6 +46,7 @@ std::string renderReportHtml(const nlohmann::json& report, const HtmlReportOptio
   std::string body = formatWarning(report);
   body += html::certificationSection(report, index);
   body += html::engineSummarySection(report, index);
+  body += html::metamorphicSection(report);
   body += html::matrixSection(report, index);
   body += html::failuresSection(report, index, options.maxPlotsPerEngine);
   body += footer(report);

@@ -15,6 +15,8 @@ namespace cyclecert::html {
 std::string certificationSection(const nlohmann::json& report, const ReportIndex& index);
 // Per engine: case verdict counts, fuzz campaign counts and seeds, rule verdict counts.
 std::string engineSummarySection(const nlohmann::json& report, const ReportIndex& index);
+// The metamorphic relations' counts of a run with --metamorphic; empty without them.
+std::string metamorphicSection(const nlohmann::json& report);
 // Every rule × every engine, coloured by verdict, with links to the failures behind each cell.
 std::string matrixSection(const nlohmann::json& report, const ReportIndex& index);
 // Each failed or engine-failed case: findings, plot (at most maxPlotsPerEngine per engine),

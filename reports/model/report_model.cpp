@@ -69,7 +69,7 @@ json reportFinding(const json& finding, std::size_t i) {
 
 constexpr const char* kExpectationStatuses[] = {"expected-failure", "new-failure", "unexpected-pass"};
 
-// What a run's expectation file made of the case (harness/expectations.h), as the report keeps it.
+// What a run's expectation file made of the case (harness/results/expectations.h), as the report keeps it.
 json reportExpectation(const json& value) {
   if (!value.is_object()) invalid("expectation", "an object {\"status\", \"reason\"?, \"source\"?}");
   const std::string status = value.contains("status") && value["status"].is_string() ? value["status"].get<std::string>() : "";

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "oracles/cycle_spec.h"
 #include "reference/gcode/lexer.h"
 #include "reference/gcode/parser.h"

@@ -1,8 +1,8 @@
 // libFuzzer target: a results file (OUT/results.jsonl) as `--resume`, `merge` and `report` read
-// it: readResultLines (harness/results_file.h) keeps the complete result lines, and the report is
+// it: readResultLines (harness/results/results_file.h) keeps the complete result lines, and the report is
 // built from every line as writeReportFiles does (ReportBuilder, report.json, junit.xml, the HTML
 // page with its inline plots). A line that is not a result is skipped (std::exception caught, as
-// harness/report_files.cpp does); nothing may escape the report's building and rendering.
+// harness/results/report_files.cpp does); nothing may escape the report's building and rendering.
 #include <unistd.h>
 
 #include <cstddef>
@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "harness/results_file.h"
+#include "harness/results/results_file.h"
 #include "reports/html/report_html.h"
 #include "reports/junit/junit_xml.h"
 #include "reports/model/report_model.h"

@@ -5,8 +5,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "harness/reference_plan.h"
-#include "harness/siemens_reading.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/siemens_reading.h"
 #include "reference/model/alarms.h"
 #include "reference/siemens/siemens_parser.h"
 #include "tests/fuzz/fuzz_input.h"

@@ -1,13 +1,13 @@
-// libFuzzer target: the spec-case loader (harness/spec_case.h) on a JSON text, then the case as a
+// libFuzzer target: the spec-case loader (harness/spec/spec_case.h) on a JSON text, then the case as a
 // plan request and a judge request (what `check` makes of it before running an engine). Expected
 // refusals: SpecError, which names the file and the field, and the std::runtime_error parseSpecCase
-// throws for a text that is not JSON (file:line:column and what was expected; harness/spec_case.cpp).
+// throws for a text that is not JSON (file:line:column and what was expected; harness/spec/spec_case.cpp).
 #include <cstddef>
 #include <cstdint>
 
-#include "harness/judging.h"
-#include "harness/reference_plan.h"
-#include "harness/spec_case.h"
+#include "harness/engines/reference_plan.h"
+#include "harness/judge/judging.h"
+#include "harness/spec/spec_case.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

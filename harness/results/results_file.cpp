@@ -1,0 +1,128 @@
+#include "harness/results/results_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "harness/judge/judging.h"
+
+namespace cyclecert {
+
+std::string resultLine(const CaseResult& r) {
+  nlohmann::json j{{"engine", r.engine},     {"case", r.caseId},   {"file", r.file},
+                   {"rules", r.rules},       {"verdict", r.verdict}, {"detail", r.detail},
+                   {"findings", findingsJson(r.findings)}, {"seconds", r.seconds}, {"seed", nullptr}};
+  if (r.seed) j["seed"] = *r.seed;
+  if (!r.program.empty()) j["program"] = r.program;
+  if (!r.vs.empty()) j["vs"] = r.vs;
+  if (r.plot) j["plot"] = *r.plot;
+  if (!r.reproduce.empty()) j["reproduce"] = r.reproduce;
+  if (r.expectation) {
+    j["expectation"] = {{"status", r.expectation->status}};
+    if (!r.expectation->reason.empty()) j["expectation"]["reason"] = r.expectation->reason;
+    if (!r.expectation->source.empty()) j["expectation"]["source"] = r.expectation->source;
+  }
+  // An engine's reply may hold anything (a process engine's message); the line must stay JSON.
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+ResultLines readResultLines(const std::string& file) {
+  ResultLines out;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    try {
+      const auto j = nlohmann::json::parse(line);
+      out.lines.push_back({line, {j.at("engine").get<std::string>(), j.at("case").get<std::string>()}});
+    } catch (const std::exception&) {  // not JSON, or not a result
+      ++out.skipped;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+std::string safeText(std::size_t safe) {
+  return safe == 1 ? "1 result is safe" : std::to_string(safe) + " results are safe";
+}
+
+// All of `bytes` to `fd`, or the errno that stopped it.
+int writeAll(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+int openForAppend(const std::string& path, int extraFlags) {
+  // O_CLOEXEC: an engine's process must not inherit the file.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | extraFlags, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  return fd;
+}
+
+// The complete lines kept by a resumed run, written to a new file that then replaces the old one:
+// a failure leaves the old file as it was.
+void rewriteKept(const std::string& path, const std::vector<ResultLines::Line>& kept) {
+  const std::string partial = path + ".partial";
+  const int fd = openForAppend(partial, O_TRUNC);
+  std::string text;
+  for (const ResultLines::Line& line : kept) text += line.text + "\n";
+  const int error = writeAll(fd, text);
+  ::close(fd);
+  if (error != 0) {
+    std::error_code ignored;
+    std::filesystem::remove(partial, ignored);
+    throw ResultsWriteError("cannot write '" + partial + "': " + std::strerror(error) + "; nothing was run: " +
+                                safeText(kept.size()) + " in '" + path + "', unchanged",
+                            kept.size());
+  }
+  std::filesystem::rename(partial, path);
+}
+
+}  // namespace
+
+ResultsFile::ResultsFile(const std::string& outDir, bool resume) : path_(outDir + "/results.jsonl") {
+  std::filesystem::create_directories(outDir);
+  const std::filesystem::file_status status = std::filesystem::status(path_);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw std::runtime_error("cannot write '" + path_ + "': it is not a regular file; remove it or give another --out");
+  }
+  if (resume) {
+    const std::vector<ResultLines::Line> kept = readResultLines(path_).lines;
+    for (const ResultLines::Line& line : kept) done_.insert(line.key);
+    rewriteKept(path_, kept);
+    safe_ = kept.size();
+  }
+  fd_ = openForAppend(path_, resume ? 0 : O_TRUNC);
+}
+
+ResultsFile::~ResultsFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void ResultsFile::append(const CaseResult& r) { write(resultLine(r)); }
+
+void ResultsFile::appendLine(const std::string& jsonLine) { write(jsonLine + "\n"); }
+
+void ResultsFile::write(const std::string& bytes) {
+  if (const int error = writeAll(fd_, bytes)) {
+    throw ResultsWriteError("cannot write '" + path_ + "': " + std::strerror(error) + "; stopped: " +
+                                safeText(safe_) + " in it (a last line cut short is skipped by --resume, " +
+                                "merge and report)",
+                            safe_);
+  }
+  ++safe_;
+}
+
+}  // namespace cyclecert
