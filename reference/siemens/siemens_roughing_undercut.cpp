@@ -130,12 +130,17 @@ std::optional<Point> descentStartOn(const Segment& s) {
 
 namespace {
 
-// CYCLE95.UNDERCUT (interpretation): a descent whose rim stands on the contour's front (the first
-// point's z: the contour begins there, perhaps with a wall) is no undercut — nothing of the profile
-// stands before it, so the main passes reach it from the start side along their levels, as they
-// reach a shoulder.
-bool fallsFromTheContoursStart(const std::vector<Segment>& profile, Point rim) {
-  return rim.z >= profile.front().from.z - kGeomEps;
+// CYCLE95.UNDERCUT (interpretation): a descent on the contour's front is no undercut — from its first
+// point, or down a wall at the first point's z (the part's face: stock on both sides) —, nothing of
+// the profile stands before it, so the main passes reach it from the start side along their levels,
+// as they reach a shoulder. A descent leaving the front from the top of a wall the contour begins
+// with, rising at its first point's z, is one: the wall stands before the stock behind its top, which
+// the main passes, meeting the wall, do not reach (issue 16, fuzz seed 14762804858427687941).
+// `descent` is the element falling from `rim`.
+bool fallsFromTheContoursFront(const std::vector<Segment>& profile, Point rim, const Segment& descent) {
+  const Point first = profile.front().from;
+  if (distance(rim, first) <= kGeomEps) return true;
+  return rim.z >= first.z - kGeomEps && descent.to.z >= first.z - kGeomEps;
 }
 
 }  // namespace
@@ -158,7 +163,7 @@ std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const s
       ++i;
       continue;
     }
-    if (walk.undercut.bottom() < top - kGeomEps && !fallsFromTheContoursStart(profile, *rim)) {
+    if (walk.undercut.bottom() < top - kGeomEps && !fallsFromTheContoursFront(profile, *rim, s)) {
       found.push_back(std::move(walk.undercut));
     }
     if (walk.nextSegment >= profile.size()) break;
