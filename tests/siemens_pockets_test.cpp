@@ -421,6 +421,58 @@ TEST(SiemensFrontPockets, ALevelRunsThroughASpikeOfNoWidthAtTheFront) {
   }
 }
 
+// A spike of no width at the front, and a pocket behind a lower spike further on: (0, 4) → (0, 8) →
+// (0, 5) → (−3, 5) → (−3, 7) → back down to (−3, 5) → (−6, 5) → (−6, 8) → (−8, 8). The wall falling
+// down the face from the first spike's top is no undercut, and only that wall; the descent at −3
+// from (−3, 7) is a pocket (−3 … −6, down to 5) the main passes do not reach. Top 8, bottom 4, MID
+// 2.5: levels 6, 4; start (1, 9). The face stands up to x 5 (where the profile leaves z 0).
+//  pass 1 (6): through the first spike to the second at −3, up it to its top 7, where the profile
+//    turns down; retract (−2, 8); back (1, 8).
+//  pass 2 (4, below the face's top): to the face (0, 4), up to (0, 5), along to (−3, 5), up to 6;
+//    retract (−2, 7).
+//  The pocket: top 8 (the lowest level above its rim 7: the top), bottom 5: steps of 1.5, 6.5 and 5,
+//  at FF2. G0 up to the start's height (−2, 9).
+//  pass 3 (6.5): G0 to (−3, 9), G1 down the wall to (−3, 6.5), across to the rising side (−6, 6.5), up
+//    to the previous level 8; retract (−5, 9).
+//  pass 4 (5, the lowest): G0 to (−3, 9), G1 down to (−3, 5), along the bottom to (−6, 5), up to 6.5;
+//    retract (−5, 7.5).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: the walk from the first spike's descent ran on to where the profile is back at the top 8,
+// at −6, and took the second pocket with it as no undercut: its stock stayed, 'complete' in the fuzz,
+// seed 6552314345380442963.)
+TEST(SiemensFrontPockets, APocketBehindASpikeAfterTheFrontIsAnUndercut) {
+  const SiemensContour c =
+      polyline("Q", {{0, 4}, {0, 8}, {0, 5}, {-3, 5}, {-3, 7}, {-3, 5}, {-6, 5}, {-6, 8}, {-8, 8}});
+  const auto out = roughWithCycle95(c, 2.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 6}, "pass", 1},
+                             {G1, {-3, 6}, "pass", 1},
+                             {G1, {-3, 7}, "pass", 1},
+                             {G0, {-2, 8}, "pass", 1},
+                             {G0, {1, 8}, "pass", 1},
+                             {G0, {1, 4}, "pass", 2},
+                             {G1, {0, 4}, "pass", 2},
+                             {G1, {0, 5}, "pass", 2},
+                             {G1, {-3, 5}, "pass", 2},
+                             {G1, {-3, 6}, "pass", 2},
+                             {G0, {-2, 7}, "pass", 2},
+                             {G0, {-2, 9}, "pass", 3},
+                             {G0, {-3, 9}, "pass", 3},
+                             {G1, {-3, 6.5}, "pass", 3},
+                             {G1, {-6, 6.5}, "pass", 3},
+                             {G1, {-6, 8}, "pass", 3},
+                             {G0, {-5, 9}, "pass", 3},
+                             {G0, {-3, 9}, "pass", 4},
+                             {G1, {-3, 5}, "pass", 4},
+                             {G1, {-6, 5}, "pass", 4},
+                             {G1, {-6, 6.5}, "pass", 4},
+                             {G0, {-5, 7.5}, "pass", 4},
+                             {G0, {-5, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+}
+
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {
   std::vector<Point> points{path.front().from};
   for (const Segment& s : path) points.push_back(s.to);

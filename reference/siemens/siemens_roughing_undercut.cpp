@@ -130,17 +130,24 @@ std::optional<Point> descentStartOn(const Segment& s) {
 
 namespace {
 
-// CYCLE95.UNDERCUT (interpretation): a descent on the contour's front is no undercut — from its first
-// point, or down a wall at the first point's z (the part's face: stock on both sides) —, nothing of
-// the profile stands before it, so the main passes reach it from the start side along their levels,
-// as they reach a shoulder. A descent leaving the front from the top of a wall the contour begins
-// with, rising at its first point's z, is one: the wall stands before the stock behind its top, which
-// the main passes, meeting the wall, do not reach (issue 16, fuzz seed 14762804858427687941).
-// `descent` is the element falling from `rim`.
-bool fallsFromTheContoursFront(const std::vector<Segment>& profile, Point rim, const Segment& descent) {
-  const Point first = profile.front().from;
-  if (distance(rim, first) <= kGeomEps) return true;
-  return rim.z >= first.z - kGeomEps && descent.to.z >= first.z - kGeomEps;
+// CYCLE95.UNDERCUT (interpretation): a descent from the contour's first point is no undercut —
+// nothing of the profile stands before it, so the main passes reach it from the start side along
+// their levels, as they reach a shoulder, and clean up through the front stretch's own descents
+// (frontStretchEnd in siemens_roughing_steps.cpp).
+bool fallsFromTheContoursStart(const std::vector<Segment>& profile, Point rim) {
+  return distance(rim, profile.front().from) <= kGeomEps;
+}
+
+// Nor is a descent down a wall at the first point's z after the walls rising there (a spike of no
+// width at the front: the part's face, stock on both sides, which the levels run through). It is
+// only that wall: a pocket behind a later rim is one (issue 16, fuzz seed 6552314345380442963: the
+// pocket behind a spike in the middle was taken into the front's walk and never roughed). A descent
+// leaving the front from the top of the rising walls is an undercut: the walls stand before the
+// stock behind their top, which the main passes, meeting them, do not reach (fuzz seed
+// 14762804858427687941). `descent` is the element falling from `rim`.
+bool fallsDownTheFace(const std::vector<Segment>& profile, Point rim, const Segment& descent) {
+  const double frontZ = profile.front().from.z;
+  return rim.z >= frontZ - kGeomEps && descent.to.z >= frontZ - kGeomEps;
 }
 
 }  // namespace
@@ -157,13 +164,17 @@ std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const s
       ++i;
       continue;
     }
+    if (fallsDownTheFace(profile, *rim, s) && !fallsFromTheContoursStart(profile, *rim)) {
+      ++i;
+      continue;
+    }
     const double top = lowestLevelAbove(levels, rim->x);
     PocketWalk walk = walkPocket(profile, i, *rim, top);
     if (walk.nextSegment == i && distance(walk.end, *rim) <= kGeomEps) {
       ++i;
       continue;
     }
-    if (walk.undercut.bottom() < top - kGeomEps && !fallsFromTheContoursFront(profile, *rim, s)) {
+    if (walk.undercut.bottom() < top - kGeomEps && !fallsFromTheContoursStart(profile, *rim)) {
       found.push_back(std::move(walk.undercut));
     }
     if (walk.nextSegment >= profile.size()) break;
