@@ -566,6 +566,25 @@ TEST(SiemensOracles, ADescentFromTheTopOfARisingFrontWallIsAnUndercut) {
   EXPECT_FALSE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
 }
 
+// A pocket behind a spike after the front (fuzz seed 6552314345380442963): L1 rises at z 0 from x 1.4
+// to 1.5 and falls back to 1 (a spike of no width at the front), runs to −1, rises to 1.5 and falls
+// back to 1 (a second spike), runs to −2, rises to 1.5 and on to (−2.1, 1.6). The descent down the
+// face is only that wall; the one behind the second spike is a pocket the reference roughs at FF2
+// 0.05 (SiemensFrontPockets.APocketBehindASpikeAfterTheFrontIsAnUndercut): siemens-feeds takes its
+// feeds for the pocket's and 'complete' finds no stock left. Before, the oracle's walk from the front
+// descent ran on to the profile's top and took the pocket with it (FF1 asked there).
+TEST(SiemensOracles, APocketBehindASpikeAfterTheFrontIsThePockets) {
+  const std::string program = "T1 D1\nG0 X7.44 Z2.12\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
+  const std::string contour =
+      "G1X2.8Z0\nG1X3Z0\nG1X2Z0\nG1X2Z-1\nG1X3Z-1\nG1X2Z-1\nG1X2Z-2\nG1X3Z-2\nG1X3.2Z-2.1\nRET\n";
+  PlanRequest request{program, "spikes.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  const auto findings = judged(program, "sinumerik-802d", path, contour);
+  EXPECT_TRUE(of(findings, "siemens-feeds").empty());
+  EXPECT_TRUE(of(findings, "complete").empty());
+}
+
 // A pocket's pass descends from its rim along a rounding of the allowance that falls less than the
 // tolerance (found by `fuzz --cycles siemens`, seed 15755400384260043841): L1's last element falls
 // 0.1 (radius) from (−2.08, 9.34) after a flat, FAL 0.11 rounds the convex corner, and the pocket's

@@ -102,6 +102,14 @@ std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, co
       ++k;
       continue;
     }
+    // A wall falling down the face after walls rising at the first point's z is no undercut and
+    // only that wall (stock on both sides): a pocket behind a later rim is one (interpretation).
+    const double frontZ = v.front().at.z;
+    const bool fromTheStart = distance(v[k].at, v.front().at) <= kGeomEps;
+    if (!fromTheStart && v[k].at.z >= frontZ - kGeomEps && v[k + 1].at.z >= frontZ - kGeomEps) {
+      ++k;
+      continue;
+    }
     SiemensUndercut u;
     u.rimZ = v[k].at.z;
     u.top = levels.levelAbove(v[k].at.x, kGeomEps);
@@ -109,14 +117,11 @@ std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, co
     std::size_t m = k + 1;
     while (m < v.size() && v[m].at.x < u.top - kGeomEps) u.bottom = std::min(u.bottom, v[m++].at.x);
     u.endZ = m < v.size() ? zWhereRisingTo(profile, v, m, u.top) : v.back().at.z;
-    // A descent on the contour's front (from its first point, or down a wall at its z) is no
-    // undercut: nothing stands before it, and the main passes reach it along their levels from the
-    // start side (interpretation). One leaving the front from the top of a wall the contour begins
-    // with, rising at the first point's z, is: the wall stands before it.
-    const double frontZ = v.front().at.z;
-    const bool onTheFront = distance(v[k].at, v.front().at) <= kGeomEps ||
-                            (v[k].at.z >= frontZ - kGeomEps && v[k + 1].at.z >= frontZ - kGeomEps);
-    if (!onTheFront) out.push_back(u);
+    // A descent from the contour's first point is no undercut: nothing stands before it, and the
+    // main passes reach it along their levels from the start side (interpretation). One leaving the
+    // front from the top of a wall the contour begins with, rising at the first point's z, is: the
+    // wall stands before it.
+    if (!fromTheStart) out.push_back(u);
     k = m;
   }
   return out;
