@@ -473,6 +473,53 @@ TEST(SiemensFrontPockets, APocketBehindASpikeAfterTheFrontIsAnUndercut) {
                          });
 }
 
+// A pocket open to the profile's end holding a bump: (0, 8) → (−2, 8) → down to (−4, 4) → up to (−5, 6)
+// → down to (−10, 3), the profile's lowest point at its end (gentler than 45°). The first point is the
+// top, so the face stands up to 8. Top 8, bottom 3, MID 3: levels 5.5, 3; start (1, 9).
+//  pass 1 (5.5): to the face (0, 5.5); retract (1, 6.5).   pass 2 (3): to (0, 3); retract (1, 4).
+//  The pocket: rim (−2, 8), no rising side (its lowest point is the end), top 8: steps of 2.5, 5.5 and
+//  3, at FF2. G0 up to the start's height (1, 9).
+//  pass 3 (5.5): G0 to (−2, 9), G1 down to the rim (−2, 8), down the falling side to (−3.25, 5.5) (x =
+//    8 + 2(z + 2)); across to where the level meets the bump, (−4.75, 5.5) (x = 4 − 2(z + 4)); along
+//    the profile through its descents: up to (−5, 6), down to the end (−10, 3); retract (−9, 4).
+//  pass 4 (3, the lowest): back along z at 4 would run through the bump (its top 6 stands between):
+//    G0 up to (−9, 9) first, then to (−3.25, 9); G1 down to (−3.25, 5.5), along the profile: (−4, 4),
+//    (−5, 6), (−10, 3); retract (−9, 4).
+//  Return, X first: (−9, 9), (1, 9).
+// (Before: pass 3 ran along its level to the end's z straight through the bump — the rising side was
+// looked for only in pockets that rise back — and the G0 between pocket passes ran along z at the
+// retract height through it: no-gouge, fuzz seed 14727398570297873640.)
+TEST(SiemensPockets, APocketOpenToTheEndGoesOverTheBumpItHolds) {
+  const SiemensContour c = polyline("B", {{0, 8}, {-2, 8}, {-4, 4}, {-5, 6}, {-10, 3}});
+  const auto out = roughWithCycle95(c, 3);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 5.5}, "pass", 1},
+                             {G1, {0, 5.5}, "pass", 1},
+                             {G0, {1, 6.5}, "pass", 1},
+                             {G0, {1, 3}, "pass", 2},
+                             {G1, {0, 3}, "pass", 2},
+                             {G0, {1, 4}, "pass", 2},
+                             {G0, {1, 9}, "pass", 3},
+                             {G0, {-2, 9}, "pass", 3},
+                             {G1, {-2, 8}, "pass", 3},
+                             {G1, {-3.25, 5.5}, "pass", 3},
+                             {G1, {-4.75, 5.5}, "pass", 3},
+                             {G1, {-5, 6}, "pass", 3},
+                             {G1, {-10, 3}, "pass", 3},
+                             {G0, {-9, 4}, "pass", 3},
+                             {G0, {-9, 9}, "pass", 4},
+                             {G0, {-3.25, 9}, "pass", 4},
+                             {G1, {-3.25, 5.5}, "pass", 4},
+                             {G1, {-4, 4}, "pass", 4},
+                             {G1, {-5, 6}, "pass", 4},
+                             {G1, {-10, 3}, "pass", 4},
+                             {G0, {-9, 4}, "pass", 4},
+                             {G0, {-9, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+}
+
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {
   std::vector<Point> points{path.front().from};
   for (const Segment& s : path) points.push_back(s.to);

@@ -376,10 +376,10 @@ class StockRemovalPlanner {
       // A level at or above the rim (the pocket's top stands above it) crosses over from the rim.
       const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
       const double inZ = in ? in->at.z : level >= rim.x - kGeomEps ? rim.z : lowPoint.z;
-      emit(MoveKind::Rapid, {inZ, current().x}, 0, MovePhase::Pass, k, rules);
+      rapidAlongTheCutAxis(inZ, k, rules);
       emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     } else {
-      emit(MoveKind::Rapid, {side.front().from.z, current().x}, 0, MovePhase::Pass, k, rules);
+      rapidAlongTheCutAxis(side.front().from.z, k, rules);
       emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
     }
@@ -392,7 +392,8 @@ class StockRemovalPlanner {
     constexpr double kBeyond = 1e-7;
     const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
                                : roughingIntersection(pocket, level, current().z - kBeyond);
-    if (across && !u.up.empty()) {
+    // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
+    if (across) {
       emit(MoveKind::Feed, across->at, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
@@ -403,6 +404,24 @@ class StockRemovalPlanner {
     }
     climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
     emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+  }
+
+  // G0 along the cut axis to `z` at the current height, between a pocket's passes: where the profile
+  // stands above that height in between (a bump inside the pocket the last pass went over, at a
+  // retract height below its top), G0 up to the start's height first (interpretation,
+  // CYCLE95.UNDERCUT note; before, the rapid ran through the bump: no-gouge, fuzz seed
+  // 14727398570297873640).
+  void rapidAlongTheCutAxis(double z, int k, const std::vector<std::string>& rules) {
+    const double low = std::min(z, current().z) + kGeomEps, high = std::max(z, current().z) - kGeomEps;
+    const double height = current().x;
+    const auto between = [&](Point p) { return p.z > low && p.z < high; };
+    const bool crosses = std::any_of(c_.profile.begin(), c_.profile.end(), [&](const Segment& s) {
+      const auto hits = intersectWithLevelX(s, height);
+      const bool endAbove = (between(s.from) && s.from.x > height + kGeomEps) || (between(s.to) && s.to.x > height + kGeomEps);
+      return endAbove || std::any_of(hits.begin(), hits.end(), between);
+    });
+    if (crosses) emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, k, rules);
+    emit(MoveKind::Rapid, {z, current().x}, 0, MovePhase::Pass, k, rules);
   }
 
   // A pass that ends at the profile's last z, below `height`, where the profile arrives falling more
