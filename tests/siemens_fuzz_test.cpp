@@ -69,7 +69,8 @@ TEST(SiemensFuzzCycles, OneCycleOnItsProfile) {
 TEST(SiemensFuzzCases, ValidPlanAndInvalidRaiseTheirAlarm) {
   std::map<std::pair<bool, int>, int> types;  // (CYCLE95, type) → count
   std::map<SiemensFault, int> faults;
-  int undercutsAtTheirOwnFeed = 0, arcs = 0, centreWords = 0, corners = 0, compact = 0, notMultiple = 0;
+  int undercutsAtTheirOwnFeed = 0, arcs = 0, centreWords = 0, corners = 0, cornersNextToArcs = 0, compact = 0,
+      notMultiple = 0;
   for (long i = 0; i < 400; ++i) {
     const FuzzCase f = siemensCase(i);
     SCOPED_TRACE("case " + std::to_string(i) + ": " + describeFuzzCase(f) + "\n" + fuzzProgram(f));
@@ -96,10 +97,13 @@ TEST(SiemensFuzzCases, ValidPlanAndInvalidRaiseTheirAlarm) {
     ++types[{s.cycle95, s.type}];
     const bool undercut = std::any_of(s.segments.begin(), s.segments.end(), [](const SiemensSegment& g) { return g.up < 0; });
     if (s.cycle95 && undercut && s.undercutFeed != s.roughingFeed) ++undercutsAtTheirOwnFeed;
-    for (const SiemensSegment& g : s.segments) {
+    for (std::size_t k = 0; k < s.segments.size(); ++k) {
+      const SiemensSegment& g = s.segments[k];
       arcs += g.kind != SiemensSegment::Line;
       centreWords += g.kind != SiemensSegment::Line && g.centreWords;
       corners += g.corner != SiemensSegment::NoCorner;
+      const bool arcAfter = k + 1 < s.segments.size() && s.segments[k + 1].kind != SiemensSegment::Line;
+      cornersNextToArcs += g.corner != SiemensSegment::NoCorner && (g.kind != SiemensSegment::Line || arcAfter);
     }
     compact += s.compact;
     int height = 0, top = 0, bottom = 0;
@@ -120,6 +124,7 @@ TEST(SiemensFuzzCases, ValidPlanAndInvalidRaiseTheirAlarm) {
   EXPECT_GT(arcs, 100);
   EXPECT_GT(centreWords, 20);
   EXPECT_GT(corners, 20);
+  EXPECT_GT(cornersNextToArcs, 10);  // SIEMENS.CORNER next to an arc (the generator drew none before)
   EXPECT_GT(compact, 40);
   EXPECT_GT(notMultiple, 200);
 }

@@ -542,6 +542,66 @@ TEST(SiemensOracles, FalzStaysOffAGroovesNearWall) {
   EXPECT_TRUE(f.empty()) << findingsText(f);
 }
 
+// A descent from the top of a wall the contour begins with, rising at its first point's z, is an
+// undercut (CYCLE95.UNDERCUT note): L1 rises from (z 0, x 4) to (0, 8), falls along a slope to
+// (−4, 4) and runs to (−6, 4). The reference roughs the stock above the slope as a pocket at FF2
+// 0.05 (SiemensFrontPockets.AWallRisingAtTheFrontStandsBeforeThePocketBehindIt): siemens-feeds takes
+// those feeds for the pocket's — and asks FF2 of them, so the same path with the slope's feeds at
+// FF1 0.2 is a finding. Before, the oracle counted a descent at the front's z as no undercut and
+// asked FF1 there (fuzz seed 14762804858427687941).
+TEST(SiemensOracles, ADescentFromTheTopOfARisingFrontWallIsAnUndercut) {
+  const std::string program = "T1 D1\nG0 X20 Z3\nCYCLE95(\"L1\", 2.5, 0, 0, 0, 0.2, 0.05, 0.1, 1, 0, 0, 1)\nM02\n";
+  const std::string contour = "G1 X8 Z0\nX16\nX8 Z-4\nZ-6\nRET\n";
+  PlanRequest request{program, "wall.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  Toolpath path = planWithReference(request);
+  EXPECT_TRUE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
+  bool onTheSlope = false;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    Move& m = path.moves[i];
+    const bool down = m.kind == MoveKind::Feed && m.to.x < path.from(i).x - 1e-9 && m.to.z < -1e-9;
+    if (down) m.feed = 0.2, onTheSlope = true;
+  }
+  ASSERT_TRUE(onTheSlope);
+  EXPECT_FALSE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
+}
+
+// A pocket behind a spike after the front (fuzz seed 6552314345380442963): L1 rises at z 0 from x 1.4
+// to 1.5 and falls back to 1 (a spike of no width at the front), runs to −1, rises to 1.5 and falls
+// back to 1 (a second spike), runs to −2, rises to 1.5 and on to (−2.1, 1.6). The descent down the
+// face is only that wall; the one behind the second spike is a pocket the reference roughs at FF2
+// 0.05 (SiemensFrontPockets.APocketBehindASpikeAfterTheFrontIsAnUndercut): siemens-feeds takes its
+// feeds for the pocket's and 'complete' finds no stock left. Before, the oracle's walk from the front
+// descent ran on to the profile's top and took the pocket with it (FF1 asked there).
+TEST(SiemensOracles, APocketBehindASpikeAfterTheFrontIsThePockets) {
+  const std::string program = "T1 D1\nG0 X7.44 Z2.12\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
+  const std::string contour =
+      "G1X2.8Z0\nG1X3Z0\nG1X2Z0\nG1X2Z-1\nG1X3Z-1\nG1X2Z-1\nG1X2Z-2\nG1X3Z-2\nG1X3.2Z-2.1\nRET\n";
+  PlanRequest request{program, "spikes.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  const auto findings = judged(program, "sinumerik-802d", path, contour);
+  EXPECT_TRUE(of(findings, "siemens-feeds").empty());
+  EXPECT_TRUE(of(findings, "complete").empty());
+}
+
+// A pocket's pass descends from its rim along a rounding of the allowance that falls less than the
+// tolerance (found by `fuzz --cycles siemens`, seed 15755400384260043841): L1's last element falls
+// 0.1 (radius) from (−2.08, 9.34) after a flat, FAL 0.11 rounds the convex corner, and the pocket's
+// one pass runs from the rim (−2.08, 9.45) along that rounding, which ends 0.0007 lower, then down
+// the offset slope — at FF2 0.14. siemens-feeds takes a descending move in the pocket for the
+// pocket's even within the tolerance of its top; before, it asked FF1 of the rounding.
+TEST(SiemensOracles, APocketPassDescendingAlongASmallRoundingAtItsRimIsThePockets) {
+  const std::string program =
+      "T1 D1\nG0 X22.16 Z1.74\nCYCLE95(\"L1\", 1.52, 0, 0, 0.11, 0.11, 0.14, 0.11, 1, 0, 0, 0.78)\nM02\n";
+  const std::string contour =
+      "G1X18.68Z0\nG1X16.96Z0\nG1X16.96Z-1.22\nG1X18.68Z-1.22\nG1X18.68Z-2.08\nG1X18.48Z-2.94\nRET\n";
+  PlanRequest request{program, "rim.mpf", "sinumerik-802d", {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  const Toolpath path = planWithReference(request);
+  EXPECT_TRUE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
+}
+
 TEST(SiemensOracles, FalzShiftedIntoAGroovesNearWallIsAGouge) {
   const std::vector<Finding> all = judged(kGrooveFalz, "sinumerik-802d", grooveRoughingWithFalz(-9.5).path, kGroove, "L3");
   EXPECT_FALSE(of(all, "no-gouge").empty()) << findingsText(all);

@@ -330,6 +330,196 @@ TEST(SiemensFrontPockets, APassMeetingTheFaceFollowsTheFrontStretchDown) {
   }
 }
 
+// The contour begins with a wall rising at its first point's z, then falls behind its top: (0, 4) →
+// (0, 8) → (−4, 4) → (−6, 4). The wall only rises: the part's own front, which the levels meet as
+// they meet the profile (the face below the first point stands up to x 4). Behind the wall's top the
+// slope falls away: a pocket the wall stands before, roughed as an undercut at FF2 (CYCLE95.UNDERCUT
+// note). Top 8, bottom 4, MID 2.5: 2 levels of 2: 6, 4; start (1, 9).
+//  pass 1 (6): G0 in to (1, 6), G1 to the wall (0, 6), up it to the previous level 8 (where the
+//    profile turns down: the pocket's rim); retract (1, 9); back along z: already there.
+//  pass 2 (4): G0 in to (1, 4), G1 to the wall's foot (0, 4), up to 6; retract (1, 7).
+//  The pocket: rim (0, 8), down the slope to (−4, 4), open along the flat to the end (−6, 4); its
+//  top 8 (no level above the rim), steps of 2: 6, 4. G0 up to the start's height (1, 9).
+//  pass 3 (6): G0 to (0, 9), G1 down to the rim (0, 8), down the slope to (−2, 6); no profile ahead
+//    at 6: G1 along to the end's z (−6, 6); retract (−5, 7).
+//  pass 4 (4, the lowest): G0 to (−2, 7), G1 to (−2, 6), down the slope to (−4, 4), along the flat
+//    to (−6, 4); retract (−5, 5).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: the descent from the wall's top counted as the contour's front — no undercut — and the
+// passes stopped at the wall's top: the stock above the slope stayed, 'complete' in the fuzz, seed
+// 14762804858427687941.)
+TEST(SiemensFrontPockets, AWallRisingAtTheFrontStandsBeforeThePocketBehindIt) {
+  const SiemensContour c = polyline("W", {{0, 4}, {0, 8}, {-4, 4}, {-6, 4}});
+  const auto out = roughWithCycle95(c, 2.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 6}, "pass", 1},
+                             {G1, {0, 6}, "pass", 1},
+                             {G1, {0, 8}, "pass", 1},
+                             {G0, {1, 9}, "pass", 1},
+                             {G0, {1, 4}, "pass", 2},
+                             {G1, {0, 4}, "pass", 2},
+                             {G1, {0, 6}, "pass", 2},
+                             {G0, {1, 7}, "pass", 2},
+                             {G0, {1, 9}, "pass", 3},
+                             {G0, {0, 9}, "pass", 3},
+                             {G1, {0, 8}, "pass", 3},
+                             {G1, {-2, 6}, "pass", 3},
+                             {G1, {-6, 6}, "pass", 3},
+                             {G0, {-5, 7}, "pass", 3},
+                             {G0, {-2, 7}, "pass", 4},
+                             {G1, {-2, 6}, "pass", 4},
+                             {G1, {-4, 4}, "pass", 4},
+                             {G1, {-6, 4}, "pass", 4},
+                             {G0, {-5, 5}, "pass", 4},
+                             {G0, {-5, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (const Move& m : out.moves) {
+    if (m.kind == MoveKind::Feed && m.pass >= 3) {
+      EXPECT_EQ(m.feed, 0.05);
+    }
+  }
+}
+
+// A spike of no width at the front: the wall rises from the first point (0, 4) to (0, 8) and falls
+// back along itself to (0, 5), then the profile runs to (−3, 5), up to (−3, 8), along to (−6, 8). The
+// part's face stands at z 0 up to x 5 (where the profile leaves z 0); above 5 the walls have stock on
+// both sides. Top 8, bottom 4, MID 2.5: levels 6, 4; start (1, 9). The descent down the face from
+// the spike's top is no undercut.
+//  pass 1 (6, above the face): through the spike to the wall at −3, up it to 8; retract (−2, 9); back
+//    to z 1.
+//  pass 2 (4, below the face's top): G1 to the face at z 0, up it to its top (0, 5), along to (−3, 5),
+//    up to the previous level 6; retract (−2, 7).
+//  Return, X first: (−2, 9), (1, 9). Every feed at FF1.
+// (Before: the face's top was the walls' lowest point, 4, and pass 1 met the rising wall at (0, 6),
+// went up it to 8 and stopped: the band between 6 and 8 over the groove stayed, 'complete' in the
+// fuzz, seed 12927597250111814412.)
+TEST(SiemensFrontPockets, ALevelRunsThroughASpikeOfNoWidthAtTheFront) {
+  const SiemensContour c = polyline("P", {{0, 4}, {0, 8}, {0, 5}, {-3, 5}, {-3, 8}, {-6, 8}});
+  const auto out = roughWithCycle95(c, 2.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 6}, "pass", 1},
+                             {G1, {-3, 6}, "pass", 1},
+                             {G1, {-3, 8}, "pass", 1},
+                             {G0, {-2, 9}, "pass", 1},
+                             {G0, {1, 9}, "pass", 1},
+                             {G0, {1, 4}, "pass", 2},
+                             {G1, {0, 4}, "pass", 2},
+                             {G1, {0, 5}, "pass", 2},
+                             {G1, {-3, 5}, "pass", 2},
+                             {G1, {-3, 6}, "pass", 2},
+                             {G0, {-2, 7}, "pass", 2},
+                             {G0, {-2, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+  for (const Move& m : out.moves) {
+    if (m.kind == MoveKind::Feed) {
+      EXPECT_EQ(m.feed, 0.2);
+    }
+  }
+}
+
+// A spike of no width at the front, and a pocket behind a lower spike further on: (0, 4) → (0, 8) →
+// (0, 5) → (−3, 5) → (−3, 7) → back down to (−3, 5) → (−6, 5) → (−6, 8) → (−8, 8). The wall falling
+// down the face from the first spike's top is no undercut, and only that wall; the descent at −3
+// from (−3, 7) is a pocket (−3 … −6, down to 5) the main passes do not reach. Top 8, bottom 4, MID
+// 2.5: levels 6, 4; start (1, 9). The face stands up to x 5 (where the profile leaves z 0).
+//  pass 1 (6): through the first spike to the second at −3, up it to its top 7, where the profile
+//    turns down; retract (−2, 8); back (1, 8).
+//  pass 2 (4, below the face's top): to the face (0, 4), up to (0, 5), along to (−3, 5), up to 6;
+//    retract (−2, 7).
+//  The pocket: top 8 (the lowest level above its rim 7: the top), bottom 5: steps of 1.5, 6.5 and 5,
+//  at FF2. G0 up to the start's height (−2, 9).
+//  pass 3 (6.5): G0 to (−3, 9), G1 down the wall to (−3, 6.5), across to the rising side (−6, 6.5), up
+//    to the previous level 8; retract (−5, 9).
+//  pass 4 (5, the lowest): G0 to (−3, 9), G1 down to (−3, 5), along the bottom to (−6, 5), up to 6.5;
+//    retract (−5, 7.5).
+//  Return, X first: (−5, 9), (1, 9).
+// (Before: the walk from the first spike's descent ran on to where the profile is back at the top 8,
+// at −6, and took the second pocket with it as no undercut: its stock stayed, 'complete' in the fuzz,
+// seed 6552314345380442963.)
+TEST(SiemensFrontPockets, APocketBehindASpikeAfterTheFrontIsAnUndercut) {
+  const SiemensContour c =
+      polyline("Q", {{0, 4}, {0, 8}, {0, 5}, {-3, 5}, {-3, 7}, {-3, 5}, {-6, 5}, {-6, 8}, {-8, 8}});
+  const auto out = roughWithCycle95(c, 2.5);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 6}, "pass", 1},
+                             {G1, {-3, 6}, "pass", 1},
+                             {G1, {-3, 7}, "pass", 1},
+                             {G0, {-2, 8}, "pass", 1},
+                             {G0, {1, 8}, "pass", 1},
+                             {G0, {1, 4}, "pass", 2},
+                             {G1, {0, 4}, "pass", 2},
+                             {G1, {0, 5}, "pass", 2},
+                             {G1, {-3, 5}, "pass", 2},
+                             {G1, {-3, 6}, "pass", 2},
+                             {G0, {-2, 7}, "pass", 2},
+                             {G0, {-2, 9}, "pass", 3},
+                             {G0, {-3, 9}, "pass", 3},
+                             {G1, {-3, 6.5}, "pass", 3},
+                             {G1, {-6, 6.5}, "pass", 3},
+                             {G1, {-6, 8}, "pass", 3},
+                             {G0, {-5, 9}, "pass", 3},
+                             {G0, {-3, 9}, "pass", 4},
+                             {G1, {-3, 5}, "pass", 4},
+                             {G1, {-6, 5}, "pass", 4},
+                             {G1, {-6, 6.5}, "pass", 4},
+                             {G0, {-5, 7.5}, "pass", 4},
+                             {G0, {-5, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+}
+
+// A pocket open to the profile's end holding a bump: (0, 8) → (−2, 8) → down to (−4, 4) → up to (−5, 6)
+// → down to (−10, 3), the profile's lowest point at its end (gentler than 45°). The first point is the
+// top, so the face stands up to 8. Top 8, bottom 3, MID 3: levels 5.5, 3; start (1, 9).
+//  pass 1 (5.5): to the face (0, 5.5); retract (1, 6.5).   pass 2 (3): to (0, 3); retract (1, 4).
+//  The pocket: rim (−2, 8), no rising side (its lowest point is the end), top 8: steps of 2.5, 5.5 and
+//  3, at FF2. G0 up to the start's height (1, 9).
+//  pass 3 (5.5): G0 to (−2, 9), G1 down to the rim (−2, 8), down the falling side to (−3.25, 5.5) (x =
+//    8 + 2(z + 2)); across to where the level meets the bump, (−4.75, 5.5) (x = 4 − 2(z + 4)); along
+//    the profile through its descents: up to (−5, 6), down to the end (−10, 3); retract (−9, 4).
+//  pass 4 (3, the lowest): back along z at 4 would run through the bump (its top 6 stands between):
+//    G0 up to (−9, 9) first, then to (−3.25, 9); G1 down to (−3.25, 5.5), along the profile: (−4, 4),
+//    (−5, 6), (−10, 3); retract (−9, 4).
+//  Return, X first: (−9, 9), (1, 9).
+// (Before: pass 3 ran along its level to the end's z straight through the bump — the rising side was
+// looked for only in pockets that rise back — and the G0 between pocket passes ran along z at the
+// retract height through it: no-gouge, fuzz seed 14727398570297873640.)
+TEST(SiemensPockets, APocketOpenToTheEndGoesOverTheBumpItHolds) {
+  const SiemensContour c = polyline("B", {{0, 8}, {-2, 8}, {-4, 4}, {-5, 6}, {-10, 3}});
+  const auto out = roughWithCycle95(c, 3);
+  expectMoves(out.moves, {
+                             {G0, {1, 9}, "approach"},
+                             {G0, {1, 5.5}, "pass", 1},
+                             {G1, {0, 5.5}, "pass", 1},
+                             {G0, {1, 6.5}, "pass", 1},
+                             {G0, {1, 3}, "pass", 2},
+                             {G1, {0, 3}, "pass", 2},
+                             {G0, {1, 4}, "pass", 2},
+                             {G0, {1, 9}, "pass", 3},
+                             {G0, {-2, 9}, "pass", 3},
+                             {G1, {-2, 8}, "pass", 3},
+                             {G1, {-3.25, 5.5}, "pass", 3},
+                             {G1, {-4.75, 5.5}, "pass", 3},
+                             {G1, {-5, 6}, "pass", 3},
+                             {G1, {-10, 3}, "pass", 3},
+                             {G0, {-9, 4}, "pass", 3},
+                             {G0, {-9, 9}, "pass", 4},
+                             {G0, {-3.25, 9}, "pass", 4},
+                             {G1, {-3.25, 5.5}, "pass", 4},
+                             {G1, {-4, 4}, "pass", 4},
+                             {G1, {-5, 6}, "pass", 4},
+                             {G1, {-10, 3}, "pass", 4},
+                             {G0, {-9, 4}, "pass", 4},
+                             {G0, {-9, 9}, "return"},
+                             {G0, {1, 9}, "return"},
+                         });
+}
+
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {
   std::vector<Point> points{path.front().from};
   for (const Segment& s : path) points.push_back(s.to);

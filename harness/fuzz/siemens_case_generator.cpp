@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -134,17 +135,54 @@ void longEnoughForTheAllowance(SiemensFuzzCase& s) {
   }
 }
 
-// A corner the controller can insert (CHF=, CHR=, RND=) only between two lines that meet at an
-// angle, both going up (a turn of at most 90°), each at least three times the corner's size and the
-// corner large enough for the allowance to offset it. Elsewhere the drawn corner is dropped.
+// The direction (radians from +z towards +x, in the frame) in which element `g` leaves its start
+// (`atEnd` false) or arrives at its end. A line runs along (−along, up); a convex quarter leaves
+// upwards and arrives along −z, a concave one the other way round; a shallow arc (radius 2·along
+// over the chord (−along, along): a sweep of 2·asin(√2/4)) turns by half its sweep either side of
+// the chord's 135°, convex (G3 in the frame) to the left, concave to the right.
+double directionOf(const SiemensSegment& g, bool atEnd) {
+  const double half = std::asin(std::sqrt(2.0) / 4);
+  constexpr double pi = std::numbers::pi;
+  const double chord = 0.75 * pi;
+  switch (g.kind) {
+    case SiemensSegment::Line: return std::atan2(double(g.up), -double(g.along));
+    case SiemensSegment::ConvexQuarter: return atEnd ? pi : pi / 2;
+    case SiemensSegment::ConcaveQuarter: return atEnd ? pi / 2 : pi;
+    case SiemensSegment::ConvexShallow: return atEnd ? chord + half : chord - half;
+    case SiemensSegment::ConcaveShallow: return atEnd ? chord - half : chord + half;
+    case SiemensSegment::HalfCircle: break;
+  }
+  return 0;
+}
+
+// The largest corner element `g` takes: a third of a line's length or of an arc's chord (a√2 for
+// both arcs drawn over (−a, a)), and at most half an arc's radius (a rounding next to a concave arc
+// stays well inside its circle).
+double largestCornerOn(const SiemensSegment& g) {
+  if (g.kind == SiemensSegment::Line) return lengthOf(g) / 3;
+  const bool shallow = g.kind == SiemensSegment::ConvexShallow || g.kind == SiemensSegment::ConcaveShallow;
+  const double radius = shallow ? 2.0 * g.along : g.along;
+  return std::min(g.along * std::sqrt(2.0) / 3, radius / 2);
+}
+
+// Whether element `g` may carry a corner or be the element after one: a line going up (not turned
+// back towards the axis) or an arc (SIEMENS.CORNER: between lines and arcs in any combination).
+bool takesACorner(const SiemensSegment& g) {
+  return g.kind == SiemensSegment::Line ? g.up >= 0 : g.kind != SiemensSegment::HalfCircle;
+}
+
+// A corner the controller can insert (CHF=, CHR=, RND=) between two elements — lines or arcs — that
+// meet at an angle, both going up (a turn of at most 90°), each at least three times the corner's
+// size (an arc: its chord, and the corner at most half its radius) and the corner large enough for
+// the allowance to offset it. Elsewhere the drawn corner is dropped.
 void keepInsertableCorners(SiemensFuzzCase& s) {
   for (std::size_t i = 0; i < s.segments.size(); ++i) {
     SiemensSegment& a = s.segments[i];
     if (a.corner == SiemensSegment::NoCorner) continue;
     const SiemensSegment* b = i + 1 < s.segments.size() ? &s.segments[i + 1] : nullptr;
-    const bool lines = b && a.kind == SiemensSegment::Line && b->kind == SiemensSegment::Line;
-    const bool turn = lines && a.up >= 0 && b->up >= 0 && long(a.along) * b->up != long(a.up) * b->along;
-    const int room = turn ? static_cast<int>(std::min(lengthOf(a), lengthOf(*b)) / 3) : 0;
+    const bool both = b && takesACorner(a) && takesACorner(*b);
+    const bool turn = both && std::abs(directionOf(a, true) - directionOf(*b, false)) > 1e-6;
+    const int room = turn ? static_cast<int>(std::min(largestCornerOn(a), largestCornerOn(*b))) : 0;
     a.cornerSize = std::min(a.cornerSize, room);
     if (a.cornerSize < 2 * s.allowance + 20) a.corner = SiemensSegment::NoCorner, a.cornerSize = 0;
   }

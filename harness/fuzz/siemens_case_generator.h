@@ -9,7 +9,8 @@
 // stock-removal frame and placed for the type, so that it is programmed in the finishing direction
 // (longitudinal towards −Z, face towards −X; internal mirrors the depth axis): lines of any slope,
 // 45° chamfers, steps, convex and concave quarter arcs (I/K or CR=, the boundary of LCYC95.CONTOUR)
-// and shallow arcs (CR=), chamfers CHF=/CHR= and roundings RND= inserted between two lines, and —
+// and shallow arcs (CR=), chamfers CHF=/CHR= and roundings RND= inserted between two elements (lines
+// or arcs, SIEMENS.CORNER), and —
 // CYCLE95 only — undercuts (lines turned back towards the axis, grooves); the parameters R106…R112 /
 // MID, FALZ, FALX, FAL, FF1, FF2 (≠ FF1 nine times in ten), FF3, DT, DAM, _VRT; the contour's blocks
 // written with or without spaces. One case in ten carries one invalid parameter (SiemensFault) and

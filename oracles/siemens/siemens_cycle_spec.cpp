@@ -91,13 +91,22 @@ double zWhereRisingTo(const std::vector<Segment>& profile, const std::vector<Pro
 
 // CYCLE95.UNDERCUT note: a pocket begins where the profile turns back towards the depth axis (its
 // height falls) and ends where it is back at the lowest main level strictly above that rim; a descent
-// from the profile's front (its first point's z) turns back from nothing and is none.
+// on the profile's front (from its first point, down a wall at its z) turns back from nothing and is
+// none.
 std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, const SiemensLevels& levels) {
   std::vector<SiemensUndercut> out;
   const std::vector<ProfileVertex> v = verticesOf(profile);
   std::size_t k = 0;
   while (k + 1 < v.size()) {
     if (v[k + 1].at.x >= v[k].at.x - kGeomEps) {
+      ++k;
+      continue;
+    }
+    // A wall falling down the face after walls rising at the first point's z is no undercut and
+    // only that wall (stock on both sides): a pocket behind a later rim is one (interpretation).
+    const double frontZ = v.front().at.z;
+    const bool fromTheStart = distance(v[k].at, v.front().at) <= kGeomEps;
+    if (!fromTheStart && v[k].at.z >= frontZ - kGeomEps && v[k + 1].at.z >= frontZ - kGeomEps) {
       ++k;
       continue;
     }
@@ -108,10 +117,11 @@ std::vector<SiemensUndercut> undercutsOf(const std::vector<Segment>& profile, co
     std::size_t m = k + 1;
     while (m < v.size() && v[m].at.x < u.top - kGeomEps) u.bottom = std::min(u.bottom, v[m++].at.x);
     u.endZ = m < v.size() ? zWhereRisingTo(profile, v, m, u.top) : v.back().at.z;
-    // A descent from the contour's front (the first point's z) is no undercut: nothing stands
-    // before it, and the main passes reach it along their levels from the start side
-    // (interpretation).
-    if (v[k].at.z < v.front().at.z - kGeomEps) out.push_back(u);
+    // A descent from the contour's first point is no undercut: nothing stands before it, and the
+    // main passes reach it along their levels from the start side (interpretation). One leaving the
+    // front from the top of a wall the contour begins with, rising at the first point's z, is: the
+    // wall stands before it.
+    if (!fromTheStart) out.push_back(u);
     k = m;
   }
   return out;
@@ -195,9 +205,11 @@ void describeSiemensCycle(SiemensCycleSpec& c) {
 
 bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol) {
   const double zLow = std::min(from.z, to.z), zHigh = std::max(from.z, to.z), xLow = std::min(from.x, to.x);
-  // The plunge along the depth axis down to the falling side's top starts the pocket's pass: it
-  // belongs to the pocket even where that top is its top level (a rim at the profile's top).
-  const bool plunge = zHigh - zLow <= tol && from.x > to.x;
+  // The plunge along the depth axis down to the falling side's top starts the pocket's pass, and
+  // the pass goes on down the falling side: a move descending in the pocket belongs to it even
+  // where it stays within the tolerance of its top level (a rim at the profile's top; a small
+  // rounding of the allowance at the rim, falling a fraction of the tolerance).
+  const bool plunge = from.x > to.x;
   // A climb along the depth axis at the rim's own z is the wall that rises to the rim (a zero-width
   // spike whose far side falls into the pocket along the same line): the main pass's, not the
   // pocket's.

@@ -62,25 +62,26 @@ struct ProfilePoint {
   Point at;
 };
 
-// Whether profile element `i` is a wall falling towards the depth axis among the walls the contour
-// begins with at its first point's z (before `foot`, the element where the profile leaves the
-// part's face). Such a wall has no part in front of it (nothing of the part stands beyond the
-// contour's start) nor behind it above the face's top: stock on both sides (LCYC95.ROUGH note).
-bool isFallingFrontWall(const std::vector<Segment>& profile, std::size_t i, std::size_t foot) {
-  return i < foot && profile[i].to.x < profile[i].from.x - kGeomEps;
+// Whether `p` on profile element `i` lies on the walls the contour begins with at its first point's z
+// (before `foot`, the element where the profile leaves the part's face) above the face's top (the
+// foot's height): such a wall has no part in front of it (nothing of the part stands beyond the
+// contour's start) nor behind it: stock on both sides (LCYC95.ROUGH note) — a wall falling down the
+// face, or one rising and falling back along itself (a spike of no width, issue 16).
+bool isFrontWallAboveTheFace(std::size_t i, Point p, std::size_t foot, double faceTop) {
+  return i < foot && p.x > faceTop + kGeomEps;
 }
 
 // The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
-// `fromZ`, meets the profile — not counting the walls falling at its front (isFallingFrontWall: a
-// level between the face's top and the contour's first point runs through them into the stock
-// behind).
+// `fromZ`, meets the profile — not counting the front walls above the face's top
+// (isFrontWallAboveTheFace: a level between the face's top and the walls' top runs through them
+// into the stock behind).
 std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& profile, double level, double fromZ,
-                                                 std::size_t foot = 0) {
+                                                 std::size_t foot = 0,
+                                                 double faceTop = std::numeric_limits<double>::infinity()) {
   std::optional<ProfilePoint> best;
   for (std::size_t i = 0; i < profile.size(); ++i) {
-    if (isFallingFrontWall(profile, i, foot)) continue;
     for (const Point& p : intersectWithLevelX(profile[i], level)) {
-      if (p.z > fromZ + kGeomEps) continue;
+      if (p.z > fromZ + kGeomEps || isFrontWallAboveTheFace(i, p, foot, faceTop)) continue;
       if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
     }
   }
@@ -264,24 +265,32 @@ class StockRemovalPlanner {
   }
 
   // The part's front (LCYC95.ROUGH, interpretation): below the contour's first point the part's face
-  // stands at that point's z, up to the lowest point of the walls the contour begins with there
-  // (`top`). A level below that top meets the part at the face: the pass stops there (what lies
-  // behind the face, below the contour's start, is an undercut, CYCLE95.UNDERCUT). The profile
-  // leaves the face at the end of those walls (the first point itself without them): `foot`, with
-  // the element that starts there.
+  // stands at that point's z. The profile leaves that z at the end of the walls the contour begins
+  // with there (the first point itself without them): `foot`, with the element that starts there.
+  // Where one of those walls falls, the face stands up to the foot (its `top`), and the walls above
+  // it stand in stock on both sides: falling down the face, or rising and falling back along
+  // themselves (before issue 16 the top was the walls' lowest point, and a level between it and the
+  // foot met a rising wall the profile then falls back along: the pocket behind it stayed, fuzz seed
+  // 12927597250111814412). Walls that only rise are the part's own front, which a level meets as it
+  // meets the profile: the face stands up to the first point. A level below the top meets the part
+  // at the face: the pass stops there (what lies behind the face, below the contour's start, is an
+  // undercut, CYCLE95.UNDERCUT).
   struct FrontFace {
     double top = 0;
     ProfilePoint foot;
+    double wallsInStockAbove = std::numeric_limits<double>::infinity();  // the top where a wall falls
   };
   FrontFace frontFace() const {
     const double frontZ = c_.profile.front().from.z;
     FrontFace face{c_.profile.front().from.x, {0, c_.profile.front().from}};
+    bool falls = false;
     while (face.foot.segment < c_.profile.size()) {
       const Segment& s = c_.profile[face.foot.segment];
       if (s.isArc() || std::abs(s.to.z - frontZ) > kGeomEps) break;
-      face.top = std::min(face.top, s.to.x);
+      falls = falls || s.to.x < s.from.x - kGeomEps;
       face.foot = {face.foot.segment + 1, s.to};
     }
+    if (falls) face.top = face.wallsInStockAbove = face.foot.at.x;
     return face;
   }
 
@@ -293,7 +302,7 @@ class StockRemovalPlanner {
   void roughingPass(int k, double level, double previous) {
     const FrontFace face = frontFace();
     const bool meetsTheFace = level < face.top - kGeomEps;
-    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z, face.foot.segment);
+    const auto hit = meetsTheFace ? std::nullopt : roughingIntersection(c_.profile, level, start_.z, face.foot.segment, face.wallsInStockAbove);
     const double hitZ = meetsTheFace ? faceZ() : hit ? hit->at.z : c_.profile.back().to.z;
     infeed(k, level, hitZ);
     cutToIntersection(k, {hitZ, level});
@@ -367,10 +376,10 @@ class StockRemovalPlanner {
       // A level at or above the rim (the pocket's top stands above it) crosses over from the rim.
       const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
       const double inZ = in ? in->at.z : level >= rim.x - kGeomEps ? rim.z : lowPoint.z;
-      emit(MoveKind::Rapid, {inZ, current().x}, 0, MovePhase::Pass, k, rules);
+      rapidAlongTheCutAxis(inZ, k, rules);
       emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     } else {
-      emit(MoveKind::Rapid, {side.front().from.z, current().x}, 0, MovePhase::Pass, k, rules);
+      rapidAlongTheCutAxis(side.front().from.z, k, rules);
       emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
     }
@@ -383,7 +392,8 @@ class StockRemovalPlanner {
     constexpr double kBeyond = 1e-7;
     const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
                                : roughingIntersection(pocket, level, current().z - kBeyond);
-    if (across && !u.up.empty()) {
+    // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
+    if (across) {
       emit(MoveKind::Feed, across->at, c_.undercutFeed, MovePhase::Pass, k, rules);
       for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
@@ -394,6 +404,24 @@ class StockRemovalPlanner {
     }
     climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
     emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+  }
+
+  // G0 along the cut axis to `z` at the current height, between a pocket's passes: where the profile
+  // stands above that height in between (a bump inside the pocket the last pass went over, at a
+  // retract height below its top), G0 up to the start's height first (interpretation,
+  // CYCLE95.UNDERCUT note; before, the rapid ran through the bump: no-gouge, fuzz seed
+  // 14727398570297873640).
+  void rapidAlongTheCutAxis(double z, int k, const std::vector<std::string>& rules) {
+    const double low = std::min(z, current().z) + kGeomEps, high = std::max(z, current().z) - kGeomEps;
+    const double height = current().x;
+    const auto between = [&](Point p) { return p.z > low && p.z < high; };
+    const bool crosses = std::any_of(c_.profile.begin(), c_.profile.end(), [&](const Segment& s) {
+      const auto hits = intersectWithLevelX(s, height);
+      const bool endAbove = (between(s.from) && s.from.x > height + kGeomEps) || (between(s.to) && s.to.x > height + kGeomEps);
+      return endAbove || std::any_of(hits.begin(), hits.end(), between);
+    });
+    if (crosses) emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, k, rules);
+    emit(MoveKind::Rapid, {z, current().x}, 0, MovePhase::Pass, k, rules);
   }
 
   // A pass that ends at the profile's last z, below `height`, where the profile arrives falling more

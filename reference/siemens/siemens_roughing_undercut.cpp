@@ -130,12 +130,24 @@ std::optional<Point> descentStartOn(const Segment& s) {
 
 namespace {
 
-// CYCLE95.UNDERCUT (interpretation): a descent whose rim stands on the contour's front (the first
-// point's z: the contour begins there, perhaps with a wall) is no undercut — nothing of the profile
-// stands before it, so the main passes reach it from the start side along their levels, as they
-// reach a shoulder.
+// CYCLE95.UNDERCUT (interpretation): a descent from the contour's first point is no undercut —
+// nothing of the profile stands before it, so the main passes reach it from the start side along
+// their levels, as they reach a shoulder, and clean up through the front stretch's own descents
+// (frontStretchEnd in siemens_roughing_steps.cpp).
 bool fallsFromTheContoursStart(const std::vector<Segment>& profile, Point rim) {
-  return rim.z >= profile.front().from.z - kGeomEps;
+  return distance(rim, profile.front().from) <= kGeomEps;
+}
+
+// Nor is a descent down a wall at the first point's z after the walls rising there (a spike of no
+// width at the front: the part's face, stock on both sides, which the levels run through). It is
+// only that wall: a pocket behind a later rim is one (issue 16, fuzz seed 6552314345380442963: the
+// pocket behind a spike in the middle was taken into the front's walk and never roughed). A descent
+// leaving the front from the top of the rising walls is an undercut: the walls stand before the
+// stock behind their top, which the main passes, meeting them, do not reach (fuzz seed
+// 14762804858427687941). `descent` is the element falling from `rim`.
+bool fallsDownTheFace(const std::vector<Segment>& profile, Point rim, const Segment& descent) {
+  const double frontZ = profile.front().from.z;
+  return rim.z >= frontZ - kGeomEps && descent.to.z >= frontZ - kGeomEps;
 }
 
 }  // namespace
@@ -149,6 +161,10 @@ std::vector<Undercut> findUndercuts(const std::vector<Segment>& profile, const s
     resumeFrom.reset();
     const auto rim = descentStartOn(s);
     if (!rim) {
+      ++i;
+      continue;
+    }
+    if (fallsDownTheFace(profile, *rim, s) && !fallsFromTheContoursStart(profile, *rim)) {
       ++i;
       continue;
     }
