@@ -709,7 +709,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     model.apply(move, in.path.moves[i].kind);
   }
   r.model = std::move(model);
-  return r;
+  return replay;  // moved out (`r` would copy the whole replay into the returned optional)
 }
 
 }  // namespace cyclecert
