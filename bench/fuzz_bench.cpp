@@ -11,6 +11,7 @@
 #include "harness/engines/linuxcnc/linuxcnc_engine.h"
 #include "harness/fuzz/fuzz_run.h"
 #include "harness/judge/judging.h"
+#include "oracles/material_replay.h"
 
 namespace {
 
@@ -147,6 +148,64 @@ void BM_FuzzSiemensCasePlanOnly(benchmark::State& state) {
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FuzzSiemensCasePlanOnly)->Unit(benchmark::kMicrosecond);
+
+// A fixed sample of generated SINUMERIK cases and the reference's paths for them, planned once:
+// 64 cases, as `fuzz` plans a batch (kFuzzBatch) before it judges it, so that the texts the engine
+// parsed are kept for the oracles' reading (harness/reference_plan.h keeps the last 128) as in `fuzz`.
+struct PlannedCase {
+  SpecCase spec;
+  Toolpath path;
+};
+const std::vector<PlannedCase>& plannedSiemensCases() {
+  static const std::vector<PlannedCase> planned = [] {
+    const auto engine = makeEngine("reference");
+    std::vector<PlannedCase> out;
+    std::vector<SpecCase> cases = casesOf(kDefaultCycleFormats, {FuzzCycle::Lcyc95, FuzzCycle::Cycle95});
+    cases.resize(64);
+    for (SpecCase& c : cases) {
+      Toolpath path = engine->run(c).path;
+      out.push_back({std::move(c), std::move(path)});
+    }
+    return out;
+  }();
+  return planned;
+}
+
+// The oracles' reading of a planned SINUMERIK case alone (judgeInputFor: the program read again
+// with recording planners, readSiemensProgramSpec): what a case pays, after the engine, before any
+// oracle judges. The parsed texts are kept per thread (harness/reference_plan.h), as in `fuzz`.
+void BM_FuzzSiemensReadingOnly(benchmark::State& state) {
+  const auto& cases = plannedSiemensCases();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const PlannedCase& c = cases[i++ % cases.size()];
+    benchmark::DoNotOptimize(judgeInputFor(judgeRequestFor(c.spec), c.path));
+  }
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzSiemensReadingOnly)->Unit(benchmark::kMicrosecond);
+
+// Every oracle on a planned and read SINUMERIK case (judge: the material replay, completeness,
+// no-gouge, the Siemens oracles).
+void BM_FuzzSiemensOraclesOnly(benchmark::State& state) {
+  std::vector<JudgeInput> inputs;
+  for (const PlannedCase& c : plannedSiemensCases()) inputs.push_back(judgeInputFor(judgeRequestFor(c.spec), c.path));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(judge(inputs[i++ % inputs.size()]));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzSiemensOraclesOnly)->Unit(benchmark::kMicrosecond);
+
+// The material replay alone on the same cases (replayMaterial: the implied stock, the part, the
+// moves replayed), the oracles' largest share.
+void BM_FuzzSiemensReplayOnly(benchmark::State& state) {
+  std::vector<JudgeInput> inputs;
+  for (const PlannedCase& c : plannedSiemensCases()) inputs.push_back(judgeInputFor(judgeRequestFor(c.spec), c.path));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(replayMaterial(inputs[i++ % inputs.size()]));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FuzzSiemensReplayOnly)->Unit(benchmark::kMicrosecond);
 
 // LinuxCNC's rs274 on the same cases, one process per case and batched (when rs274 was fetched:
 // `make rs274`; otherwise the benchmark says so and is skipped).

@@ -184,8 +184,8 @@ BgRegion stockUpToLevel(const std::vector<Segment>& shape, Point away, double le
     outline.push_back(frame.atDepth(shape.front().from, level));
     return regionFromSimpleOutline(outline);
   }
-  const BgRegion band = regionFrom({frame.point(lo, level), frame.point(hi, level), frame.point(hi, level - reach),
-                                    frame.point(lo, level - reach)});
+  const BgRegion band = regionFromSimpleOutline({frame.point(lo, level), frame.point(hi, level),
+                                                 frame.point(hi, level - reach), frame.point(lo, level - reach)});
   return without(band, partRegionOf(shape, away, reach, chordTolerance));
 }
 
@@ -482,9 +482,10 @@ MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
 // siemens_cycle_spec.h) in the plane.
 Point siemensAway(const SiemensCycleSpec& s) { return s.frame.toPlane(Point{0, 1}); }
 
-// The box [z0, z1] × [x0, x1] of a SINUMERIK call's frame, in the plane.
+// The box [z0, z1] × [x0, x1] of a SINUMERIK call's frame, in the plane (a rectangle never
+// crosses itself: no validity check).
 BgRegion frameBoxInPlane(const SiemensFrame& frame, double z0, double z1, double x0, double x1) {
-  return regionFrom({frame.toPlane(Point{z0, x1}), frame.toPlane(Point{z1, x1}), frame.toPlane(Point{z1, x0}),
+  return regionFromSimpleOutline({frame.toPlane(Point{z0, x1}), frame.toPlane(Point{z1, x1}), frame.toPlane(Point{z1, x0}),
                      frame.toPlane(Point{z0, x0})});
 }
 
@@ -601,8 +602,8 @@ class SiemensDocumentedCrossings {
     if (s_.infeedAngle <= 0 || feed.isArc()) return;
     const Point a = s_.frame.toFrame(feed.from), b = s_.frame.toFrame(feed.to);
     if (b.z - a.z >= -tol_ || b.x - a.x >= -tol_ || !s_.levels.isLevel(b.x, tol_)) return;
-    const BgRegion chip =
-        regionFrom({s_.frame.toPlane(a), s_.frame.toPlane(b), s_.frame.toPlane(Point{a.z, b.x})});
+    const BgRegion chip =  // a triangle never crosses itself
+        regionFromSimpleOutline({s_.frame.toPlane(a), s_.frame.toPlane(b), s_.frame.toPlane(Point{a.z, b.x})});
     chips_.insert(chips_.end(), chip.begin(), chip.end());
   }
 
@@ -708,7 +709,7 @@ std::optional<MaterialReplay> replayMaterial(const JudgeInput& in) {
     model.apply(move, in.path.moves[i].kind);
   }
   r.model = std::move(model);
-  return r;
+  return replay;  // moved out (`r` would copy the whole replay into the returned optional)
 }
 
 }  // namespace cyclecert
