@@ -71,7 +71,8 @@ TEST(Cycle95Rough, AxisAllowancesAndTheG0Infeed) {
 }
 
 // DAM 4: pass 1's cut from (1, 6) to (−10, 6), 11 long, is interrupted after 4 and 8: (−3, 6), (−7, 6),
-// then the rest to (−10, 6). (DT is a dwell, not a move.)
+// then the rest to (−10, 6). DT 0.5 is no move: the tool dwells 0.5 s at each interruption, the end
+// of (−3, 6) and (−7, 6), not at the roughing intersection (CYCLE95.DAM note).
 TEST(Cycle95Rough, DamInterruptsTheCut) {
   const SiemensContour shaft = stepShaft();
   Cycle95Parameters p = params(1);
@@ -85,6 +86,10 @@ TEST(Cycle95Rough, DamInterruptsTheCut) {
   EXPECT_EQ(out.moves[4].to, (Point{-10, 6}));
   EXPECT_EQ(out.moves[2].rules, (std::vector<std::string>{"CYCLE95.ROUGH", "CYCLE95.DAM"}));
   EXPECT_EQ(out.moves[4].rules, (std::vector<std::string>{"CYCLE95.ROUGH"}));
+  EXPECT_EQ(out.moves[2].dwell.value_or(0), 0.5);
+  EXPECT_EQ(out.moves[3].dwell.value_or(0), 0.5);
+  EXPECT_FALSE(out.moves[4].dwell.has_value());
+  EXPECT_FALSE(out.moves[1].dwell.has_value());
 }
 
 // --- CYCLE95.UNDERCUT: a V-shaped pocket ---

@@ -18,70 +18,12 @@
 #include "harness/spec/spec_case.h"
 #include "oracles/judgement.h"
 #include "oracles/siemens/siemens_allowance_rectangle.h"
+#include "tests/siemens_oracle_paths.h"
 
 namespace cyclecert {
 namespace {
 
-const char* kL1 = "G1 X20 Z0\nZ-10\nX32\nZ-20\nX40\nRET\n";
-
-std::string lcyc95Program(const std::string& r105, const std::string& r109 = "0") {
-  return "G0 X50 Z2\n_CNAME=\"L1\"\nR105=" + r105 + " R106=0 R108=3 R109=" + r109 + "\nR110=1 R111=0.3 R112=0.1\nLCYC95\nM02\n";
-}
-
-std::string cycle95Program(const std::string& vari, const std::string& dam = "0") {
-  return "G0 X50 Z2\nCYCLE95(\"L1\", 3, 0, 0, 0, 0.3, 0.15, 0.1, " + vari + ", 0, " + dam + ", 1)\nM02\n";
-}
-
-// A toolpath written move by move (plane coordinates z, x radius).
-struct PathBuilder {
-  Toolpath path;
-  explicit PathBuilder(Point start) { path.start = start; }
-  PathBuilder& rapid(double z, double x) {
-    Move m;
-    m.kind = MoveKind::Rapid;
-    m.to = {z, x};
-    path.moves.push_back(m);
-    return *this;
-  }
-  PathBuilder& feed(double z, double x, double f) {
-    Move m;
-    m.kind = MoveKind::Feed;
-    m.to = {z, x};
-    m.feed = f;
-    path.moves.push_back(m);
-    return *this;
-  }
-};
-
-std::vector<Finding> judged(const std::string& program, const std::string& profile, const Toolpath& path,
-                            const std::string& subprogram = kL1, const std::string& name = "L1") {
-  JudgeRequest request;
-  request.program.programText = program;
-  request.program.file = "test.mpf";
-  request.program.profile = profile;
-  request.program.subprograms.push_back({name, subprogram, "test#/subprograms/" + name});
-  return judge(judgeInputFor(request, path));
-}
-
-std::vector<Finding> of(const std::vector<Finding>& all, const std::string& oracle) {
-  std::vector<Finding> out;
-  std::copy_if(all.begin(), all.end(), std::back_inserter(out), [&](const Finding& f) { return f.oracle == oracle; });
-  return out;
-}
-
-// LCYC95 R105=1, R109=0: G0 to S; per level a G1 infeed at R111 from the retract height, the cut to
-// the roughing intersection, along the profile up to the previous level, G0 retract (+1, +1), G0 back
-// to z1; after the last pass G0 to S in both axes.
-PathBuilder lcyc95Roughing() {
-  PathBuilder p({2, 25});
-  p.rapid(1, 21);
-  p.feed(1, 17.5, 0.3).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
-  p.feed(1, 15, 0.3).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
-  p.feed(1, 12.5, 0.3).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
-  p.feed(1, 10, 0.3).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
-  p.rapid(1, 21);
-  return p;
-}
+using namespace siemens_test;
 
 TEST(SiemensOracles, Lcyc95RoughingByTheRulesPasses) {
   const std::vector<Finding> f = judged(lcyc95Program("1"), "sinumerik-802s", lcyc95Roughing().path);
@@ -193,18 +135,6 @@ TEST(SiemensOracles, FinishingAtR111AndWithoutTheReturnIsReported) {
   EXPECT_EQ(of(all, "siemens-returns").size(), 1u) << findingsText(all);
 }
 
-// CYCLE95 VARI 1: G0 infeeds, the axes return one after the other (x first).
-PathBuilder cycle95Roughing() {
-  PathBuilder p({2, 25});
-  p.rapid(1, 21);
-  p.rapid(1, 17.5).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
-  p.rapid(1, 15).feed(-10, 15, 0.3).feed(-10, 16, 0.3).feed(-20, 16, 0.3).feed(-20, 17.5, 0.3).rapid(-19, 18.5).rapid(1, 18.5);
-  p.rapid(1, 12.5).feed(-10, 12.5, 0.3).feed(-10, 15, 0.3).rapid(-9, 16).rapid(1, 16);
-  p.rapid(1, 10).feed(0, 10, 0.3).feed(-10, 10, 0.3).feed(-10, 12.5, 0.3).rapid(-9, 13.5);
-  p.rapid(-9, 21).rapid(1, 21);
-  return p;
-}
-
 TEST(SiemensOracles, Cycle95RoughingByTheRulesPasses) {
   const std::vector<Finding> f = judged(cycle95Program("1"), "sinumerik-802d", cycle95Roughing().path);
   EXPECT_TRUE(f.empty()) << findingsText(f);
@@ -236,27 +166,6 @@ TEST(SiemensOracles, Cycle95DamInterruptsTheCutsAlongTheLevels) {
   // Without interruptions: pass 1 (21 long), 2 and 3 (11 long) are reported.
   EXPECT_EQ(of(judged(cycle95Program("1", "8"), "sinumerik-802d", cycle95Roughing().path), "siemens-chip-breaking").size(), 3u);
 }
-
-// CYCLE95 with a groove (z−10…−15, down to x12), MID 3, FF1 0.3, FF2 0.15: the axis-parallel passes
-// stop at the rim (−10,16); the pocket below the level 17.5 in its own two steps (14.75, 12) at FF2.
-const char* kGroove = "G1 X20 Z0\nZ-5\nX32\nZ-10\nX24\nZ-15\nX32\nZ-20\nX40\nRET\n";
-
-PathBuilder grooveRoughing(double undercutFeed) {
-  const double u = undercutFeed;
-  PathBuilder p({2, 25});
-  p.rapid(1, 21);
-  p.rapid(1, 17.5).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
-  p.rapid(1, 15).feed(-5, 15, 0.3).feed(-5, 16, 0.3).feed(-10, 16, 0.3).rapid(-9, 17).rapid(1, 17);
-  p.rapid(1, 12.5).feed(-5, 12.5, 0.3).feed(-5, 15, 0.3).rapid(-4, 16).rapid(1, 16);
-  p.rapid(1, 10).feed(0, 10, 0.3).feed(-5, 10, 0.3).feed(-5, 12.5, 0.3).rapid(-4, 13.5);
-  p.rapid(-4, 21);
-  p.rapid(-10, 21).feed(-10, 14.75, u).feed(-15, 14.75, u).feed(-15, 16, u).feed(-20, 16, u).feed(-20, 17.5, u).rapid(-19, 18.5);
-  p.rapid(-10, 18.5).feed(-10, 12, u).feed(-15, 12, u).feed(-15, 14.75, u).rapid(-14, 15.75);
-  p.rapid(-14, 21).rapid(1, 21);
-  return p;
-}
-
-std::string grooveProgram() { return "G0 X50 Z2\nCYCLE95(\"L3\", 3, 0, 0, 0, 0.3, 0.15, 0.1, 1, 0, 0, 1)\nM02\n"; }
 
 TEST(SiemensOracles, Cycle95UndercutAtFF2Passes) {
   const std::vector<Finding> f = judged(grooveProgram(), "sinumerik-802d", grooveRoughing(0.15).path, kGroove, "L3");

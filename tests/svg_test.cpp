@@ -97,12 +97,12 @@ Segment arc(SegmentKind kind, Point from, Point to, Point centre) {
   return Segment{kind, from, to, centre, 0};
 }
 
-Move rapid(Point to) { return Move{MoveKind::Rapid, SegmentKind::Line, to, {}, {}, MovePhase::Approach, 0, {}}; }
+Move rapid(Point to) { return Move{MoveKind::Rapid, SegmentKind::Line, to, {}, {}, {}, MovePhase::Approach, 0, {}}; }
 Move feed(Point to, MovePhase phase = MovePhase::SemiFinish, int pass = 0) {
-  return Move{MoveKind::Feed, SegmentKind::Line, to, {}, 0.2, phase, pass, {}};
+  return Move{MoveKind::Feed, SegmentKind::Line, to, {}, 0.2, {}, phase, pass, {}};
 }
 Move arcMove(SegmentKind kind, Point to, Point centre) {
-  return Move{MoveKind::Feed, kind, to, centre, 0.2, MovePhase::SemiFinish, 0, {}};
+  return Move{MoveKind::Feed, kind, to, centre, 0.2, {}, MovePhase::SemiFinish, 0, {}};
 }
 
 // A small G71 type I example (Δd = 5, e = 0.5, Δu/2 = 0.25, Δw = 0.5, DTP = 0): A = (5, 30),

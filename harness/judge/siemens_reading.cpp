@@ -49,6 +49,7 @@ SiemensCycleSpec cycle95Spec(const SiemensCycleCall& call, const Cycle95Paramete
   c.undercutFeed = p.undercutFeed;
   c.finishingFeed = p.finishingFeed;
   c.interruptLength = std::abs(p.interruptLength);
+  c.dwell = std::abs(p.dwell);
   return c;
 }
 

@@ -12,6 +12,7 @@ std::string describeMove(const Move& m) {
   s << kindName(m.kind) << " " << shapeName(m.shape) << " to (x " << m.to.x << ", z " << m.to.z << ")";
   if (m.center) s << " centre (x " << m.center->x << ", z " << m.center->z << ")";
   if (m.feed) s << " F" << *m.feed;
+  if (m.dwell) s << " dwell " << *m.dwell << " s";
   if (m.singleBlockStop) s << " (single-block stop)";
   return s.str();
 }
@@ -26,6 +27,7 @@ std::optional<MoveDivergence> firstMoveDivergence(const std::vector<Move>& expec
     bool same = e.kind == a.kind && e.shape == a.shape && nearlyEqual(e.to, a.to, tol);
     if (same && e.center) same = a.center && nearlyEqual(*e.center, *a.center, tol);
     if (same && e.feed) same = a.feed && std::abs(*e.feed - *a.feed) <= tol;
+    if (same && e.dwell) same = std::abs(*e.dwell - a.dwell.value_or(0)) <= tol;
     if (same && e.stopGiven) same = e.singleBlockStop == a.singleBlockStop;
     if (!same) {
       std::ostringstream s;

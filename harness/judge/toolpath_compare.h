@@ -15,7 +15,7 @@ struct MoveDivergence {
 };
 
 // The first divergence of `actual` from `expected`: kind, shape, end point, centre (arcs) and,
-// where `expected` gives one, the feed. The names label the two sides in the text ("move 3:
+// where `expected` gives one, the feed and the dwell (none counts as 0 s). The names label the two sides in the text ("move 3:
 // expected …, got …"; "move 3: reference …, linuxcnc …").
 std::optional<MoveDivergence> firstMoveDivergence(const std::vector<Move>& expected, const std::vector<Move>& actual,
                                                   double tolerance, const std::string& expectedName = "expected",
@@ -25,6 +25,6 @@ std::optional<MoveDivergence> firstMoveDivergence(const std::vector<Move>& expec
 std::optional<std::string> firstDivergence(const std::vector<Move>& expected, const std::vector<Move>& actual,
                                            double tolerance);
 
-std::string describeMove(const Move& m);  // "rapid line to (x 20, z 2)", with centre, feed
+std::string describeMove(const Move& m);  // "rapid line to (x 20, z 2)", with centre, feed, dwell
 
 }  // namespace cyclecert

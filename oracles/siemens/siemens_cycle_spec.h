@@ -71,6 +71,7 @@ struct SiemensCycleSpec {
   double undercutFeed = 0;         // FF2 (LCYC95 roughs no undercut)
   double finishingFeed = 0;        // R112 / FF3
   double interruptLength = 0;      // DAM (0: never interrupted; LCYC95 has none)
+  double dwell = 0;                // DT, seconds at each interruption (unsigned)
   ToolOffset tool;
 
   // --- derived by describeSiemensCycle, in the frame ---

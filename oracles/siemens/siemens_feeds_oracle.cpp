@@ -22,24 +22,26 @@ class SiemensFeedsOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<SiemensCycleMoves> m = siemensCycleMoves(ctx.in);
-    if (!m) return;
-    const bool cycle95 = m->c.isCycle95();
-    for (const FeedRun& cut : m->roughing) {
-      for (std::size_t i = cut.begin; i < cut.end; ++i) {
-        if (cycle95 && inUndercut(m->c, m->from(i), m->to(i), m->tol)) {
-          judgeFeed(*m, i, m->c.undercutFeed, "in an undercut, at FF2", out);
-        } else {
-          judgeFeed(*m, i, m->c.roughingFeed, cycle95 ? "roughing, at FF1" : "roughing, at R111", out);
-        }
-      }
-    }
-    for (std::size_t i = m->finishing.begin; i < m->finishing.end; ++i) {
-      judgeFeed(*m, i, m->c.finishingFeed, cycle95 ? "finishing, at FF3" : "finishing, at R112", out);
-    }
+    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
   }
 
  private:
+  void judgeCall(const SiemensCycleMoves& m, std::vector<Finding>& out) const {
+    const bool cycle95 = m.c.isCycle95();
+    for (const FeedRun& cut : m.roughing) {
+      for (std::size_t i = cut.begin; i < cut.end; ++i) {
+        if (cycle95 && inUndercut(m.c, m.from(i), m.to(i), m.tol)) {
+          judgeFeed(m, i, m.c.undercutFeed, "in an undercut, at FF2", out);
+        } else {
+          judgeFeed(m, i, m.c.roughingFeed, cycle95 ? "roughing, at FF1" : "roughing, at R111", out);
+        }
+      }
+    }
+    for (std::size_t i = m.finishing.begin; i < m.finishing.end; ++i) {
+      judgeFeed(m, i, m.c.finishingFeed, cycle95 ? "finishing, at FF3" : "finishing, at R112", out);
+    }
+  }
+
   void judgeFeed(const SiemensCycleMoves& m, std::size_t i, double expected, const std::string& what,
                  std::vector<Finding>& out) const {
     const std::optional<double> feed = m.in.path.moves[i].feed;

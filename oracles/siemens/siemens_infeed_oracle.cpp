@@ -22,19 +22,22 @@ class SiemensInfeedOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<SiemensCycleMoves> m = siemensCycleMoves(ctx.in);
-    if (!m || m->roughing.empty()) return;
-    for (std::size_t i = m->range.begin; i < m->finishing.begin; ++i) {
-      if (!isInfeed(*m, i)) continue;
-      if (m->c.isCycle95()) {
-        judgeStraightRapid(*m, i, out);
+    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+  }
+
+ private:
+  void judgeCall(const SiemensCycleMoves& m, std::vector<Finding>& out) const {
+    if (m.roughing.empty()) return;
+    for (std::size_t i = m.range.begin; i < m.finishing.begin; ++i) {
+      if (!isInfeed(m, i)) continue;
+      if (m.c.isCycle95()) {
+        judgeStraightRapid(m, i, out);
       } else {
-        judgeInclinedFeed(*m, i, out);
+        judgeInclinedFeed(m, i, out);
       }
     }
   }
 
- private:
   // A move from the entry side (the start's z) deeper, down to a roughing level or above it — not the
   // rapid into the finishing pass.
   static bool isInfeed(const SiemensCycleMoves& m, std::size_t i) {

@@ -19,24 +19,27 @@ class SiemensRetractOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<SiemensCycleMoves> m = siemensCycleMoves(ctx.in);
-    if (!m) return;
-    const double v = std::abs(m->c.retract);
-    if (v <= m->tol) return;  // no retract to make (a zero-length move is no move)
-    const std::string name = m->c.isCycle95() ? "_VRT" : "R110";
-    for (const FeedRun& cut : m->roughing) {
+    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+  }
+
+ private:
+  void judgeCall(const SiemensCycleMoves& m, std::vector<Finding>& out) const {
+    const double v = std::abs(m.c.retract);
+    if (v <= m.tol) return;  // no retract to make (a zero-length move is no move)
+    const std::string name = m.c.isCycle95() ? "_VRT" : "R110";
+    for (const FeedRun& cut : m.roughing) {
       const std::size_t i = cut.end;
-      if (i >= m->range.end) {
-        out.push_back(m->report(*this, cut.end - 1, "the roughing cut ending here is not followed by the retract by " +
+      if (i >= m.range.end) {
+        out.push_back(m.report(*this, cut.end - 1, "the roughing cut ending here is not followed by the retract by " +
                                                         name + "=" + shortDecimalText(v) + " in each axis"));
         continue;
       }
-      const Point d = m->to(i) - m->from(i);
-      if (m->isRapid(i) && std::abs(d.z - v) <= m->tol && std::abs(d.x - v) <= m->tol) continue;
-      const Point plane = ctx.in.path.moves[i].to - ctx.in.path.from(i);
-      out.push_back(m->report(*this, i, std::string("after the roughing cut (moves ") + std::to_string(cut.begin) + "…" +
+      const Point d = m.to(i) - m.from(i);
+      if (m.isRapid(i) && std::abs(d.z - v) <= m.tol && std::abs(d.x - v) <= m.tol) continue;
+      const Point plane = m.in.path.moves[i].to - m.in.path.from(i);
+      out.push_back(m.report(*this, i, std::string("after the roughing cut (moves ") + std::to_string(cut.begin) + "…" +
                                             std::to_string(cut.end - 1) + ") the tool moves " +
-                                            (m->isRapid(i) ? "G0" : "in feed") + " by Z" + shortDecimalText(plane.z) +
+                                            (m.isRapid(i) ? "G0" : "in feed") + " by Z" + shortDecimalText(plane.z) +
                                             " X(radius)" + shortDecimalText(plane.x) + "; the cycle retracts with G0 by " +
                                             name + "=" + shortDecimalText(v) + " in each axis, away from the contour"));
     }

@@ -32,26 +32,28 @@ class SiemensReturnsOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<SiemensCycleMoves> m = siemensCycleMoves(ctx.in);
-    if (!m) return;
-    const SiemensCycleSpec& c = m->c;
-    std::size_t afterRoughing = m->range.begin;
+    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+  }
+
+ private:
+  void judgeCall(const SiemensCycleMoves& m, std::vector<Finding>& out) const {
+    const SiemensCycleSpec& c = m.c;
+    std::size_t afterRoughing = m.range.begin;
     if (c.roughs()) {
-      if (!judgeRoughingApproach(*m, out) || m->roughing.empty()) return;
-      afterRoughing = m->roughing.back().end + 1;  // after the last cut's retract
+      if (!judgeRoughingApproach(m, out) || m.roughing.empty()) return;
+      afterRoughing = m.roughing.back().end + 1;  // after the last cut's retract
       if (!c.finishes()) {
         if (c.isCycle95()) {
-          judgeAxisByAxis(*m, afterRoughing, m->range.end, "the return after roughing", out);
+          judgeAxisByAxis(m, afterRoughing, m.range.end, "the return after roughing", out);
         } else {
-          judgeReturnBothAxes(*m, afterRoughing, out);
+          judgeReturnBothAxes(m, afterRoughing, out);
         }
         return;
       }
     }
-    judgeFinishing(*m, afterRoughing, out);
+    judgeFinishing(m, afterRoughing, out);
   }
 
- private:
   bool judgeRoughingApproach(const SiemensCycleMoves& m, std::vector<Finding>& out) const {
     const std::size_t i = m.range.begin;
     if (i < m.range.end && nearlyEqual(m.from(i), m.c.start, m.tol)) return true;  // already there

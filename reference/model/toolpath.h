@@ -38,6 +38,9 @@ struct Move {
   Point to;
   std::optional<Point> center;  // arcs only
   std::optional<double> feed;   // feeds only (mm/min or mm/rev as programmed)
+  // Seconds the tool dwells at the move's end before the next move (CYCLE95's DT at each
+  // interruption for chip breaking, CYCLE95.DAM); none when it goes straight on. JSON "dwell".
+  std::optional<double> dwell;
   MovePhase phase = MovePhase::None;
   int pass = 0;                 // pass number for MovePhase::Pass (1-based), else 0
   std::vector<std::string> rules;

@@ -112,6 +112,7 @@ json toJson(const Move& m) {
   json j{{"kind", kindName(m.kind)}, {"shape", shapeName(m.shape)}, {"to", toJson(m.to)}};
   if (m.center) j["center"] = toJson(*m.center);
   if (m.feed) j["feed"] = *m.feed;
+  if (m.dwell) j["dwell"] = *m.dwell;
   if (m.phase != MovePhase::None) j["phase"] = phaseName(m.phase);
   if (m.pass > 0) j["pass"] = m.pass;
   if (!m.rules.empty()) j["rules"] = m.rules;
@@ -232,6 +233,10 @@ Move moveFromJson(const json& j, const std::string& where) {
     m.center = pointFromJson(j["center"], where + "/center");
   }
   if (j.contains("feed")) m.feed = finiteNumber(j["feed"], where + "/feed");
+  if (j.contains("dwell")) {
+    m.dwell = finiteNumber(j["dwell"], where + "/dwell");
+    if (*m.dwell < 0) fail(where + "/dwell", "the seconds the tool dwells after the move, ≥ 0, found " + j["dwell"].dump());
+  }
   m.phase = phaseFromJson(j, where);
   m.pass = optionalInteger(j, "pass", where, "a pass number ≥ 0").value_or(0);
   if (j.contains("stop")) {

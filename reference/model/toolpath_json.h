@@ -1,8 +1,8 @@
 #pragma once
 // The canonical toolpath JSON (see README "Toolpath JSON"):
 // {"profile", "units": "mm", "plane", "start": {x, z}, "moves": [{kind, shape, to, center?, feed?,
-//  phase?, pass?, rules?}], "alarm": null | {code, message, line}, "warnings": [...], "cycles": [...]}
-// x is the radius in mm.
+//  dwell?, phase?, pass?, rules?}], "alarm": null | {code, message, line}, "warnings": [...], "cycles": [...]}
+// x is the radius in mm; "dwell" the seconds the tool dwells at the move's end (≥ 0, optional).
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>

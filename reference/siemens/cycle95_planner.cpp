@@ -17,6 +17,7 @@ StockRemovalSettings cycle95Settings(const Cycle95Parameters& p) {
   s.roughingFeed = p.roughingFeed;
   s.finishingFeed = p.finishingFeed;
   s.interruptLength = p.interruptLength;
+  s.dwell = p.dwell;
   s.axesReturnOneAfterTheOther = true;
   s.roughUndercuts = true;
   s.undercutFeed = p.undercutFeed;

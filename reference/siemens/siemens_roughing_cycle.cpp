@@ -44,6 +44,7 @@ void requirePlannableValues(const SiemensCycleCall& call, const StockRemovalSett
       {"the finishing feed", s.finishingFeed},
       {"the undercut feed", s.undercutFeed},
       {"the interruption length", s.interruptLength},
+      {"the dwell", s.dwell},
       {"the nose radius", call.tool.noseRadius},
   };
   for (const auto& [name, value] : values) {
@@ -64,6 +65,7 @@ StockRemovalSettings withUnsignedSizes(StockRemovalSettings s) {
   s.allowance.transverse = std::abs(s.allowance.transverse);
   s.clearance = std::abs(s.clearance);
   s.interruptLength = std::abs(s.interruptLength);
+  s.dwell = std::abs(s.dwell);
   return s;
 }
 
@@ -107,6 +109,7 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
   cycle.roughingFeed = s.roughingFeed;
   cycle.finishingFeed = s.finishingFeed;
   cycle.interruptLength = s.interruptLength;
+  cycle.dwell = s.dwell;
   cycle.axesReturnOneAfterTheOther = s.axesReturnOneAfterTheOther;
   cycle.roughUndercuts = s.roughUndercuts;
   cycle.undercutFeed = s.undercutFeed;

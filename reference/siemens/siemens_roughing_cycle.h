@@ -24,6 +24,7 @@ struct StockRemovalSettings {
   double roughingFeed = 0;
   double finishingFeed = 0;
   double interruptLength = 0; // DAM
+  double dwell = 0;           // DT, seconds at each interruption
   bool axesReturnOneAfterTheOther = false;
   bool roughUndercuts = false;
   double undercutFeed = 0;    // FF2

@@ -394,13 +394,13 @@ class StockRemovalPlanner {
                                : roughingIntersection(pocket, level, current().z - kBeyond);
     // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
     if (across) {
-      emit(MoveKind::Feed, across->at, c_.undercutFeed, MovePhase::Pass, k, rules);
+      cutAlongLevel(k, across->at, c_.undercutFeed, c_.rules.undercut);
       for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
       }
     } else {  // the pocket stays open to the profile's end
       const Point end = u.up.empty() ? lowPoint : u.up.back().to;
-      emit(MoveKind::Feed, {end.z, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+      cutAlongLevel(k, {end.z, level}, c_.undercutFeed, c_.rules.undercut);
     }
     climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
     emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
@@ -447,15 +447,19 @@ class StockRemovalPlanner {
     emit(c_.infeedKind, to, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough, c_.rules.depth});
   }
 
-  // G1 parallel to the cut axis to the roughing intersection; with DAM, in pieces of that length.
-  void cutToIntersection(int k, Point to) {
-    if (c_.interruptLength > 0) {
+  // G1 parallel to the cut axis to the roughing intersection.
+  void cutToIntersection(int k, Point to) { cutAlongLevel(k, to, c_.roughingFeed, c_.rules.rough); }
+
+  // G1 along the level to `to`; with DAM, in pieces of that length, the tool dwelling DT at each
+  // interruption (CYCLE95.DAM: every roughing step, a pocket's too).
+  void cutAlongLevel(int k, Point to, double feed, const std::string& rule) {
+    if (c_.interruptLength > 0 && std::abs(current().x - to.x) <= kGeomEps) {
       while (current().z - to.z > c_.interruptLength + kGeomEps) {
-        emit(MoveKind::Feed, {current().z - c_.interruptLength, to.x}, c_.roughingFeed, MovePhase::Pass, k,
-             {c_.rules.rough, c_.rules.interrupt});
+        emit(MoveKind::Feed, {current().z - c_.interruptLength, to.x}, feed, MovePhase::Pass, k, {rule, c_.rules.interrupt});
+        if (c_.dwell > 0) moves_.back().dwell = c_.dwell;
       }
     }
-    emit(MoveKind::Feed, to, c_.roughingFeed, MovePhase::Pass, k, {c_.rules.rough});
+    emit(MoveKind::Feed, to, feed, MovePhase::Pass, k, {rule});
   }
 
   // Retract by the clearance in each axis (R110 / _VRT), with G0.

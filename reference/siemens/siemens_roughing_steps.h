@@ -45,6 +45,7 @@ struct StockRemoval {
   double roughingFeed = 0;          // R111 / FF1
   double finishingFeed = 0;         // R112 / FF3
   double interruptLength = 0;       // DAM: a roughing cut is split after this length (0: never)
+  double dwell = 0;                 // DT: seconds the tool dwells at each interruption
   bool axesReturnOneAfterTheOther = false;  // CYCLE95.ROUGH: at the end of roughing
   bool roughUndercuts = false;      // CYCLE95.UNDERCUT (LCYC95 leaves them to finishing)
   double undercutFeed = 0;          // FF2
