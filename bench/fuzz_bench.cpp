@@ -151,7 +151,7 @@ BENCHMARK(BM_FuzzSiemensCasePlanOnly)->Unit(benchmark::kMicrosecond);
 
 // A fixed sample of generated SINUMERIK cases and the reference's paths for them, planned once:
 // 64 cases, as `fuzz` plans a batch (kFuzzBatch) before it judges it, so that the texts the engine
-// parsed are kept for the oracles' reading (harness/reference_plan.h keeps the last 128) as in `fuzz`.
+// parsed are kept for the oracles' reading (harness/engines/reference_plan.h keeps the last 128) as in `fuzz`.
 struct PlannedCase {
   SpecCase spec;
   Toolpath path;
@@ -173,7 +173,7 @@ const std::vector<PlannedCase>& plannedSiemensCases() {
 
 // The oracles' reading of a planned SINUMERIK case alone (judgeInputFor: the program read again
 // with recording planners, readSiemensProgramSpec): what a case pays, after the engine, before any
-// oracle judges. The parsed texts are kept per thread (harness/reference_plan.h), as in `fuzz`.
+// oracle judges. The parsed texts are kept per thread (harness/engines/reference_plan.h), as in `fuzz`.
 void BM_FuzzSiemensReadingOnly(benchmark::State& state) {
   const auto& cases = plannedSiemensCases();
   std::size_t i = 0;
