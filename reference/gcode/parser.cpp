@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "reference/gcode/lexer.h"
+#include "reference/gcode/program_limits.h"
 
 namespace cyclecert {
 
@@ -66,7 +67,13 @@ class ProgramParser {
     while (!atBlockEnd()) parseBlockItem(block);
     block.text = std::string(lexer_.source().substr(begin, consumedEnd_ - begin));
     if (current_.kind == TokenKind::EndOfBlock) advance();
-    if (!block.words.empty() || block.sequence) program_.blocks.push_back(std::move(block));
+    if (!block.words.empty() || block.sequence) keep(std::move(block));
+  }
+
+  // PROG.CAP.BLOCKS: the block beyond kMostBlocksPerProgram is refused at its line.
+  void keep(Block block) {
+    requireBlockWithinTheCap(program_.blocks.size() + 1, lexer_.file(), block.line);
+    program_.blocks.push_back(std::move(block));
   }
 
   void parseBlockItem(Block& block) {
@@ -112,7 +119,21 @@ class ProgramParser {
         setProgramNumber(letter, number, word);
         break;
       default:
+        requireOneWordOfTheAddress(block, letter, word);
         block.words.push_back(std::move(word));
+    }
+  }
+
+  // One word of an address per block, G and M apart (codes of different groups share a block): a
+  // second X or U would leave which one counts to the reader (interpretation, PROG.ADDRESS).
+  void requireOneWordOfTheAddress(const Block& block, const Token& letter, const Word& word) const {
+    if (word.letter == 'G' || word.letter == 'M') return;
+    for (const Word& first : block.words) {
+      if (first.letter != word.letter) continue;
+      fail(letter,
+           std::string("one ") + word.letter + " word per block (" + first.text + " at column " +
+               std::to_string(first.column) + ")",
+           word.text);
     }
   }
 

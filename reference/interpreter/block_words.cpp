@@ -32,14 +32,14 @@ std::string at(const Word& w) { return w.text + " at column " + std::to_string(w
   throw CycleAlarm(alarm::kImproperAddress, w.line, at(w) + ": " + why);
 }
 
-// The word stands right after a dimension or feed word's number, with nothing between ("X1e308").
+// The word stands right after another word's number, with nothing between ("X1e308", "D1e3").
 bool gluedToPreviousNumber(const Block& b, const Word& w) {
   const Word* previous = nullptr;
   for (const Word& x : b.words) {
     if (&x == &w) break;
     previous = &x;
   }
-  return previous && isDimensionOrFeed(previous->letter) && previous->line == w.line &&
+  return previous && previous->line == w.line &&
          previous->column + static_cast<int>(previous->text.size()) == w.column;
 }
 
@@ -63,13 +63,14 @@ void checkWordRanges(const Block& b, bool inch) {
   }
 }
 
+std::string exponentHint(const Block& b, const Word& w) {
+  if (w.letter != 'E' || !gluedToPreviousNumber(b, w)) return "";
+  return "; a number with an exponent (\"1e308\") is not a G-code number: write the value in full";
+}
+
 void checkNoThreadLead(const Block& b) {
   for (const Word* e : b.all('E')) {
-    std::string why = "E (thread lead) has a meaning only in a threading block (G32, G76, G92)";
-    if (gluedToPreviousNumber(b, *e)) {
-      why += "; a number with an exponent (\"1e308\") is not a G-code number: write the value in full";
-    }
-    improperAddress(*e, why);
+    improperAddress(*e, "E (thread lead) has a meaning only in a threading block (G32, G76, G92)" + exponentHint(b, *e));
   }
 }
 

@@ -7,6 +7,8 @@
 //    an E word outside a threading block — "X1e308" is read as X1 and E308, never as an exponent;
 //  - G01 chamfering and corner rounding (I, K, C or R in a G01 block) are NotSupported.
 // Each alarm names the word's line and column.
+#include <string>
+
 #include "reference/interpreter/modal_state.h"
 #include "reference/model/program.h"
 
@@ -19,6 +21,11 @@ void checkWordRanges(const Block& b, bool inch);
 // A block that moves along the plane (group 01, G00–G03, with the state's plane and motion after
 // the block's own codes): PS0009 for an address such a block does not use.
 void checkMotionBlockAddresses(const Block& b, int motion, const ModalState& s);
+
+// "; a number with an exponent ("1e308") is not a G-code number: write the value in full" when
+// `w` is an E standing right after another word's number ("X1e308", "D1e3"), else "": for the
+// messages of every reader that refuses an E.
+std::string exponentHint(const Block& b, const Word& w);
 
 // Any block: PS0009 for an E word (thread lead: FANUC lathes read it in G32/G76/G92 only, which
 // the reference does not plan).
