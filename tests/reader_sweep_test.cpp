@@ -6,6 +6,7 @@
 // The rows marked "fixed" failed before the change that made them pass (issue 19's sweep).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 #include <utility>
 #include <vector>
