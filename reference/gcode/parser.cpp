@@ -119,21 +119,7 @@ class ProgramParser {
         setProgramNumber(letter, number, word);
         break;
       default:
-        requireOneWordOfTheAddress(block, letter, word);
         block.words.push_back(std::move(word));
-    }
-  }
-
-  // One word of an address per block, G and M apart (codes of different groups share a block): a
-  // second X or U would leave which one counts to the reader (interpretation, PROG.ADDRESS).
-  void requireOneWordOfTheAddress(const Block& block, const Token& letter, const Word& word) const {
-    if (word.letter == 'G' || word.letter == 'M') return;
-    for (const Word& first : block.words) {
-      if (first.letter != word.letter) continue;
-      fail(letter,
-           std::string("one ") + word.letter + " word per block (" + first.text + " at column " +
-               std::to_string(first.column) + ")",
-           word.text);
     }
   }
 

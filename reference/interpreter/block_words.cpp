@@ -52,7 +52,23 @@ bool hasM(const Block& b, double code) {
 
 }  // namespace
 
+// PROG.ADDRESS (interpretation): one word of an address per block, G and M apart (codes of
+// different groups share a block); a second X or U is PS0009 naming both, rather than one of them
+// read silently.
+void checkOneWordPerAddress(const Block& b) {
+  for (std::size_t i = 0; i < b.words.size(); ++i) {
+    const Word& w = b.words[i];
+    if (w.letter == 'G' || w.letter == 'M') continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (b.words[j].letter != w.letter) continue;
+      improperAddress(w, std::string("a second ") + w.letter + " word in the block (" + at(b.words[j]) +
+                             "): one word of an address per block");
+    }
+  }
+}
+
 void checkWordRanges(const Block& b, bool inch) {
+  checkOneWordPerAddress(b);
   const double largest = inch ? kLargestInch : kLargestMetric;
   for (const Word& w : b.words) {
     if (!isDimensionOrFeed(w.letter) || std::abs(w.value) <= largest) continue;
