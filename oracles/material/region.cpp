@@ -136,9 +136,10 @@ void flattenInto(std::vector<Point>& points, const Segment& s, double chordToler
   const ArcAngles angles(s);
   const double span = angles.sweep;  // signed: negative for clockwise
   const double chords = std::ceil(std::abs(span) / largestChordAngle(radius, chordTolerance));
-  if (chords > 1e6) {
-    throw std::invalid_argument("the chord tolerance is too small for an arc of radius " +
-                                std::to_string(radius));
+  if (chords > kMostChordsPerArc) {
+    throw std::invalid_argument("the chord tolerance " + std::to_string(chordTolerance) +
+                                " mm is too small for an arc of radius " + std::to_string(radius) +
+                                " mm: it would take more than 1,000,000 chords");
   }
   const int n = std::max(1, static_cast<int>(chords));
   points.reserve(n + 1);

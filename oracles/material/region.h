@@ -51,10 +51,13 @@ inline Point fromBg(const BgPoint& p) { return {p.x(), p.y()}; }
 // the fewest equal chords whose sagitta r·(1 − cos(φ/2)) is ≤ chordTolerance (at least one chord),
 // every point on the arc. A degenerate arc (radius ≤ kGeomEps) gives {from, to}. An arc with
 // from == to and a radius is a full circle (geometry.h's convention). Throws std::invalid_argument
-// for non-finite coordinates, chordTolerance ≤ 0, or more than a million chords.
+// for non-finite coordinates, chordTolerance ≤ 0, or more than kMostChordsPerArc chords.
 // (Chords much finer than this, bounding the error along the axes too, would fall below the
 // booleans' resolution next to axis-parallel tangents and make Boost see self-intersections.)
 std::vector<Point> flatten(const Segment& s, double chordTolerance);
+// README "Limits": an arc of the largest radius the dimension words allow (999,999.999 mm) takes
+// some 70,000 chords at the default chord tolerance (1 µm); a tolerance set too fine is refused.
+inline constexpr double kMostChordsPerArc = 1e6;
 // The same into `points` (cleared first): a caller flattening move after move keeps one buffer.
 void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance);
 

@@ -11,6 +11,7 @@
 #include "reference/cycles/move_emitter.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/cycles/series10_format.h"
+#include "reference/gcode/program_limits.h"
 #include "reference/gcode/address_ranges.h"
 #include "reference/model/alarms.h"
 
@@ -118,12 +119,9 @@ void refuseOtherDialects(const CycleCall& call) {
 void checkPlanSize(const CycleCall& call, int d, std::size_t segments) {
   const double moves = static_cast<double>(d) * (static_cast<double>(segments) + 2);
   if (d <= kMostRoughingPasses && moves <= kMostCycleMoves) return;
-  throw NotSupported(call.block().line, "G73 with d = " + std::to_string(d) + " would make " +
-                                            std::to_string(static_cast<long long>(moves)) +
-                                            " moves; cyclecert plans at most " +
-                                            std::to_string(static_cast<long long>(kMostRoughingPasses)) +
-                                            " passes and " + std::to_string(static_cast<long long>(kMostCycleMoves)) +
-                                            " moves per cycle");
+  throw NotSupported(call.block().line, "G73 with d = " + countText(d) + " would make " + countText(moves) +
+                                            " moves; cyclecert plans at most " + countText(kMostRoughingPasses) +
+                                            " passes and " + countText(kMostCycleMoves) + " moves per cycle");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "reference/cycles/cycles.h"
+#include "reference/interpreter/block_words.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {
@@ -26,7 +27,7 @@ void requireAddressesOf(const Block& b, std::string_view letters, const std::str
   for (const Word& w : b.words) {
     if (std::string_view("GFSTM").find(w.letter) != std::string_view::npos) continue;
     if (letters.find(w.letter) != std::string_view::npos) continue;
-    throw cycleBlockAlarm(alarm::kImproperAddress, w.line, at(w) + ": " + format);
+    throw cycleBlockAlarm(alarm::kImproperAddress, w.line, at(w) + ": " + format + exponentHint(b, w));
   }
 }
 

@@ -8,6 +8,7 @@
 #include "reference/cycles/g74_1.h"
 #include "reference/cycles/move_emitter.h"
 #include "reference/cycles/roughing_cycle.h"
+#include "reference/gcode/program_limits.h"
 #include "reference/model/alarms.h"
 #include "reference/model/number_text.h"
 
@@ -249,10 +250,10 @@ class G74_1Planner {
   // PROG.CAP.PASSES: as every planner, a bounded plan.
   void requireFewerMovesThanTheCap(double layers, double cycles, double moves) const {
     if (layers <= kMostRoughingPasses && cycles <= kMostRoughingPasses && moves <= kMostCycleMoves) return;
-    throw NotSupported(c_.line, "G74.1 would make " + mm(layers) + " layers of up to " + mm(cycles) +
-                                    " axial cycles (" + mm(moves) + " moves); cyclecert plans at most " +
-                                    mm(kMostRoughingPasses) + " layers or cycles and " + mm(kMostCycleMoves) +
-                                    " moves per cycle");
+    throw NotSupported(c_.line, "G74.1 would make " + countText(layers) + " layers of up to " + countText(cycles) +
+                                    " axial cycles (" + countText(moves) + " moves); cyclecert plans at most " +
+                                    countText(kMostRoughingPasses) + " layers or cycles and " +
+                                    countText(kMostCycleMoves) + " moves per cycle");
   }
 
   void move(MoveKind kind, double u, double w, std::size_t m, const char* rule) {

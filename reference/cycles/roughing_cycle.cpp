@@ -1,6 +1,7 @@
 #include "reference/cycles/roughing_cycle.h"
 
 #include "reference/gcode/address_ranges.h"
+#include "reference/gcode/program_limits.h"
 #include "reference/interpreter/block_motion.h"
 #include "reference/model/alarms.h"
 #include "reference/cycles/roughing_rules.h"
@@ -102,25 +103,25 @@ std::vector<Move> movesInPlane(std::vector<Move> moves, const RoughingFrame& f) 
   return moves;
 }
 
-std::string countText(double n) {
-  std::string digits = std::to_string(std::llround(n));
-  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<std::size_t>(i), ",");
-  return digits;
-}
-
-// PROG.CAP.PASSES: refuses a cycle whose passes (depth / Δd) or moves would exceed the caps.
-void checkPlanSize(const CycleCall& call, const std::string& code, double depth, double dd, double movesPerPass) {
+// PROG.CAP.PASSES, PROG.CAP.WORK: refuses a cycle whose passes (depth / Δd), moves or work (passes
+// × the shape's segments: each pass meets the shape) would exceed the caps.
+void checkPlanSize(const CycleCall& call, const std::string& code, double depth, double dd, double movesPerPass,
+                   std::size_t segments) {
   const double passes = depth / dd;
-  if (passes <= kMostRoughingPasses && passes * movesPerPass <= kMostCycleMoves) return;
+  const double work = passes * static_cast<double>(segments);
+  if (passes <= kMostRoughingPasses && passes * movesPerPass <= kMostCycleMoves && work <= kMostPassSegments) return;
   std::ostringstream why;
   why << std::setprecision(6) << " (Δd " << dd << " mm over " << depth << " mm)";
   if (passes > kMostRoughingPasses) {
     throw NotSupported(call.block().line, code + " would make " + countText(passes) + " roughing passes" + why.str() +
                                               "; cyclecert plans at most " + countText(kMostRoughingPasses));
   }
-  throw NotSupported(call.block().line, code + " would make up to " + countText(passes * movesPerPass) + " moves" +
-                                            why.str() + "; cyclecert plans at most " + countText(kMostCycleMoves) +
-                                            " per cycle");
+  if (passes * movesPerPass > kMostCycleMoves) {
+    throw NotSupported(call.block().line, code + " would make up to " + countText(passes * movesPerPass) + " moves" +
+                                              why.str() + "; cyclecert plans at most " + countText(kMostCycleMoves) +
+                                              " per cycle");
+  }
+  requireWorkWithinTheCap(code, passes, segments, why.str(), call.block().line);
 }
 
 // How deep the shape reaches below its start along the depth direction (the cycle frame's x).
@@ -145,6 +146,15 @@ CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const Sec
 
 }  // namespace
 
+void requireWorkWithinTheCap(const std::string& cycle, double passes, std::size_t segments, const std::string& why,
+                             int line) {
+  if (passes * static_cast<double>(segments) <= kMostPassSegments) return;
+  throw NotSupported(line, cycle + " would cut " + countText(passes) + " passes across a shape of " +
+                               countText(static_cast<double>(segments)) + " segments" + why +
+                               "; cyclecert plans at most " + countText(kMostPassSegments) +
+                               " passes × segments per cycle");
+}
+
 CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const SecondBlock& sb,
                        const RoughingFrame& frame) {
   const std::string code(cycleCode(frame.family));
@@ -160,8 +170,8 @@ CycleOutcome planTypeI(const CycleCall& call, const ShapeProgram& shape, const S
   cycle.retract = call.params.get("5133");
   cycle.semiFinish = !call.params.bit("RF1");
   cycle.directReturn = call.params.bit("DTP");
-  // Type I: four moves a pass (infeed, cut, retract, back).
-  checkPlanSize(call, code, std::abs(cycle.headEnd.x - cycle.start.x), cycle.depthOfCut, 4);
+  // Type I: four moves a pass (infeed, cut, retract, back), each pass meeting the shape.
+  checkPlanSize(call, code, std::abs(cycle.headEnd.x - cycle.start.x), cycle.depthOfCut, 4, cycle.body.size() + 1);
   // G71.T1.MONO, G71.CHECK: checked on the finish shape before any move.
   checkType1Monotonic(cycle, frame.cutAxis, frame.depthAxis);
   return outcome(call, shape, sb, movesInPlane(planType1(cycle), frame));
@@ -186,7 +196,7 @@ CycleOutcome planTypeII(const CycleCall& call, const ShapeProgram& shape, const 
   cycle.levelByLevel = call.profile.pocketsLevelByLevel;
   // Type II: a cut at a level may follow every segment of the shape, plus its travel and leave.
   checkPlanSize(call, code, deepestBelowStart(cycle.shape, cycle.start, cycle.depthDirection()),
-                cycle.depthOfCut, static_cast<double>(cycle.shape.size()) + 8);
+                cycle.depthOfCut, static_cast<double>(cycle.shape.size()) + 8, cycle.shape.size());
   // G71.T2.MONO: only the cut axis must be monotonic.
   checkMonotonicAlongCut(cycle.shape, cycle.cutDirection(), frame.cutAxis);
   CycleOutcome out = outcome(call, shape, sb, movesInPlane(planType2(cycle), frame));

@@ -69,12 +69,21 @@ CycleOutcome withShapeAlarmTiming(const CycleCall& call, Plan plan) {
   }
 }
 
-// PROG.CAP.PASSES: the planner's bound, checked before planning. A real G71/G72 makes tens to
-// hundreds of passes; a Δd of 0.001 mm over a 500 mm deep shape would make 500,000 and take
-// gigabytes. Above kMostRoughingPasses passes, or kMostCycleMoves moves at most (passes × the
-// shape's segments, type II), the cycle is NotSupported with the count.
+// PROG.CAP.PASSES: the planners' bounds, checked from the counts before planning (G71/G72 here,
+// G73, G74.1, LCYC95/CYCLE95 with their own counts). A real G71/G72 makes tens to hundreds of
+// passes; a Δd of 0.001 mm over a 500 mm deep shape would make 500,000 and take gigabytes. Above
+// kMostRoughingPasses passes, kMostCycleMoves moves at most (passes × the shape's segments, type
+// II), or kMostPassSegments passes × segments (PROG.CAP.WORK: each type I pass meets the shape;
+// 10,000 passes over 200,000 segments took 22 s and 1 GB before this bound), the cycle is
+// NotSupported with the count.
 inline constexpr double kMostRoughingPasses = 10'000;
 inline constexpr double kMostCycleMoves = 250'000;
+inline constexpr double kMostPassSegments = 10'000'000;
+
+// PROG.CAP.WORK: throws NotSupported at `line` when `passes` × `segments` is beyond
+// kMostPassSegments; `why` says what gave the passes ("Δd 0.001 mm over 1000 mm").
+void requireWorkWithinTheCap(const std::string& cycle, double passes, std::size_t segments, const std::string& why,
+                             int line);
 
 // Δd from parameter 5132 (programmed values overwrite it): PS0062 if not positive.
 double depthOfCut(const CycleCall& call, const std::string& code);

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "reference/gcode/lexer.h"
+#include "reference/gcode/program_limits.h"
 
 namespace cyclecert {
 
@@ -66,7 +67,13 @@ class ProgramParser {
     while (!atBlockEnd()) parseBlockItem(block);
     block.text = std::string(lexer_.source().substr(begin, consumedEnd_ - begin));
     if (current_.kind == TokenKind::EndOfBlock) advance();
-    if (!block.words.empty() || block.sequence) program_.blocks.push_back(std::move(block));
+    if (!block.words.empty() || block.sequence) keep(std::move(block));
+  }
+
+  // PROG.CAP.BLOCKS: the block beyond kMostBlocksPerProgram is refused at its line.
+  void keep(Block block) {
+    requireBlockWithinTheCap(program_.blocks.size() + 1, lexer_.file(), block.line);
+    program_.blocks.push_back(std::move(block));
   }
 
   void parseBlockItem(Block& block) {

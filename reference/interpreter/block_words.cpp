@@ -32,14 +32,14 @@ std::string at(const Word& w) { return w.text + " at column " + std::to_string(w
   throw CycleAlarm(alarm::kImproperAddress, w.line, at(w) + ": " + why);
 }
 
-// The word stands right after a dimension or feed word's number, with nothing between ("X1e308").
+// The word stands right after another word's number, with nothing between ("X1e308", "D1e3").
 bool gluedToPreviousNumber(const Block& b, const Word& w) {
   const Word* previous = nullptr;
   for (const Word& x : b.words) {
     if (&x == &w) break;
     previous = &x;
   }
-  return previous && isDimensionOrFeed(previous->letter) && previous->line == w.line &&
+  return previous && previous->line == w.line &&
          previous->column + static_cast<int>(previous->text.size()) == w.column;
 }
 
@@ -52,7 +52,23 @@ bool hasM(const Block& b, double code) {
 
 }  // namespace
 
+// PROG.ADDRESS (interpretation): one word of an address per block, G and M apart (codes of
+// different groups share a block); a second X or U is PS0009 naming both, rather than one of them
+// read silently.
+void checkOneWordPerAddress(const Block& b) {
+  for (std::size_t i = 0; i < b.words.size(); ++i) {
+    const Word& w = b.words[i];
+    if (w.letter == 'G' || w.letter == 'M') continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (b.words[j].letter != w.letter) continue;
+      improperAddress(w, std::string("a second ") + w.letter + " word in the block (" + at(b.words[j]) +
+                             "): one word of an address per block");
+    }
+  }
+}
+
 void checkWordRanges(const Block& b, bool inch) {
+  checkOneWordPerAddress(b);
   const double largest = inch ? kLargestInch : kLargestMetric;
   for (const Word& w : b.words) {
     if (!isDimensionOrFeed(w.letter) || std::abs(w.value) <= largest) continue;
@@ -63,13 +79,14 @@ void checkWordRanges(const Block& b, bool inch) {
   }
 }
 
+std::string exponentHint(const Block& b, const Word& w) {
+  if (w.letter != 'E' || !gluedToPreviousNumber(b, w)) return "";
+  return "; a number with an exponent (\"1e308\") is not a G-code number: write the value in full";
+}
+
 void checkNoThreadLead(const Block& b) {
   for (const Word* e : b.all('E')) {
-    std::string why = "E (thread lead) has a meaning only in a threading block (G32, G76, G92)";
-    if (gluedToPreviousNumber(b, *e)) {
-      why += "; a number with an exponent (\"1e308\") is not a G-code number: write the value in full";
-    }
-    improperAddress(*e, why);
+    improperAddress(*e, "E (thread lead) has a meaning only in a threading block (G32, G76, G92)" + exponentHint(b, *e));
   }
 }
 

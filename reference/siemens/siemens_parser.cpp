@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "reference/model/ascii.h"
+#include "reference/gcode/program_limits.h"
 #include "reference/model/program.h"
 #include "reference/siemens/siemens_lexer.h"
 
@@ -137,6 +138,20 @@ class BlockParser {
     SiemensWord word = wordFrom(name, address, number, "");
     if (address == "N") return sequence(number, word);
     if (address == "L") return subprogramCall(number, std::move(word));
+    keepWord(name, std::move(word));
+  }
+
+  // One word of an address per block (G and M may repeat: codes of different groups); a second
+  // would leave which one counts to the reader (interpretation, SIEMENS.LEX).
+  void keepWord(const SiemensToken& name, SiemensWord word) {
+    if (word.address != "G" && word.address != "M") {
+      if (const SiemensWord* first = block_.find(word.address)) {
+        throw ParseError({lexer_.file(), lexer_.lineNumber(), name.column},
+                         "one " + word.address + " word per block (" + first->text + " at column " +
+                             std::to_string(first->column) + ")",
+                         word.text);
+      }
+    }
     block_.words.push_back(std::move(word));
   }
 
@@ -172,7 +187,7 @@ class BlockParser {
   void namedValue(const SiemensToken& name, const std::string& address) {
     const SiemensToken equals = expect(SiemensTokenKind::Equals, "'=' after " + address + " (" + address + "=value)");
     const SiemensToken number = expect(SiemensTokenKind::Number, "a number after " + address + "=");
-    block_.words.push_back(wordFrom(name, address, number, equals.text));
+    keepWord(name, wordFrom(name, address, number, equals.text));
   }
 
   void stringAssignment(const SiemensToken& name, const std::string& variable) {
@@ -229,6 +244,7 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
   SiemensBlocks main{file, {}};
   SiemensBlocks* section = &main;
   int endLine = 0;  // the line of the current section's M02/M17/M30/RET, 0 before it
+  std::size_t blocks = 0;
   for (const Line& line : lines) {
     if (const auto name = subprogramHeading(line.text)) {
       const int column = static_cast<int>(line.text.find_first_not_of(" \t")) + 1;
@@ -254,6 +270,7 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
                        block.text);
     }
     if (block.endsProgram()) endLine = block.line;
+    requireBlockWithinTheCap(++blocks, file, line.number);  // PROG.CAP.BLOCKS, printed subprograms included
     section->blocks.push_back(std::move(block));
   }
   return main;

@@ -7,7 +7,9 @@
 #include <optional>
 
 #include "reference/cycles/roughing_cycle.h"
+#include "reference/gcode/program_limits.h"
 #include "reference/model/alarms.h"
+#include "reference/model/number_text.h"
 #include "reference/model/offset.h"
 #include "reference/siemens/siemens_roughing_undercut.h"
 
@@ -33,10 +35,10 @@ InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line) {
   if (totalDepth <= kGeomEps) return {};
   const double count = std::max(1.0, std::ceil(totalDepth / maxInfeed - 1e-9));
   if (!(count <= kMostRoughingPasses)) {  // PROG.CAP.PASSES, checked before the count is made an int
-    throw NotSupported(line, "the stock-removal cycle would make " + std::to_string(count) +
-                              " passes (depth " + std::to_string(totalDepth) + " in steps of at most " +
-                              std::to_string(maxInfeed) + "); the reference plans at most " +
-                              std::to_string(static_cast<long>(kMostRoughingPasses)));
+    throw NotSupported(line, "the stock-removal cycle would make " + countText(count) +
+                                 " passes (depth " + shortDecimalText(totalDepth) + " mm in steps of at most " +
+                                 shortDecimalText(maxInfeed) + " mm); cyclecert plans at most " +
+                                 countText(kMostRoughingPasses));
   }
   return {static_cast<int>(count), totalDepth / count};
 }
@@ -234,7 +236,7 @@ class StockRemovalPlanner {
   void push(Move m) {
     if (moves_.size() >= kMostCycleMoves) {
       throw NotSupported(c_.line, "the stock-removal cycle would make more than " +
-                                      std::to_string(static_cast<long>(kMostCycleMoves)) +
+                                      countText(kMostCycleMoves) +
                                       " moves (DAM or the infeed depth too small for the contour)");
     }
     moves_.push_back(std::move(m));
@@ -245,6 +247,9 @@ class StockRemovalPlanner {
   void rough() {
     const double top = start_.x - c_.clearance.x;
     const std::vector<double> levels = c_.mainLevels(top, lowestX(c_.profile), c_.maxInfeed, c_.line);
+    // PROG.CAP.WORK: each level meets the profile.
+    requireWorkWithinTheCap("the stock-removal cycle", static_cast<double>(levels.size() - 1), c_.profile.size(),
+                            " (infeed of at most " + shortDecimalText(c_.maxInfeed) + " mm)", c_.line);
     frontStretchEnd_ = frontStretchEnd(c_.profile, levels);
     approachStart();
     const int count = static_cast<int>(levels.size()) - 1;

@@ -15,7 +15,33 @@ std::shared_ptr<const SiemensBlocks> SiemensSubprograms::parsed(std::string_view
   return std::make_shared<const SiemensBlocks>(parseSiemensSubprogram(text, file));
 }
 
+namespace {
+
+// SIEMENS.SUB (interpretation): a contour subprogram holds the contour. A subprogram call in it (L42;
+// the contour's own name would recur without end) or a cycle call is refused at its line and
+// column rather than passed over: the reference follows no call from a contour.
+const SiemensBlocks& contourOnly(const SiemensBlocks& sub, const std::string& name) {
+  for (const SiemensBlock& b : sub.blocks) {
+    const std::string expected = "a block of the contour " + name +
+                                 " (G0–G3 with X, Z, CR=, I/K, CHF=, CHR=, RND=, F; RET or M17 at its end): "
+                                 "the reference follows no call from a contour";
+    if (b.subprogramCall) {
+      const bool itself = equalIgnoringCase(b.subprogramCall->text, name);
+      throw ParseError({sub.file, b.line, b.subprogramCall->column}, expected,
+                       "the subprogram call " + b.subprogramCall->text + (itself ? " (the contour calling itself)" : ""));
+    }
+    if (b.cycle) throw ParseError({sub.file, b.line, b.cycle->column}, expected, "the cycle call " + b.cycle->name);
+  }
+  return sub;
+}
+
+}  // namespace
+
 const SiemensBlocks& SiemensSubprograms::find(const std::string& name, const std::string& file, int line, int column) {
+  return contourOnly(located(name, file, line, column), name);
+}
+
+const SiemensBlocks& SiemensSubprograms::located(const std::string& name, const std::string& file, int line, int column) {
   for (const PrintedSubprogram& p : program_.printed) {
     if (equalIgnoringCase(p.name, name)) return p.body;
   }

@@ -36,10 +36,12 @@ class SiemensSubprograms {
                      SiemensSubprogramParser parse = {});
 
   // The subprogram's blocks. Throws ParseError at `where` (the _CNAME or NPP that names it) when
-  // it is in none of the three places, naming them.
+  // it is in none of the three places, naming them; at the call when the contour calls a
+  // subprogram (itself included) or a cycle.
   const SiemensBlocks& find(const std::string& name, const std::string& file, int line, int column);
 
  private:
+  const SiemensBlocks& located(const std::string& name, const std::string& file, int line, int column);
   const SiemensProgram& program_;
   std::vector<GivenSubprogram> given_;
   std::string siblingDirectory_;

@@ -30,6 +30,11 @@ constexpr double kLegendRowSpacing = 22;
 constexpr std::size_t kMaxLegendLabel = 48;  // characters of an engine name in the legend
 constexpr double kLabelSpacing = 14;  // minimum vertical distance between diameter labels
 constexpr std::size_t kMaxDiameterLabels = 12;
+// Size bounds (README "Limits"): a toolpath may hold a million moves (kMostMovesPerToolpath) and
+// a judgement thousands of findings; the picture draws the first ones and says how many it left
+// out, so that an SVG stays a few megabytes (the toolpath JSON and report.json hold everything).
+constexpr std::size_t kMostMovesDrawn = 50'000;
+constexpr std::size_t kMostFindingsDrawn = 50;
 
 constexpr const char* kFinishColour = "#222222";
 constexpr const char* kRoughColour = "#e08a00";
@@ -326,12 +331,23 @@ std::string highlightLabel(const View& v, const Highlight& h) {
                      {12, kHighlightColour, nearRight ? "end" : "start", true});
 }
 
+// "and 950,000 more moves not drawn": a line at the plot's bottom left when `count` is beyond
+// `drawn` (`row`: pixels above the plot's bottom), else nothing.
+std::string notDrawnNote(std::size_t count, std::size_t drawn, const std::string& what, double row) {
+  if (count <= drawn) return {};
+  return textElement("not-drawn", kPlotLeft + 4, kPlotBottom - row,
+                     "the first " + std::to_string(drawn) + " " + what + " drawn, and " +
+                         std::to_string(count - drawn) + " more (every one is in the JSON)",
+                     {11, "#555555", "start", false});
+}
+
 // Findings' witnesses in magenta, over everything else.
 std::string highlightElements(const View& v, const std::vector<Highlight>& highlights) {
   if (highlights.empty()) return {};
   const char* colour = kHighlightColour;
   std::string out = "<g id=\"findings\">\n";
-  for (const Highlight& h : highlights) {
+  for (std::size_t i = 0; i < std::min(highlights.size(), kMostFindingsDrawn); ++i) {
+    const Highlight& h = highlights[i];
     out += "<g class=\"finding\"><title>" + svgEscape(h.label) + "</title>\n";
     for (const auto& region : h.regions) out += polygonElement(v, region, "witness-region", colour, colour, 0.35);
     for (const Segment& s : h.segments) out += pathElement("witness-segment", segmentPathData(v, s), {colour, 3.5});
@@ -344,6 +360,7 @@ std::string highlightElements(const View& v, const std::vector<Highlight>& highl
     out += highlightLabel(v, h);
     out += "</g>\n";
   }
+  out += notDrawnNote(highlights.size(), kMostFindingsDrawn, "findings", 16);
   return out + "</g>\n";
 }
 
@@ -371,11 +388,13 @@ std::string contourPath(const View& v, const Contour& c, const std::string& cls,
 // Every move of `path` as one <path> in a group with the given id.
 std::string moveGroup(const View& v, const Toolpath& path, const char* id, const Stroke& rapid, const Stroke& feed) {
   std::string out = "<g id=\"" + std::string(id) + "\">\n";
-  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+  for (std::size_t i = 0; i < std::min(path.moves.size(), kMostMovesDrawn); ++i) {
     const bool isRapid = path.moves[i].kind == MoveKind::Rapid;
     out += pathElement(isRapid ? "rapid" : "feed", segmentPathData(v, moveSegment(path, i)),
                        isRapid ? rapid : feed);
   }
+  out += notDrawnNote(path.moves.size(), kMostMovesDrawn, std::string(id) == "overlay" ? "overlay moves" : "moves",
+                      std::string(id) == "overlay" ? 30 : 4);
   return out + "</g>\n";
 }
 
@@ -414,7 +433,7 @@ std::string passLabel(const View& v, Point from, Point to, int pass) {
 std::string passLabels(const View& v, const Toolpath& path) {
   std::string out = "<g id=\"pass-labels\">\n";
   std::set<int> labelled;
-  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+  for (std::size_t i = 0; i < std::min(path.moves.size(), kMostMovesDrawn); ++i) {
     const Move& m = path.moves[i];
     if (m.kind != MoveKind::Feed || m.phase != MovePhase::Pass || !labelled.insert(m.pass).second) continue;
     out += passLabel(v, path.from(i), m.to, m.pass);

@@ -19,6 +19,9 @@
 // beside its first point (the divergence marker "first divergence: move N"); other highlights keep
 // the label as a tooltip only.
 //
+// Size (README "Limits"): the first 50,000 moves of a toolpath (and of an overlay) and the first 50
+// highlights are drawn, and a grey line at the plot's bottom left says how many more there are.
+//
 // The document never contains NaN or infinity (non-finite coordinates are left out of the scaling
 // and written as 0), and degenerate input (nothing to draw, a single point) still gives a valid
 // document.
