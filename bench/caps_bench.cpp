@@ -10,7 +10,7 @@
 #include <chrono>
 #include <string>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/gcode/program_limits.h"
 #include "reference/model/toolpath.h"

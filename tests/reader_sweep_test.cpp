@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
 
 namespace cyclecert {

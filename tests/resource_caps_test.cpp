@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/reference_plan.h"
+#include "harness/engines/reference_plan.h"
 #include "oracles/material/region.h"
 #include "reference/gcode/parser.h"
 #include "reference/gcode/program_limits.h"
