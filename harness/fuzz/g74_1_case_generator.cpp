@@ -181,15 +181,19 @@ void fitTheWork(G74_1FuzzCase& g) {
 // groove's u, from the mouth corner r1 behind S to the far end of the mouth), the tool on the air
 // side of the start level over the mouth (docs/g74_1.md I7: the start level is in air over the
 // whole groove), so its straight rapids to A11 and back (I18, I20) stay in air.
-void placeTheGroove(G74_1FuzzCase& g, const Placing& place) {
+// A nose of radius R (I26) comes down onto A11 whole: it stands 3R further on the air side and at
+// least 3R inside the groove's width (its centre and tip within 2R of the point), so that ① sweeps
+// it across neither the stock nor the mouth's corners.
+void placeTheGroove(G74_1FuzzCase& g, const Placing& place, int noseRadius) {
   const int sh = g.depth > 0 ? 1 : -1, sd = g.width > 0 ? 1 : -1;
   const int farEnd = static_cast<int>(std::ceil(mouthFarEnd(g)));
   const int radius = place.base + (sd < 0 ? farEnd : 2 * g.corners[0]) + 100;
   g.startX = 2 * radius;
   g.startZ = place.z;
-  const int across = std::min(place.along, farEnd * 9 / 10);
+  const int margin = 3 * noseRadius;
+  const int across = std::clamp(std::min(place.along, farEnd * 9 / 10), margin, std::max(margin, farEnd * 9 / 10 - margin));
   g.beforeX = 2 * (radius + sd * across);
-  g.beforeZ = place.z - sh * place.clear;
+  g.beforeZ = place.z - sh * (place.clear + margin);
 }
 
 constexpr G74_1Fault kFaults[] = {
@@ -251,9 +255,9 @@ FuzzCase grooveCaseFrom(const GrooveChoices& choice, const GrooveSizes& groove, 
   chooseTheCutting(g, choice, cutting);
   fitTheGroove(g);
   fitTheWork(g);
-  placeTheGroove(g, place);
-  drawFault(g, choice);
   chooseTheNose(c, choice, cutting);
+  placeTheGroove(g, place, c.noseRadius);
+  drawFault(g, choice);
   return c;
 }
 

@@ -290,7 +290,8 @@ Segment GrooveSpec::toPlane(const Segment& local) const {
 Point GrooveSpec::roughStart() const {
   if (noseRadius <= 0) return grooveUW(rough.nearMouth.x + toolWidth, 0);
   const double a = angleA * kPi / 180;
-  return grooveUW(rough.nearMouth.x - rough.nearMouth.z * cotDeg(angleA) + noseRadius / std::sin(a), 0);
+  // The flank's line moved in by R, at the centre's depth −R (its lowest point on the start level).
+  return grooveUW(rough.nearMouth.x - (rough.nearMouth.z + noseRadius) * cotDeg(angleA) + noseRadius / std::sin(a), 0);
 }
 
 std::vector<double> GrooveSpec::layerTops() const {
