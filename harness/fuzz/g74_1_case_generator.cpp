@@ -35,7 +35,8 @@ struct GrooveChoices {
   int cornerKinds;   // P(abde) written when ≥ 5 (else every corner a chamfer, by default)
   int layers;        // no V when < 5, else V for (choice − 4) layers: 1…5
   int allowances;    // none when < 4; Δu 4–5, Δw 6–7, both 8–9
-  int tool;          // a pointed tool (no I) when < 3 — with a nose radius under G41/G42 when 2 —
+  int tool;          // a pointed tool (no I) when < 3 — with a nose radius under G41/G42 when 2 and
+                     // the variant 0 —
                      // else the grooving tool drawn
   int pathType;      // J absent 0–2, J0 written 3, J1 4–6, J2 7–9
   int stepsInMm;     // parameter 182#7 = 1 (P, Q in mm) when odd
@@ -231,14 +232,15 @@ void drawFault(G74_1FuzzCase& g, const GrooveChoices& choice) {
   }
 }
 
-// A pointed tool with a nose radius under G41/G42 (docs/g74_1.md I26), one pointed tool in three: its
-// radius and tip read from the tool width drawn (unused by a pointed tool, so the other cases draw
-// as before), the radius kept within 15 % of the floor and 20 % of the depth — well inside what the
+// A pointed tool with a nose radius under G41/G42 (docs/g74_1.md I26), one case in a hundred (tool
+// choice 2 with variant 0: a nose's replay, a disc swept as exact regions, costs the oracles about
+// fourteen times a point's, and G74.1's fuzz rate must hold): its radius and tip read from the tool
+// width drawn (unused by a pointed tool, so the other cases draw as before), the radius kept within 15 % of the floor and 20 % of the depth — well inside what the
 // rough groove holds (the floor keeps half its width and two thirds of its depth: fitTheGroove) —
 // and at least 0.05 mm; the compensation on the groove's inside (G41 when h and d have the same sign).
 void chooseTheNose(FuzzCase& c, const GrooveChoices& choice, const CuttingSizes& sizes) {
   const G74_1FuzzCase& g = c.groove;
-  if (choice.tool != 2) return;
+  if (choice.tool != 2 || choice.variant != 0) return;
   const int largest = std::min(std::abs(g.width) / 2 * 15 / 100, std::abs(g.depth) * 20 / 100);
   if (largest < 5) return;
   c.noseRadius = std::clamp(sizes.toolWidth / 4, 5, largest);
