@@ -201,7 +201,8 @@ class SpecReader {
       return;
     }
     startMovesAfterCycles();
-    out_.grooves.push_back(readGrooveSpec(grooveBlock_ ? &program_.blocks[*grooveBlock_] : nullptr, b, state_, params_));
+    out_.grooves.push_back(
+        readGrooveSpec(grooveBlock_ ? &program_.blocks[*grooveBlock_] : nullptr, b, state_, params_, tool_));
   }
 
   // A cycle block (G70, or G71/G72 with P/Q) ends the moves after the cycles read so far: they were

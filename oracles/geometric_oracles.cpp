@@ -129,12 +129,13 @@ Finding grooveFinding(const Oracle& o, const JudgeInput& in, const GrooveReplay&
                       const ToolCrossing& c, const std::string& what, const std::vector<std::string>& rules) {
   std::ostringstream m;
   m << what;
-  if (r.tool.isPoint()) m << " over " << c.amount << " mm";
+  if (r.noseRadius > 0) m << ": the nose of radius " << r.noseRadius << " sweeps " << c.amount << " mm² of it (" << c.thickness << " mm thick)";
+  else if (r.tool.isPoint()) m << " over " << c.amount << " mm";
   else m << ": the " << r.tool.width << " mm blade sweeps " << c.amount << " mm² of it (" << c.thickness << " mm thick)";
   Finding f = finding(o, i, m.str());
   f.rules = rules;
   f.witness.segment = in.path.segment(i);
-  if (r.tool.isPoint()) {
+  if (r.tool.isPoint() && r.noseRadius <= 0) {
     for (const Segment& piece : c.pieces) {
       f.witness.regions.push_back({r.groove->toPlane(piece.from), r.groove->toPlane(piece.to)});
     }

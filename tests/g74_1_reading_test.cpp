@@ -95,13 +95,28 @@ TEST(G74_1Reading, OnlyTheGskProfileHasG74_1) {
   EXPECT_THROW(planGsk(groove("", ""), {}, "fanuc-0i-f"), NotSupported);
 }
 
-TEST(G74_1Reading, APointedToolUnderG41IsNotSupportedYetAGroovingToolIgnoresIt) {
-  EXPECT_THROW(planGsk("G41;\n" + groove("", "")), NotSupported);
+TEST(G74_1Reading, APointedToolUnderG41WithoutANoseRadiusIsAPointAGroovingToolIgnoresIt) {
+  // I13: no nose radius, nothing to offset: the point path of G40 (the runner warns).
+  const Toolpath point = planGsk("G41;\n" + groove("", ""));
+  ASSERT_FALSE(point.alarm) << point.alarm->message;
+  EXPECT_EQ(point.moves.size(), planGsk(groove("", "")).moves.size());
   const Toolpath t = planGsk("G41;\n" + groove("", " I0.5"));
   ASSERT_FALSE(t.alarm) << t.alarm->message;
   bool warned = false;
   for (const Warning& w : t.warnings) warned = warned || w.message.find("ignored by G74.1") != std::string::npos;
   EXPECT_TRUE(warned);
+}
+
+TEST(G74_1Reading, OtherPlanesAreRefusedNamingTheRule) {
+  for (const char* plane : {"G17", "G19"}) {
+    try {
+      planGsk(std::string(plane) + ";\nG00 X50 Y0 Z5 F0.1;\nG74.1 X40 Z0 P1 Q2 H-4 D-4;\nG74.1 R0.5;\n");
+      ADD_FAILURE() << plane << " was planned";
+    } catch (const NotSupported& e) {
+      EXPECT_NE(std::string(e.what()).find("I28"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(plane), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(G74_1Reading, TheFirstBlockAloneMovesNothing) {

@@ -36,7 +36,9 @@ struct GrooveChoices {
   int cornerKinds;   // P(abde) written when ≥ 5 (else every corner a chamfer, by default)
   int layers;        // no V when < 5, else V for (choice − 4) layers: 1…5
   int allowances;    // none when < 4; Δu 4–5, Δw 6–7, both 8–9
-  int tool;          // a pointed tool (no I) when < 3, else the grooving tool drawn
+  int tool;          // a pointed tool (no I) when < 3 — with a nose radius under G41/G42 when 2 and
+                     // the variant 0 —
+                     // else the grooving tool drawn
   int pathType;      // J absent 0–2, J0 written 3, J1 4–6, J2 7–9
   int stepsInMm;     // parameter 182#7 = 1 (P, Q in mm) when odd
   int fault;         // one invalid value when 9 (one case in ten)
@@ -63,7 +65,7 @@ struct GrooveSizes {
 struct CuttingSizes {
   int radialStep, peck, retract;  // Δi (diameter), Δk, e
   int allowanceX, allowanceZ;     // Δu (diameter), Δw
-  int toolWidth;                  // I
+  int toolWidth;                  // I; a pointed tool's nose radius and tip (tool choice 2) are read from it
 };
 
 // Where the groove and the tool stand (hundredths).
@@ -181,15 +183,19 @@ void fitTheWork(G74_1FuzzCase& g) {
 // groove's u, from the mouth corner r1 behind S to the far end of the mouth), the tool on the air
 // side of the start level over the mouth (docs/g74_1.md I7: the start level is in air over the
 // whole groove), so its straight rapids to A11 and back (I18, I20) stay in air.
-void placeTheGroove(G74_1FuzzCase& g, const Placing& place) {
+// A nose of radius R (I26) comes down onto A11 whole: it stands 3R further on the air side and at
+// least 3R inside the groove's width (its centre and tip within 2R of the point), so that ① sweeps
+// it across neither the stock nor the mouth's corners.
+void placeTheGroove(G74_1FuzzCase& g, const Placing& place, int noseRadius) {
   const int sh = g.depth > 0 ? 1 : -1, sd = g.width > 0 ? 1 : -1;
   const int farEnd = static_cast<int>(std::ceil(mouthFarEnd(g)));
   const int radius = place.base + (sd < 0 ? farEnd : 2 * g.corners[0]) + 100;
   g.startX = 2 * radius;
   g.startZ = place.z;
-  const int across = std::min(place.along, farEnd * 9 / 10);
+  const int margin = 3 * noseRadius;
+  const int across = std::clamp(std::min(place.along, farEnd * 9 / 10), margin, std::max(margin, farEnd * 9 / 10 - margin));
   g.beforeX = 2 * (radius + sd * across);
-  g.beforeZ = place.z - sh * place.clear;
+  g.beforeZ = place.z - sh * (place.clear + margin);
 }
 
 constexpr G74_1Fault kFaults[] = {
@@ -227,6 +233,21 @@ void drawFault(G74_1FuzzCase& g, const GrooveChoices& choice) {
   }
 }
 
+// A pointed tool with a nose radius under G41/G42 (docs/g74_1.md I26), one case in a hundred (tool
+// choice 2 with variant 0: a nose's replay, a disc swept as exact regions, costs the oracles about
+// fourteen times a point's, and G74.1's fuzz rate must hold): its radius and tip read from the tool
+// width drawn (unused by a pointed tool, so the other cases draw as before), the radius kept within 15 % of the floor and 20 % of the depth — well inside what the
+// rough groove holds (the floor keeps half its width and two thirds of its depth: fitTheGroove) —
+// and at least 0.05 mm; the compensation on the groove's inside (G41 when h and d have the same sign).
+void chooseTheNose(FuzzCase& c, const GrooveChoices& choice, const CuttingSizes& sizes) {
+  const G74_1FuzzCase& g = c.groove;
+  if (choice.tool != 2 || choice.variant != 0) return;
+  const int largest = std::min(std::abs(g.width) / 2 * 15 / 100, std::abs(g.depth) * 20 / 100);
+  if (largest < 5) return;
+  c.noseRadius = std::clamp(sizes.toolWidth / 4, 5, largest);
+  c.tip = (sizes.toolWidth / 10) % 10;
+}
+
 FuzzCase grooveCaseFrom(const GrooveChoices& choice, const GrooveSizes& groove, const CuttingSizes& cutting,
                         const Placing& place) {
   FuzzCase c;
@@ -237,7 +258,8 @@ FuzzCase grooveCaseFrom(const GrooveChoices& choice, const GrooveSizes& groove, 
   chooseTheCutting(g, choice, cutting);
   fitTheGroove(g);
   fitTheWork(g);
-  placeTheGroove(g, place);
+  chooseTheNose(c, choice, cutting);
+  placeTheGroove(g, place, c.noseRadius);
   drawFault(g, choice);
   return c;
 }
@@ -398,15 +420,21 @@ rc::Gen<FuzzCase> genG74_1Case() {
       genPlacing());
 }
 
+// I26: G41 when h and d have the same sign (the groove's inside left of its passes), else G42.
+int grooveCompensationCode(const G74_1FuzzCase& g) { return (g.depth > 0) == (g.width > 0) ? 41 : 42; }
+
 std::string g74_1Program(const FuzzCase& c) {
   const G74_1FuzzCase& g = c.groove;
-  return "G00 X" + mm(g.beforeX) + " Z" + mm(g.beforeZ) + " F0.1;\n" + grooveBlock(g) + cuttingBlock(g) + "M30;\n";
+  const std::string compensation = c.noseRadius > 0 ? "G" + std::to_string(grooveCompensationCode(g)) + ";\n" : "";
+  return "G00 X" + mm(g.beforeX) + " Z" + mm(g.beforeZ) + " F0.1;\n" + compensation + grooveBlock(g) + cuttingBlock(g) +
+         "M30;\n";
 }
 
 std::optional<FuzzExpectedAlarm> g74_1ExpectedAlarm(const FuzzCase& c) {
   const G74_1Fault f = c.groove.fault;
   if (f == G74_1Fault::None) return std::nullopt;
-  return FuzzExpectedAlarm{faultCode(f), faultInTheGrooveBlock(f) ? 2 : 3};
+  const int compensationLine = c.noseRadius > 0 ? 1 : 0;  // G41/G42 on its own line before the groove
+  return FuzzExpectedAlarm{faultCode(f), (faultInTheGrooveBlock(f) ? 2 : 3) + compensationLine};
 }
 
 std::string describeG74_1Case(const FuzzCase& c) {
@@ -419,7 +447,9 @@ std::string describeG74_1Case(const FuzzCase& c) {
   o << ", Δi " << mm(g.radialStep) << " Δk " << mm(g.peck) << " e " << mm(g.retract);
   if (g.layerDepth > 0) o << ", Δv " << mm(g.layerDepth);
   if (g.allowanceX != 0 || g.allowanceZ != 0) o << ", Δu " << mm(g.allowanceX) << " Δw " << mm(g.allowanceZ);
-  o << (g.toolWidth > 0 ? ", I " + mm(g.toolWidth) : ", pointed tool") << ", J" << g.pathType << ", P/Q in "
+  o << (g.toolWidth > 0 ? ", I " + mm(g.toolWidth) : ", pointed tool");
+  if (c.noseRadius > 0) o << " under G" << grooveCompensationCode(g) << ", nose radius " << mm(c.noseRadius) << " tip " << c.tip;
+  o << ", J" << g.pathType << ", P/Q in "
     << (g.stepsInMm ? "mm (182#7 = 1)" : "increments") << faultText(g.fault);
   return o.str();
 }
@@ -435,6 +465,7 @@ nlohmann::json g74_1SpecJson(const FuzzCase& c, const std::string& tag) {
                    {"program", g74_1Program(c)},
                    {"expect", everyOracleExpectation()},
                    {"derivation", kGeneratedCaseDerivation}};
+  if (c.noseRadius > 0) j["tool"] = {{"nose_radius", c.noseRadius / 100.0}, {"tip", c.tip}};
   if (const auto alarm = g74_1ExpectedAlarm(c)) {
     j["expect"] = alarmExpectation(alarm->code, alarm->line);
     j["derivation"] = "generated by cyclecert fuzz with one invalid G74.1 value: the alarm docs/g74_1.md §1 (I6b) names, at its block";

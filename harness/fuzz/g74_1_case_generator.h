@@ -11,7 +11,9 @@
 // and ∠b (90° half the time, else sharp: 20°…89°), the slope ∠p (0, else below ∠a), the corners
 // r1…r4 (chamfers or rounds, P(abde) written or not), Δi, Δk, e, Δv (absent, or several layers),
 // Δu and Δw (absent, either, both; now and then written negative: I4 reads their magnitude), the
-// tool width I (absent: a pointed tool), J0 (written or not), J1, J2, and parameter 182#7 both
+// tool width I (absent: a pointed tool; one case in a hundred a pointed tool with a nose radius and a tip under
+// G41/G42 on its own line before the groove block, docs/g74_1.md I26), J0 (written or not), J1, J2,
+// and parameter 182#7 both
 // ways (P and Q in IS-C increments or in mm). The start point before the cycle stands over the
 // groove's mouth, in air. A valid draw is fitted so that the tool can cut the groove: the corners,
 // the allowances and the tool width are kept within what the flanks and the floor leave (the

@@ -64,7 +64,7 @@ Finding GrooveMoves::report(const Oracle& o, std::size_t i, std::string message)
 }
 
 std::string GrooveMoves::planeText(Point local) const {
-  const Point p = g.toPlane(local);
+  const Point p = g.controlPoint(local);
   return "X" + shortDecimalText(2 * p.x) + " Z" + shortDecimalText(p.z);
 }
 

@@ -30,8 +30,9 @@ struct GrooveMoves {
   std::size_t profileStart = 0;  // the first move of the profile passes (range.end without any)
   std::vector<AxialCycle> cycles;
 
-  Point from(std::size_t i) const { return g.toLocal(in.path.from(i)); }
-  Point to(std::size_t i) const { return g.toLocal(in.path.moves[i].to); }
+  // Where the tool is judged (local): the programmed point, or a nose's centre (I26).
+  Point from(std::size_t i) const { return g.judgedPoint(in.path.from(i)); }
+  Point to(std::size_t i) const { return g.judgedPoint(in.path.moves[i].to); }
   double du(std::size_t i) const { return to(i).x - from(i).x; }
   double dw(std::size_t i) const { return to(i).z - from(i).z; }
   bool isFeed(std::size_t i) const { return in.path.moves[i].kind == MoveKind::Feed; }
@@ -43,7 +44,7 @@ struct GrooveMoves {
   bool isFeedTowardsTheFloor(std::size_t i) const { return isFeed(i) && isAxial(i) && dw(i) > kGeomEps; }
   // Move i's finding with its segment as the witness.
   Finding report(const Oracle& o, std::size_t i, std::string message) const;
-  // A local point as program text: "X… Z…" (X a diameter).
+  // A local point (as from/to) as program text of its control point: "X… Z…" (X a diameter).
   std::string planeText(Point local) const;
 };
 

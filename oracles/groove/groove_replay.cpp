@@ -5,6 +5,7 @@
 
 #include "oracles/groove/groove_bounds.h"
 #include "oracles/groove/groove_moves.h"
+#include "oracles/groove/groove_nose.h"
 #include "oracles/material/boost_geometry.h"
 
 namespace cyclecert {
@@ -44,14 +45,14 @@ BgRegion stockBandOf(const GrooveSpec& g, const BandFrame& b) {
                      grooveUW(b.uLo, bottom)});
 }
 
-// The local segment of move i.
+// The local segment of move i, as the tool is judged by (a nose: its centre, I26).
 Segment localSegment(const JudgeInput& in, const GrooveSpec& g, std::size_t i) {
   Segment s = in.path.segment(i);
   Segment local = s;
-  local.from = g.toLocal(s.from);
-  local.to = g.toLocal(s.to);
+  local.from = g.judgedPoint(s.from);
+  local.to = g.judgedPoint(s.to);
   if (s.isArc()) {
-    local.center = g.toLocal(s.center);
+    local.center = g.judgedPoint(s.center);
     if (g.depthSign * g.widthSign < 0) local.kind = reversedKind(s.kind);
   }
   return local;
@@ -66,9 +67,15 @@ int shadowSide(const GrooveReplay& r, const Segment& move, bool profilePass) {
   return startSide ? 1 : -1;
 }
 
-// What a feed removes: the blade's sweep, or a point's shadow.
+// A nose's centre path: R back along h from its lowest point, the point it is judged by (I26).
+Segment centrePath(const GrooveReplay& r, const Segment& move) { return move.shifted(grooveUW(0, -r.noseRadius)); }
+
+// What a feed removes: the blade's sweep, a nose's sweep and shadow, or a point's shadow.
 BgRegion removedBy(const GrooveReplay& r, const Segment& move, int side, double shadow, double chordTolerance) {
   if (!r.tool.isPoint()) return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+  if (r.noseRadius > 0) {  // the disc about the centre, R back along h from the point judged (I26)
+    return noseSweptRegion(centrePath(r, move), r.noseRadius, grooveUW(side, 0), shadow, chordTolerance);
+  }
   return sweptRegion(move, grooveUW(side, 0), shadow, grooveUW(0, -1), 0, chordTolerance);
 }
 
@@ -87,6 +94,7 @@ bool clearsAStep(ClearedStaircase& cleared, const GrooveReplay& r, const Segment
     cleared.clearDownTo(e.uFrom, e.uTo, e.wDeepest);
     return true;
   }
+  if (r.noseRadius > 0) return false;  // a disc's sweep: an exact region (groove_nose.h)
   if (alongU) return true;
   const double u = move.from.x;
   const double uFrom = side > 0 ? u : u - shadow, uTo = side > 0 ? u + shadow : u;
@@ -109,7 +117,28 @@ BgRegion materialNow(const BgRegion& withoutTheOthers, const ClearedStaircase& c
 
 }  // namespace
 
-BgRegion GrooveReplay::leftover() const { return checkedIntersection(remaining, target); }
+BgRegion GrooveReplay::leftover() const { return checkedIntersection(remaining, reachable); }
+
+namespace {
+
+// A move's extent: a nose's is its centre's grown by R on every side (a box around the disc's sweep).
+ToolExtent extentOf(const GrooveReplay& r, const Segment& move, double chord) {
+  if (r.noseRadius <= 0) return toolExtent(move, r.tool.width, chord);
+  ToolExtent e = toolExtent(centrePath(r, move), 0, chord);
+  e.uFrom -= r.noseRadius;
+  e.uTo += r.noseRadius;
+  e.wShallowest -= r.noseRadius;
+  e.wDeepest += r.noseRadius;
+  return e;
+}
+
+ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, const Segment& move, double eps,
+                               double chord) {
+  if (r.noseRadius > 0) return noseCrossing(region, centrePath(r, move), r.noseRadius, eps, chord);
+  return toolCrossing(region, move, r.tool, r.blade, eps, chord);
+}
+
+}  // namespace
 
 std::vector<std::vector<Point>> GrooveReplay::planeOutlines(const BgRegion& local) const {
   std::vector<std::vector<Point>> out = outlinesOf(local);
@@ -126,6 +155,7 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   GrooveReplay r;
   r.groove = g;
   r.tool.width = g->toolWidth;
+  r.noseRadius = g->noseRadius;
   r.range = {firstMoveOfTheCycles(in), firstMoveAfterTheCycles(in)};
   const BandFrame band = bandFrameOf(*g);
   r.stock = stockBandOf(*g, band);
@@ -136,6 +166,7 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   r.blade = {grooveUW(-1, 0), grooveUW(0, -1), span + 2 * kStockMargin};
   r.target = interiorOf(g->target(), r.blade.length, chord);
   r.part = without(r.stock, r.target);
+  r.reachable = r.noseRadius > 0 ? openedBy(r.target, r.noseRadius) : r.target;
   // J2 finishes a groove roughed before (interpretation): its material is the allowance between the
   // rough and the finish profile.
   BgRegion withoutTheOthers = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
@@ -150,14 +181,14 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   for (std::size_t i = r.range.begin; i < r.range.end; ++i) {
     const Segment move = localSegment(in, *g, i);
     if (distance(move.from, move.to) <= kGeomEps && !move.isArc()) continue;
-    const ToolExtent e = toolExtent(move, r.tool.width, chord);
+    const ToolExtent e = extentOf(r, move, chord);
     if (!partTop || e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack) {
-      r.partCrossings[i] = toolCrossing(r.part, move, r.tool, r.blade, eps, chord);
+      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest)) {
         const BgRegion material = materialNow(withoutTheOthers, cleared, aboveTheBand);
-        r.rapidCrossings[i] = toolCrossing(material, move, r.tool, r.blade, eps, chord);
+        r.rapidCrossings[i] = crossingOfTheTool(r, material, move, eps, chord);
       }
     } else {
       const int side = shadowSide(r, move, moves && i >= moves->profileStart);

@@ -8,7 +8,10 @@
 // - a pointed tool (no I, I13) is a point; each peck removes its shadow towards the start side of
 //   the steps (−u: the axial cycles step along +u, so what lies behind a peck down to its depth is
 //   cut), the point model's shadow in the groove's frame; a profile pass's feed (groove_moves.h)
-//   removes its shadow towards the groove's inside (+u on the start side, −u on the far side).
+//   removes its shadow towards the groove's inside (+u on the start side, −u on the far side);
+// - a pointed tool's nose under G41/G42 (I26, groove_nose.h) is the disc of radius R around the
+//   nose centre (each move's control point − R·tip): a move sweeps it, a feed removes the sweep and
+//   its shadow as a point's; what it must empty is the target opened by the disc.
 // The stock (interpretation, oracles/README.md): the part in front of the face at S — the band
 // below the mouth line (the outer bottom through S at the slope ∠p) down to 1 mm below the groove's
 // floor, over the groove's span at the mouth plus the tool width and 1 mm on both sides. The part
@@ -28,15 +31,17 @@ namespace cyclecert {
 struct GrooveReplay {
   const GrooveSpec* groove = nullptr;
   ToolShape tool;
+  double noseRadius = 0;     // a pointed tool's nose under G41/G42 (groove_nose.h); 0: none
   BladeFrame blade;          // the blade's rectangle in the groove's frame
   MoveRange range;           // the cycle's moves
   BgRegion stock;            // local frame
   BgRegion target;           // the groove's interior the cycle must empty (local)
+  BgRegion reachable;        // the part of target the tool can reach: target, or opened by a nose
   BgRegion part;             // the stock without the target: no move may enter it (local)
   BgRegion remaining;        // the material after the cycle's last move (local)
   std::vector<ToolCrossing> partCrossings;   // per move of the path (empty outside the range)
   std::vector<ToolCrossing> rapidCrossings;  // per move: material still standing a rapid crosses
-  // What remains of the target's interior after the last move (local).
+  // What remains of the reachable target after the last move (local).
   BgRegion leftover() const;
   // A local region's outlines in the plane (witnesses).
   std::vector<std::vector<Point>> planeOutlines(const BgRegion& local) const;

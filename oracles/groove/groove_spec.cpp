@@ -1,6 +1,6 @@
 // The oracles' own reading of a G74.1 program (G74_1.FMT, G74_1.ADDR, G74_1.RANGE) and the groove's
 // outline built from docs/g74_1.md §3–§5 — written apart from reference/cycles/g74_1*.cpp, so that
-// an oracle does not agree with the planner by construction. The interpretations I1…I21 are the
+// an oracle does not agree with the planner by construction. The interpretations I1…I28 are the
 // docs' (and specs/rules.json's).
 #include "oracles/groove/groove_spec.h"
 
@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "reference/model/alarms.h"
+#include "reference/model/offset.h"
 
 namespace cyclecert {
 
@@ -218,6 +219,8 @@ GrooveOutline buildOutline(const GrooveSpec& g, double side, double bottom) {
   }
   GrooveOutline o;
   o.nearMouth = s;
+  o.floorNear = n;
+  o.floorFar = f;
   o.floorDepth = floorW;
   o.floorFrom = r3.exit.x;
   o.floorTo = r4.entry.x;
@@ -242,6 +245,33 @@ void requireFloorForTheBlade(const GrooveOutline& o, double toolWidth) {
   if (o.floorTo - o.floorFrom < toolWidth - kFitEps) throw Misfit{"the floor is narrower than the tool width I (§7)"};
 }
 
+// I26: a pointed tool (no I) under G41/G42 with a nose radius: the groove's inside lies left of its
+// profile passes when h and d have the same sign (G41), else right (G42); the other code is PS0041.
+void readNose(const Block& cutting, const ModalState& s, const ToolOffset& tool, GrooveSpec& g) {
+  if (s.tnrc == 40 || cutting.has('I') || tool.noseRadius <= 0) return;
+  const int inside = g.depthSign * g.widthSign > 0 ? 41 : 42;
+  if (s.tnrc != inside) {
+    raise(alarm::kInterference, cutting.line,
+          "a pointed tool under G" + std::to_string(s.tnrc) + " with h·d of this sign has the groove on its other side: G" +
+              std::to_string(inside) + " (I26)");
+  }
+  g.noseRadius = tool.noseRadius;
+  if (tool.tip >= 0 && tool.tip <= 9) g.tipShift = tool.noseRadius * imaginaryTipDirection(tool.tip);
+}
+
+// I27: the nose centre must find a floor R above the rough floor between the flanks moved in by R:
+// at that depth the near flank's line moved in lies R·tan(∠a/2) beyond N, the far one R·tan(∠b/2)
+// before F; and the groove must be deeper than R.
+void requireTheNoseFits(const GrooveSpec& g) {
+  if (g.noseRadius <= 0) return;
+  const GrooveOutline& o = g.rough;
+  const double halfA = g.angleA * kPi / 360, halfB = g.angleB * kPi / 360;
+  const double room = o.floorFar.x - o.floorNear.x - g.noseRadius * (std::tan(halfA) + std::tan(halfB));
+  if (room <= kFitEps || o.floorDepth <= g.noseRadius + kFitEps) {
+    throw Misfit{"the nose radius R does not fit the rough groove (I27)"};
+  }
+}
+
 }  // namespace
 
 bool givesTheGroove(const Block& b) { return b.has('X') || b.has('Z'); }
@@ -257,7 +287,12 @@ Segment GrooveSpec::toPlane(const Segment& local) const {
   return s;
 }
 
-Point GrooveSpec::roughStart() const { return grooveUW(rough.nearMouth.x + toolWidth, 0); }
+Point GrooveSpec::roughStart() const {
+  if (noseRadius <= 0) return grooveUW(rough.nearMouth.x + toolWidth, 0);
+  const double a = angleA * kPi / 180;
+  // The flank's line moved in by R, at the centre's depth −R (its lowest point on the start level).
+  return grooveUW(rough.nearMouth.x - (rough.nearMouth.z + noseRadius) * cotDeg(angleA) + noseRadius / std::sin(a), 0);
+}
 
 std::vector<double> GrooveSpec::layerTops() const {
   const double bottom = roughDepth();
@@ -278,7 +313,7 @@ std::optional<Alarm> grooveBlockAlarm(const Block& groove, const ModalState& sta
 }
 
 GrooveSpec readGrooveSpec(const Block* groove, const Block& cutting, const ModalState& state,
-                          const MachineParams& params) {
+                          const MachineParams& params, const ToolOffset& tool) {
   GrooveSpec g;
   g.line = cutting.line;
   g.before = state.planePoint();
@@ -289,6 +324,7 @@ GrooveSpec readGrooveSpec(const Block* groove, const Block& cutting, const Modal
     }
     readGrooveBlock(*groove, state, params, g);
     readCuttingBlock(cutting, state, g);
+    readNose(cutting, state, tool, g);
   } catch (const GrooveAlarm& a) {
     g.forbiddenBy = a.alarm;
     return g;
@@ -300,6 +336,12 @@ GrooveSpec readGrooveSpec(const Block* groove, const Block& cutting, const Modal
     if (g.finishes()) requireFloorForTheBlade(g.finish, g.toolWidth);
   } catch (const Misfit& m) {
     g.forbiddenBy = Alarm{std::string(alarm::kCuttingAmount), "G74.1: " + m.why, cutting.line, "cycle block"};
+    return g;
+  }
+  try {
+    requireTheNoseFits(g);
+  } catch (const Misfit& m) {
+    g.forbiddenBy = Alarm{std::string(alarm::kInterference), "G74.1: " + m.why, cutting.line, "cycle block"};
   }
   return g;
 }

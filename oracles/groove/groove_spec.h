@@ -15,6 +15,7 @@
 #include "reference/model/geometry.h"
 #include "reference/model/params.h"
 #include "reference/model/program.h"
+#include "reference/model/tool.h"
 #include "reference/model/toolpath.h"
 
 namespace cyclecert {
@@ -37,6 +38,7 @@ struct GrooveOutline {
   Point nearMouth;         // S (finish) or S' (rough): the near flank on the mouth line, before r1
   double floorDepth = 0;   // w of the floor
   double floorFrom = 0, floorTo = 0;  // u of the floor's flat part (after r3, before r4)
+  Point floorNear, floorFar;  // the trapezoid's floor vertices N and F, before r3 and r4 cut them
 };
 
 struct GrooveSpec {
@@ -58,6 +60,10 @@ struct GrooveSpec {
   double flankAllowance = 0;  // Δu / 2
   double floorAllowance = 0;  // Δw
   double toolWidth = 0;       // r of the grooving tool (I); 0: a pointed tool
+  // I26: a pointed tool under G41/G42 with a nose radius R: the control point the moves give is the
+  // imaginary tip, the nose centre + tipShift (plane); 0: a point (or a blade).
+  double noseRadius = 0;
+  Point tipShift;
   int pathType = 0;           // J: 0 rough, 1 rough + finish, 2 finish
   // The alarm the controller must stop with (G74_1.RANGE, I6b), read from the program; the
   // outlines below are not built then.
@@ -73,7 +79,14 @@ struct GrooveSpec {
   Point toPlane(Point local) const { return {start.z + depthSign * local.z, start.x + widthSign * local.x}; }
   Point toLocal(Point plane) const { return {depthSign * (plane.z - start.z), widthSign * (plane.x - start.x)}; }
   Segment toPlane(const Segment& local) const;
-  // The rough start A11 (local): the blade's start-side edge on the rough near flank at w = 0 (§6).
+  // A move's control point (plane) as the point the tool is judged by (local): the programmed point,
+  // or a nose's lowest point along h (I26: the centre, the tip − tipShift, + R along h), which the
+  // steps treat as a point tool's: on the start level when the nose touches it from above.
+  Point judgedPoint(Point control) const { return toLocal(control - tipShift) + grooveUW(0, noseRadius); }
+  // And back: the control point (plane) of a local point the tool is judged by.
+  Point controlPoint(Point judged) const { return toPlane(judged - grooveUW(0, noseRadius)) + tipShift; }
+  // The rough start A11 (local, as judgedPoint): the blade's start-side edge on the rough near flank
+  // at w = 0 (§6); a nose touching the rough near flank's line and the start level (I26).
   Point roughStart() const;
   // The finish start: S shifted by the tool width along d (I12).
   Point finishStart() const { return grooveUW(toolWidth, 0); }
@@ -86,8 +99,9 @@ struct GrooveSpec {
 // first block `groove` before it (nullptr: none, PS0061). `state` is the modal state at the second
 // block; its position is the point before the cycle. Alarms go to forbiddenBy; a first block's own
 // alarm names its line (the controller raises it there).
+// `tool`: the nose radius and tip in force (a pointed tool under G41/G42: I26, I27).
 GrooveSpec readGrooveSpec(const Block* groove, const Block& cutting, const ModalState& state,
-                          const MachineParams& params);
+                          const MachineParams& params, const ToolOffset& tool = {});
 
 // The alarm the first G74.1 block raises by itself (the controller reads it there: G74_1.RANGE), or
 // nothing.

@@ -96,7 +96,10 @@ bool isFirstLayerStart(const GrooveMoves& m, std::size_t i) {
   const GrooveOutline& rough = m.g.rough;
   if (m.g.corners[0].size <= 0 || rough.chain.empty()) return false;
   const double flankTop = rough.chain.front().to.x;  // the r1 piece ends on the near flank
-  return distance(m.from(i), m.g.roughStart()) <= m.tol && std::abs(m.to(i).x - (flankTop + m.g.toolWidth)) <= m.tol;
+  if (distance(m.from(i), m.g.roughStart()) > m.tol) return false;
+  // A nose's centre (I26) starts where it first meets the near side below r1: within R of that top.
+  if (m.g.noseRadius > 0) return m.to(i).x <= flankTop + m.g.noseRadius + m.tol;
+  return std::abs(m.to(i).x - (flankTop + m.g.toolWidth)) <= m.tol;
 }
 
 class GrooveRadialStepOracle : public Oracle {
@@ -173,7 +176,7 @@ class GrooveReturnsOracle : public Oracle {
   // STEP10, I20: the cycle's last move is a rapid back to the point before it, for every J.
   void judgeReturn(const GrooveMoves& m, std::vector<Finding>& out) const {
     const std::size_t last = m.range.end - 1;
-    const Point before = m.g.toLocal(m.g.before);
+    const Point before = m.g.judgedPoint(m.g.before);
     const bool back = distance(m.to(last), before) <= m.tol;
     if (back && m.isRapid(last)) return;
     std::ostringstream s;

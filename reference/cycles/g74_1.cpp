@@ -1,7 +1,8 @@
 // G74.1 — axial trapezoid groove cycle (GSK, seed 002 §3.23.7): reading its two blocks
 // (G74_1.FMT, G74_1.ADDR, G74_1.RANGE) into a G74_1Cycle and planning it (g74_1_steps.cpp).
-// docs/g74_1.md states every interpretation (I1…I21) that the comments below name.
+// docs/g74_1.md states every interpretation (I1…I28) that the comments below name.
 #include "reference/cycles/g74_1.h"
+#include "reference/cycles/g74_1_nose.h"
 
 #include <array>
 #include <cmath>
@@ -198,24 +199,46 @@ void refuseOtherProfiles(const CycleCall& call) {
                                             call.profile.name + " profile does not have it: use --profile gsk");
 }
 
+// I28: the seed gives G74.1 with X and Z words (the axial Z feed, the radial X step) and no plane, and
+// no documentation of it in another plane was found.
 void refuseOtherPlanes(const CycleCall& call) {
   if (call.modal.axes().gCode == 18) return;
-  throw NotSupported(call.block().line, "G74.1 is planned in the ZX plane (G18) only, the plane of its X and Z words");
+  throw NotSupported(call.block().line, "G74.1 under G" + std::to_string(call.modal.axes().gCode) +
+                                            ": seed 002 gives G74.1 with X and Z words (Z feeds, X steps) only, so it is "
+                                            "planned in the ZX plane (G18) only (G74_1.ADDR, docs/g74_1.md I28); "
+                                            "command G18 before the cycle");
 }
 
-// I13: a pointed tool (no I) under G41/G42 would have its profile passes offset by the nose
-// radius; not modelled. A grooving tool ignores G41/G42 (G74_1.ADDR).
-void checkCompensation(const CycleCall& call, const G74_1Cycle& c, std::vector<Warning>& warnings) {
+std::string compensationCode(int tnrc) { return "G4" + std::to_string(tnrc % 10); }
+
+// I13, I26: a pointed tool (no I) under G41/G42 with a nose radius is planned by its nose centre in
+// the groove eroded by R and moved as its imaginary tip; the side must be the groove's inside as
+// the profile passes run (G41 when h and d have the same sign, else G42: I26), the other side puts
+// the nose outside the groove on every flank — the interference alarm. A grooving tool ignores
+// G41/G42 (G74_1.ADDR).
+void applyCompensation(const CycleCall& call, G74_1Cycle& c, std::vector<Warning>& warnings) {
   if (call.modal.tnrc == 40) return;
-  if (c.toolWidth <= 0 && !call.block().has('I')) {
-    throw NotSupported(call.block().line,
-                       "G74.1 with a pointed tool (no I) under G4" + std::to_string(call.modal.tnrc % 10) +
-                           ": nose-radius compensation of the groove's profile passes is not supported yet; cancel it "
-                           "with G40 before the cycle, or give the grooving tool's width I");
+  const std::string code = compensationCode(call.modal.tnrc);
+  if (call.block().has('I')) {
+    warnings.push_back({call.block().line, code + " is ignored by G74.1 with a grooving tool (I): the blade's corners "
+                                                  "follow the groove (G74_1.ADDR)"});
+    return;
   }
-  warnings.push_back({call.block().line, "G4" + std::to_string(call.modal.tnrc % 10) +
-                                             " is ignored by G74.1 with a grooving tool (I): the blade's corners "
-                                             "follow the groove (G74_1.ADDR)"});
+  if (call.tool.noseRadius <= 0) return;  // the runner warns: nothing to offset
+  const CompensationSide inside = grooveInsideSide(c.frame);
+  const std::string insideCode = inside == CompensationSide::Left ? "G41" : "G42";
+  if (code != insideCode) {
+    throw cycleBlockAlarm(alarm::kInterference, call.block().line,
+                          "G74.1 with a pointed tool under " + code + " puts the nose outside the groove: with h " +
+                              (c.frame.depthSign > 0 ? "> 0" : "< 0") + " and d " + (c.frame.widthSign > 0 ? "> 0" : "< 0") +
+                              " the groove's inside is on the " + (inside == CompensationSide::Left ? "left" : "right") +
+                              " of its profile passes: command " + insideCode + " (G74_1.ADDR, docs/g74_1.md I26)");
+  }
+  if (call.tool.tip < 0 || call.tool.tip > 9) {
+    throw NotSupported(call.block().line, "the imaginary tip " + std::to_string(call.tool.tip) +
+                                              " is not one of 0…9 (--tip, or the case's \"tool\")");
+  }
+  c.nose = GrooveNose{call.tool.noseRadius, call.tool.noseRadius * imaginaryTipDirection(call.tool.tip)};
 }
 
 }  // namespace
@@ -239,7 +262,7 @@ CycleOutcome planG74_1(const CycleCall& call) {
   readGrooveBlock(grooveBlockBefore(call), call, c);
   readCuttingBlock(b, call, c);
   CycleOutcome out;
-  checkCompensation(call, c, out.warnings);
+  applyCompensation(call, c, out.warnings);
   if (c.feed <= 0) {  // I21: the seed's example gives no F
     out.warnings.push_back({b.line, "no cutting feed F before G74.1: its feeds are drawn with F 0 (seed 002's example "
                                     "O0008 gives none)"});
@@ -248,6 +271,8 @@ CycleOutcome planG74_1(const CycleCall& call) {
     out.moves = planG74_1Moves(c);
     out.shape = g74_1FinishShape(c);
     out.roughShape = g74_1RoughShape(c);
+  } catch (const NoseDoesNotFit& e) {  // I27
+    throw cycleBlockAlarm(alarm::kInterference, b.line, std::string("G74.1: ") + e.what());
   } catch (const GrooveDoesNotFit& e) {
     throw cycleBlockAlarm(alarm::kCuttingAmount, b.line, std::string("G74.1: ") + e.what());
   }

@@ -15,6 +15,14 @@ namespace cyclecert {
 // J: which passes the cycle makes (G74_1.ADDR).
 enum class GroovePathType { RoughOnly = 0, RoughAndFinish = 1, FinishOnly = 2 };
 
+// A pointed tool's nose under G41/G42 (I26): the cycle is planned for the nose centre in the groove
+// eroded by `radius`, every move then shifted by `tipShift` (plane: R times the imaginary tip's
+// direction) to the point the control follows.
+struct GrooveNose {
+  double radius = 0;
+  Point tipShift;
+};
+
 // Everything the planner needs, in mm (radius values) in the plane.
 struct G74_1Cycle {
   int line = 0;                    // the second G74.1 block (messages)
@@ -28,6 +36,7 @@ struct G74_1Cycle {
   double flankAllowance = 0;       // Δu/2
   double floorAllowance = 0;       // Δw
   double toolWidth = 0;            // r of a grooving tool (I); 0: a pointed tool
+  std::optional<GrooveNose> nose;  // a pointed tool with a nose radius under G41/G42 (I26)
   GroovePathType pathType = GroovePathType::RoughOnly;
   double feed = 0;                 // the cutting feed in force
 };

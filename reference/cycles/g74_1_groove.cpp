@@ -140,6 +140,8 @@ GrooveProfile buildGrooveProfile(const GrooveShape& g, double flankAllowance, do
   p.floorDepth = t.n.z;
   p.floorFrom = r3.after.x;
   p.floorTo = r4.before.x;
+  p.nearDirection = nearDir;
+  p.farDirection = farDir;
   append(p, r1.cut, GroovePart::CornerR1);
   append(p, line(r1.after, r3.before), GroovePart::NearFlank);
   append(p, r3.cut, GroovePart::CornerR3);

@@ -58,6 +58,7 @@ struct GrooveProfile {
   Point start;                     // S (finish) or S' (rough): the near flank on the mouth
   double floorDepth = 0;           // w of the floor
   double floorFrom = 0, floorTo = 0;  // u of the floor's flat part (after r3, before r4)
+  Point nearDirection, farDirection;  // unit directions of the near flank (down) and far flank (up)
 };
 
 // The finish profile (allowances 0) or the rough profile: each flank moved into the groove by

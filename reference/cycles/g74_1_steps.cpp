@@ -6,6 +6,7 @@
 #include <string>
 
 #include "reference/cycles/g74_1.h"
+#include "reference/cycles/g74_1_nose.h"
 #include "reference/cycles/move_emitter.h"
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/gcode/program_limits.h"
@@ -42,12 +43,27 @@ constexpr double kPeckReachesBmnWithin = 1e-6;  // mm
 // Where a feed meant to end at `next` ends: at Bmn when it reaches or passes it.
 double feedEnd(double next, double bmn) { return next < bmn - kPeckReachesBmnWithin ? next : bmn; }
 
+// A nose's profile is the path of its lowest point (its centre + R along h, g74_1_nose.h): the
+// control point is the centre + R·tip, so the plane point is moved back by R along h and by R·tip.
+Point noseShift(const G74_1Cycle& c) {
+  if (!c.nose) return {};
+  return c.nose->tipShift + Point{-c.frame.depthSign * c.nose->radius, 0};
+}
+
+// The profile the planner's point follows: the groove's (a grooving tool's blade, or a sharp point),
+// or the one the nose centre sees under G41/G42 (I26).
+GrooveProfile profileToPlan(const G74_1Cycle& c, double flankAllowance, double floorAllowance) {
+  if (c.nose) return noseCentreProfile(c.groove, flankAllowance, floorAllowance, c.nose->radius);
+  return buildGrooveProfile(c.groove, flankAllowance, floorAllowance);
+}
+
 class G74_1Planner {
  public:
   explicit G74_1Planner(const G74_1Cycle& c)
       : c_(c),
-        rough_(buildGrooveProfile(c.groove, c.flankAllowance, c.floorAllowance)),
-        finish_(buildGrooveProfile(c.groove, 0, 0)),
+        rough_(profileToPlan(c, c.flankAllowance, c.floorAllowance)),
+        finish_(profileToPlan(c, 0, 0)),
+        shift_(noseShift(c)),
         roughStart_(grooveLocal(rough_.start.x + c.toolWidth, 0)),
         finishStart_(grooveLocal(finish_.start.x + c.toolWidth, 0)),
         moves_(c.before, c.feed) {
@@ -168,8 +184,8 @@ class G74_1Planner {
   void followProfile(const GrooveProfile& profile, MovePhase phase, const char* rule) {
     const std::vector<Segment> path = bladePath(profile, c_.toolWidth);
     if (path.empty()) return;
-    moves_.emit(MoveKind::Feed, c_.frame.toPlane(path.front().from), phase, 0, {rule});
-    for (const Segment& s : path) moves_.emitAlong(MoveKind::Feed, c_.frame.toPlane(s), phase, 0, {rule});
+    moves_.emit(MoveKind::Feed, plane(path.front().from), phase, 0, {rule});
+    for (const Segment& s : path) moves_.emitAlong(MoveKind::Feed, c_.frame.toPlane(s).shifted(shift_), phase, 0, {rule});
   }
 
   // From the profile's end on the mouth: along z to the start level, along x to `to`.
@@ -260,13 +276,17 @@ class G74_1Planner {
     moves_.emit(kind, plane(grooveLocal(u, w)), MovePhase::Pass, static_cast<int>(m) + 1, {rule});
   }
 
-  Point plane(Point local) const { return c_.frame.toPlane(local); }
+  // Local ↔ the plane point the control follows: the programmed point (a blade's corner, a sharp
+  // point), or the imaginary tip of a nose planned by its centre (I26).
+  Point plane(Point local) const { return c_.frame.toPlane(local) + shift_; }
   Point local(Point plane) const {
-    return grooveLocal(c_.frame.widthSign * (plane.x - c_.frame.start.x), c_.frame.depthSign * (plane.z - c_.frame.start.z));
+    const Point p = plane - shift_;
+    return grooveLocal(c_.frame.widthSign * (p.x - c_.frame.start.x), c_.frame.depthSign * (p.z - c_.frame.start.z));
   }
 
   const G74_1Cycle& c_;
   GrooveProfile rough_, finish_;
+  Point shift_;  // plane: the imaginary tip from the nose's lowest point (I26); 0 without a nose
   Point roughStart_, finishStart_;  // A11 and the finish start, local
   std::vector<GrooveLayer> layers_;
   MoveEmitter moves_;

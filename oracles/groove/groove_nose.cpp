@@ -1,0 +1,99 @@
+#include "oracles/groove/groove_nose.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "oracles/material/boost_geometry.h"
+
+namespace cyclecert {
+
+namespace bg = boost::geometry;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The disc's polygon, inscribed: its sides' sagitta R·(1 − cos(π/n)) within the chord tolerance.
+std::vector<Point> discAround(Point centre, double radius, double chordTolerance) {
+  const double step = std::acos(std::clamp(1 - chordTolerance / radius, -1.0, 1.0));
+  const int n = std::clamp(static_cast<int>(std::ceil(kPi / std::max(step, 1e-6))), 12, 720);
+  std::vector<Point> points;
+  points.reserve(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * kPi * k / n;
+    points.push_back(centre + Point{radius * std::cos(a), radius * std::sin(a)});
+  }
+  return points;
+}
+
+BgRegion convexHullOf(const std::vector<Point>& points) {
+  bg::model::multi_point<BgPoint> cloud;
+  for (Point p : points) cloud.push_back(toBg(p));
+  BgPolygon hull;
+  bg::convex_hull(cloud, hull);
+  BgRegion out;
+  if (bg::area(hull) != 0) out.push_back(hull);
+  bg::correct(out);
+  return out;
+}
+
+}  // namespace
+
+BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength,
+                         double chordTolerance) {
+  const std::vector<Point> chords = flatten(move, chordTolerance);
+  const std::vector<Point> disc = discAround({0, 0}, radius, chordTolerance);
+  const Point shadow = shadowLength * shadowDir;
+  BgRegion swept;
+  for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
+    std::vector<Point> points;
+    for (Point d : disc) {
+      for (Point at : {chords[k], chords[k + 1]}) {
+        points.push_back(at + d);
+        if (shadowLength > 0) points.push_back(at + d + shadow);
+      }
+    }
+    BgRegion hull = convexHullOf(points);
+    if (swept.empty()) {
+      swept = std::move(hull);
+    } else if (!hull.empty()) {
+      BgRegion merged;
+      bg::union_(swept, hull, merged);
+      swept = std::move(merged);
+    }
+  }
+  tidy(swept);
+  return swept;
+}
+
+ToolCrossing noseCrossing(const BgRegion& region, const Segment& move, double radius, double epsilon,
+                          double chordTolerance) {
+  ToolCrossing out;
+  if (region.empty()) return out;
+  BgRegion crossed = checkedIntersection(noseSweptRegion(move, radius, {0, 0}, 0, chordTolerance), region);
+  BgRegion thick;
+  for (BgPolygon& p : crossed) {
+    if (thickestRing(BgRegion{p}) > epsilon) thick.push_back(std::move(p));
+  }
+  if (thick.empty()) return out;
+  out.amount = bg::area(thick);
+  out.thickness = thickestRing(thick);
+  out.crossed = std::move(thick);
+  return out;
+}
+
+BgRegion openedBy(const BgRegion& region, double radius) {
+  const BgRegion inner = eroded(region, radius);
+  if (inner.empty()) return inner;
+  namespace strategy = bg::strategy::buffer;
+  const int pointsPerCircle = 72;
+  BgRegion result;
+  bg::buffer(inner, result, strategy::distance_symmetric<double>(radius), strategy::side_straight(),
+             strategy::join_round(pointsPerCircle), strategy::end_round(pointsPerCircle),
+             strategy::point_circle(pointsPerCircle));
+  tidy(result);
+  return checkedIntersection(result, region);
+}
+
+}  // namespace cyclecert

@@ -1,0 +1,28 @@
+#pragma once
+// A pointed tool's round nose in the G74.1 replay (docs/g74_1.md I26; groove_replay.h): the moves are
+// judged by the nose centre (the control point − R·tip), the tool is the disc of radius R around it.
+// A move sweeps the disc along it — the Minkowski sum of the move and the disc — which must not
+// enter the true part (no-gouge), nor material still standing when it is a rapid (rapids-in-air);
+// a feed removes that sweep and its shadow (the tool's body trailing behind the nose, as a point's
+// shadow). The groove a nose can empty is the target opened by the disc (what discs inside it
+// reach): its concave floor corners keep a fillet of R, as any compensated contour leaves them.
+#include "oracles/material/region.h"
+#include "oracles/material/tool_shape.h"
+#include "reference/model/geometry.h"
+
+namespace cyclecert {
+
+// The region the disc of radius R sweeps along `move` (arcs as chords within chordTolerance), with
+// its shadow of `shadowLength` along the unit vector `shadowDir` (0: the disc alone). The disc is
+// the polygon inscribed within chordTolerance.
+BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength, double chordTolerance);
+
+// How far the nose's sweep along `move` enters `region`: the crossed region where a ring of it is
+// thicker (2·area/perimeter) than epsilon; amount its area, as a blade's (tool_shape.h).
+ToolCrossing noseCrossing(const BgRegion& region, const Segment& move, double radius, double epsilon,
+                          double chordTolerance);
+
+// `region` opened by a disc of radius R: the union of the discs inside it.
+BgRegion openedBy(const BgRegion& region, double radius);
+
+}  // namespace cyclecert
