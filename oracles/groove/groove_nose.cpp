@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "oracles/material/boost_geometry.h"
+#include "oracles/material/tool_shape.h"
 
 namespace cyclecert {
 
@@ -25,17 +26,6 @@ std::vector<Point> discAround(Point centre, double radius, double chordTolerance
     points.push_back(centre + Point{radius * std::cos(a), radius * std::sin(a)});
   }
   return points;
-}
-
-BgRegion convexHullOf(const std::vector<Point>& points) {
-  bg::model::multi_point<BgPoint> cloud;
-  for (Point p : points) cloud.push_back(toBg(p));
-  BgPolygon hull;
-  bg::convex_hull(cloud, hull);
-  BgRegion out;
-  if (bg::area(hull) != 0) out.push_back(hull);
-  bg::correct(out);
-  return out;
 }
 
 }  // namespace

@@ -8,9 +8,7 @@ namespace cyclecert {
 
 namespace bg = boost::geometry;
 
-namespace {
-
-BgRegion hullOf(const std::vector<Point>& points) {
+BgRegion convexHullOf(const std::vector<Point>& points) {
   bg::model::multi_point<BgPoint> cloud;
   for (Point p : points) cloud.push_back(toBg(p));
   BgPolygon hull;
@@ -20,8 +18,6 @@ BgRegion hullOf(const std::vector<Point>& points) {
   bg::correct(out);
   return out;
 }
-
-}  // namespace
 
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
   const std::vector<Point> chords = flatten(move, chordTolerance);
@@ -33,7 +29,7 @@ BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b
       points.push_back(chords[k] + c);
       points.push_back(chords[k + 1] + c);
     }
-    BgRegion hull = hullOf(points);
+    BgRegion hull = convexHullOf(points);
     if (swept.empty()) {
       swept = std::move(hull);
     } else if (!hull.empty()) {

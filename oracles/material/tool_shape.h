@@ -25,6 +25,9 @@ struct BladeFrame {
   double length = 0;
 };
 
+// The convex hull of `points` as a region (empty when they span no area).
+BgRegion convexHullOf(const std::vector<Point>& points);
+
 // The Minkowski sum of `move` (arcs as chords within chordTolerance) and the parallelogram spanned
 // from the origin by a·da and b·db: the union of the convex hulls of the parallelogram at each
 // chord's two ends. With a blade frame (a = width along `across`, b = length along `back`) it is the
