@@ -32,29 +32,12 @@ std::vector<Point> discAround(Point centre, double radius, double chordTolerance
 
 BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength,
                          double chordTolerance) {
-  const std::vector<Point> chords = flatten(move, chordTolerance);
-  const std::vector<Point> disc = discAround({0, 0}, radius, chordTolerance);
-  const Point shadow = shadowLength * shadowDir;
-  BgRegion swept;
-  for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
-    std::vector<Point> points;
-    for (Point d : disc) {
-      for (Point at : {chords[k], chords[k + 1]}) {
-        points.push_back(at + d);
-        if (shadowLength > 0) points.push_back(at + d + shadow);
-      }
-    }
-    BgRegion hull = convexHullOf(points);
-    if (swept.empty()) {
-      swept = std::move(hull);
-    } else if (!hull.empty()) {
-      BgRegion merged;
-      bg::union_(swept, hull, merged);
-      swept = std::move(merged);
-    }
+  std::vector<Point> shape = discAround({0, 0}, radius, chordTolerance);
+  if (shadowLength > 0) {
+    const std::size_t n = shape.size();
+    for (std::size_t i = 0; i < n; ++i) shape.push_back(shape[i] + shadowLength * shadowDir);
   }
-  tidy(swept);
-  return swept;
+  return sweptConvexShape(move, shape, chordTolerance);
 }
 
 ToolCrossing noseCrossing(const BgRegion& region, const Segment& move, double radius, double epsilon,

@@ -19,13 +19,12 @@ BgRegion convexHullOf(const std::vector<Point>& points) {
   return out;
 }
 
-BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
+BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
   const std::vector<Point> chords = flatten(move, chordTolerance);
-  const Point corners[4] = {{0, 0}, a * da, a * da + b * db, b * db};
   BgRegion swept;
   for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
     std::vector<Point> points;
-    for (Point c : corners) {
+    for (Point c : shape) {
       points.push_back(chords[k] + c);
       points.push_back(chords[k + 1] + c);
     }
@@ -40,6 +39,10 @@ BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b
   }
   tidy(swept);
   return swept;
+}
+
+BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
+  return sweptConvexShape(move, {{0, 0}, a * da, a * da + b * db, b * db}, chordTolerance);
 }
 
 double thickestRing(const BgRegion& region) {

@@ -28,6 +28,11 @@ struct BladeFrame {
 // The convex hull of `points` as a region (empty when they span no area).
 BgRegion convexHullOf(const std::vector<Point>& points);
 
+// The Minkowski sum of `move` (arcs as chords within chordTolerance) and the convex shape whose
+// points (relative to the tool's programmed point) are `shape`: the union of the convex hulls of the
+// shape at each chord's two ends.
+BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance);
+
 // The Minkowski sum of `move` (arcs as chords within chordTolerance) and the parallelogram spanned
 // from the origin by a·da and b·db: the union of the convex hulls of the parallelogram at each
 // chord's two ends. With a blade frame (a = width along `across`, b = length along `back`) it is the
