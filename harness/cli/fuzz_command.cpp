@@ -49,7 +49,7 @@ Options:
   --engine E          reference | linuxcnc | process:COMMAND | mutant:NAME (`cyclecert engines`)
   --vs B              compare every case with engine B (toolpaths move by move, alarms)
   --cases N           the campaign's number of cases (default 2000 unless --time is given)
-  --time SECONDS      stop after this long
+  --time SECONDS      stop after this long (a slow engine gets its batch in chunks that fit)
   --seed S            the run's seed (default: random, printed); case i uses S + i·0x9E3779B97F4A7C15,
                       so `--seed <case seed> --cases 1` regenerates one case
   --jobs N            workers, each with its own engine (default: the number of cores); the same
