@@ -171,6 +171,13 @@ const std::vector<PlannedCase>& plannedSiemensCases() {
   return planned;
 }
 
+// Those cases read as the oracles read them (the inputs of the oracles' and the replay's benches).
+std::vector<JudgeInput> readSiemensCases() {
+  std::vector<JudgeInput> inputs;
+  for (const PlannedCase& c : plannedSiemensCases()) inputs.push_back(judgeInputFor(judgeRequestFor(c.spec), c.path));
+  return inputs;
+}
+
 // The oracles' reading of a planned SINUMERIK case alone (judgeInputFor: the program read again
 // with recording planners, readSiemensProgramSpec): what a case pays, after the engine, before any
 // oracle judges. The parsed texts are kept per thread (harness/engines/reference_plan.h), as in `fuzz`.
@@ -188,8 +195,7 @@ BENCHMARK(BM_FuzzSiemensReadingOnly)->Unit(benchmark::kMicrosecond);
 // Every oracle on a planned and read SINUMERIK case (judge: the material replay, completeness,
 // no-gouge, the Siemens oracles).
 void BM_FuzzSiemensOraclesOnly(benchmark::State& state) {
-  std::vector<JudgeInput> inputs;
-  for (const PlannedCase& c : plannedSiemensCases()) inputs.push_back(judgeInputFor(judgeRequestFor(c.spec), c.path));
+  const std::vector<JudgeInput> inputs = readSiemensCases();
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(judge(inputs[i++ % inputs.size()]));
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);
@@ -199,8 +205,7 @@ BENCHMARK(BM_FuzzSiemensOraclesOnly)->Unit(benchmark::kMicrosecond);
 // The material replay alone on the same cases (replayMaterial: the implied stock, the part, the
 // moves replayed), the oracles' largest share.
 void BM_FuzzSiemensReplayOnly(benchmark::State& state) {
-  std::vector<JudgeInput> inputs;
-  for (const PlannedCase& c : plannedSiemensCases()) inputs.push_back(judgeInputFor(judgeRequestFor(c.spec), c.path));
+  const std::vector<JudgeInput> inputs = readSiemensCases();
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(replayMaterial(inputs[i++ % inputs.size()]));
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(i), benchmark::Counter::kIsRate);

@@ -106,17 +106,7 @@ TEST(SiemensCallOracles, TheSeedsFinishingCallIsJudgedByItsOwnFeed) {
 TEST(SiemensUndercutOracles, ACutAcrossThePocketOffItsEqualLevelsIsReported) {
   const std::vector<Finding> good = judged(grooveProgram(), "sinumerik-802d", grooveRoughing(0.15).path, kGroove, "L3");
   EXPECT_TRUE(of(good, "siemens-infeed-steps").empty()) << findingsText(good);
-  PathBuilder p({2, 25});
-  const double u = 0.15;
-  p.rapid(1, 21);
-  p.rapid(1, 17.5).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
-  p.rapid(1, 15).feed(-5, 15, 0.3).feed(-5, 16, 0.3).feed(-10, 16, 0.3).rapid(-9, 17).rapid(1, 17);
-  p.rapid(1, 12.5).feed(-5, 12.5, 0.3).feed(-5, 15, 0.3).rapid(-4, 16).rapid(1, 16);
-  p.rapid(1, 10).feed(0, 10, 0.3).feed(-5, 10, 0.3).feed(-5, 12.5, 0.3).rapid(-4, 13.5);
-  p.rapid(-4, 21);
-  p.rapid(-10, 21).feed(-10, 14.5, u).feed(-15, 14.5, u).feed(-15, 16, u).feed(-20, 16, u).feed(-20, 17.5, u).rapid(-19, 18.5);
-  p.rapid(-10, 18.5).feed(-10, 12, u).feed(-15, 12, u).feed(-15, 14.5, u).rapid(-14, 15.5);
-  p.rapid(-14, 21).rapid(1, 21);
+  const PathBuilder p = grooveRoughing(0.15, 14.5);
   const std::vector<Finding> all = judged(grooveProgram(), "sinumerik-802d", p.path, kGroove, "L3");
   const std::vector<Finding> f = of(all, "siemens-infeed-steps");
   ASSERT_EQ(f.size(), 1u) << findingsText(all);

@@ -100,10 +100,11 @@ inline PathBuilder cycle95Roughing() {
 
 // CYCLE95 with a groove (z−10…−15, down to x12), MID 3, FF1 0.3, FF2 0.15: the axis-parallel passes
 // stop at the rim (−10,16); the pocket below the level 17.5 in its own two steps (14.75, 12) at FF2.
+// `firstPocketLevel`: where the pocket's first cut across runs (14.75; a test doctors it).
 inline const char* const kGroove = "G1 X20 Z0\nZ-5\nX32\nZ-10\nX24\nZ-15\nX32\nZ-20\nX40\nRET\n";
 
-inline PathBuilder grooveRoughing(double undercutFeed) {
-  const double u = undercutFeed;
+inline PathBuilder grooveRoughing(double undercutFeed, double firstPocketLevel = 14.75) {
+  const double u = undercutFeed, l = firstPocketLevel;
   PathBuilder p({2, 25});
   p.rapid(1, 21);
   p.rapid(1, 17.5).feed(-20, 17.5, 0.3).feed(-20, 20, 0.3).rapid(-19, 21).rapid(1, 21);
@@ -111,8 +112,8 @@ inline PathBuilder grooveRoughing(double undercutFeed) {
   p.rapid(1, 12.5).feed(-5, 12.5, 0.3).feed(-5, 15, 0.3).rapid(-4, 16).rapid(1, 16);
   p.rapid(1, 10).feed(0, 10, 0.3).feed(-5, 10, 0.3).feed(-5, 12.5, 0.3).rapid(-4, 13.5);
   p.rapid(-4, 21);
-  p.rapid(-10, 21).feed(-10, 14.75, u).feed(-15, 14.75, u).feed(-15, 16, u).feed(-20, 16, u).feed(-20, 17.5, u).rapid(-19, 18.5);
-  p.rapid(-10, 18.5).feed(-10, 12, u).feed(-15, 12, u).feed(-15, 14.75, u).rapid(-14, 15.75);
+  p.rapid(-10, 21).feed(-10, l, u).feed(-15, l, u).feed(-15, 16, u).feed(-20, 16, u).feed(-20, 17.5, u).rapid(-19, 18.5);
+  p.rapid(-10, 18.5).feed(-10, 12, u).feed(-15, 12, u).feed(-15, l, u).rapid(-14, l + 1);
   p.rapid(-14, 21).rapid(1, 21);
   return p;
 }

@@ -24,6 +24,16 @@ namespace {
 using namespace siemens_test;
 
 // CYCLE95 VARI 1 (longitudinal external roughing), no allowances, FF1 0.2, FF2 0.05, _VRT 1.
+// Every feed move of pass `firstPass` and after at `feed` (0: every feed move; moves outside the
+// passes have pass 0).
+void expectEveryFeedFrom(const std::vector<Move>& moves, int firstPass, double feed) {
+  for (const Move& m : moves) {
+    if (m.kind == MoveKind::Feed && m.pass >= firstPass) {
+      EXPECT_EQ(m.feed, feed) << "pass " << m.pass;
+    }
+  }
+}
+
 SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid) {
   Cycle95Parameters p;
   p.contourName = contour.name;
@@ -119,11 +129,7 @@ TEST(SiemensFrontPockets, AGrooveInTheFrontStretchIsCleanedUpByTheMainPass) {
                              {G0, {-1, 9}, "return"},
                              {G0, {1, 9}, "return"},
                          });
-  for (const Move& m : out.moves) {
-    if (m.kind == MoveKind::Feed) {
-      EXPECT_EQ(m.feed, 0.2);
-    }
-  }
+  expectEveryFeedFrom(out.moves, 0, 0.2);
 }
 
 // A pocket whose rising side steps back down before the profile is back at the pocket's top (a
@@ -323,11 +329,7 @@ TEST(SiemensFrontPockets, APassMeetingTheFaceFollowsTheFrontStretchDown) {
                              {G0, {1, 4}, "pass", 3},
                              {G0, {1, 9}, "return"},
                          });
-  for (const Move& m : out.moves) {
-    if (m.kind == MoveKind::Feed) {
-      EXPECT_EQ(m.feed, 0.2);
-    }
-  }
+  expectEveryFeedFrom(out.moves, 0, 0.2);
 }
 
 // The contour begins with a wall rising at its first point's z, then falls behind its top: (0, 4) →
@@ -375,11 +377,7 @@ TEST(SiemensFrontPockets, AWallRisingAtTheFrontStandsBeforeThePocketBehindIt) {
                              {G0, {-5, 9}, "return"},
                              {G0, {1, 9}, "return"},
                          });
-  for (const Move& m : out.moves) {
-    if (m.kind == MoveKind::Feed && m.pass >= 3) {
-      EXPECT_EQ(m.feed, 0.05);
-    }
-  }
+  expectEveryFeedFrom(out.moves, 3, 0.05);
 }
 
 // A spike of no width at the front: the wall rises from the first point (0, 4) to (0, 8) and falls
@@ -414,11 +412,7 @@ TEST(SiemensFrontPockets, ALevelRunsThroughASpikeOfNoWidthAtTheFront) {
                              {G0, {-2, 9}, "return"},
                              {G0, {1, 9}, "return"},
                          });
-  for (const Move& m : out.moves) {
-    if (m.kind == MoveKind::Feed) {
-      EXPECT_EQ(m.feed, 0.2);
-    }
-  }
+  expectEveryFeedFrom(out.moves, 0, 0.2);
 }
 
 // A spike of no width at the front, and a pocket behind a lower spike further on: (0, 4) → (0, 8) →

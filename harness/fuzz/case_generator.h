@@ -45,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include <rapidcheck.h>
 
 #include "harness/spec/spec_case.h"
@@ -285,6 +286,13 @@ std::string fuzzProgram(const FuzzCase& c);
 // "oracles" only, or the alarm of its one invalid parameter (specs/README.md). `tag` names it (e.g.
 // the case seed).
 SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag);
+
+// The spec-case JSON every family's drawn case shares: id "<fuzzCaseFolder>/fuzz-<tag>", its title
+// (describeFuzzCase), rules, profile and program, the tool when it has a nose radius; every oracle as
+// its expectation, or — a case with one invalid value — the alarm `alarm`, whose derivation is
+// `alarmDerivation`. The family adds its own (parameters, subprograms).
+nlohmann::json drawnCaseJson(const FuzzCase& c, const std::string& tag, nlohmann::json rules, std::string program,
+                             const std::optional<FuzzExpectedAlarm>& alarm, const std::string& alarmDerivation);
 
 // The case for a person, one line: cycle, quadrant, type, segments, parameters.
 std::string describeFuzzCase(const FuzzCase& c);
