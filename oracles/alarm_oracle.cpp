@@ -55,12 +55,12 @@ std::unique_ptr<Oracle> makeAlarmOracle() {
       "alarm",
       std::vector<std::string>{"G71.T1.ALARM", "G71.T2.MONO", "G72.T1.MONO", "G71.HEAD.G0G1", "G71.HEAD.NOX",
                                "G71.LIMIT.HEIGHT", "G72.RANGE", "G73.ALARMS", "G73.D.RANGE", "G73.FS10.FMT", "G73.HEAD",
-                               "G74_1.FMT", "G74_1.RANGE"},
+                               "G74_1.FMT", "G74_1.RANGE", "PROG.SIGN"},
       false);
 }
 
 std::unique_ptr<Oracle> makeSiemensAlarmOracle() {
-  return std::make_unique<AlarmOracle>("siemens-alarm", std::vector<std::string>{"LCYC95.ALARMS", "LCYC95.PARAMS", "LCYC95.CONTOUR"},
+  return std::make_unique<AlarmOracle>("siemens-alarm", std::vector<std::string>{"LCYC95.ALARMS", "LCYC95.PARAMS", "LCYC95.CONTOUR", "SIEMENS.FEED"},
                                        true);
 }
 

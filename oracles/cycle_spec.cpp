@@ -30,7 +30,18 @@ void applyModal(const Block& b, ModalState& s) {
 
 // PROG.GROUP.UNKNOWN, PROG.GROUP.COMP: applies the block's modal codes and returns the alarm its G
 // codes raise, as the runner does (reference/interpreter/block_groups.h), or nothing.
+// PROG.SIGN: a feed, a spindle speed and a tool number take no minus sign (PS0006).
+std::optional<Alarm> minusSignWithoutMeaning(const Block& b) {
+  for (const Word& w : b.words) {
+    if ((w.letter == 'F' || w.letter == 'S' || w.letter == 'T') && std::signbit(w.value)) {
+      return Alarm{"PS0006", w.text + ": a minus sign after " + std::string(1, w.letter), b.line, ""};
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<Alarm> readBlockGroups(const Block& b, ModalState& s) {
+  if (auto sign = minusSignWithoutMeaning(b)) return sign;
   if (const Word* g = firstUnknownGCode(b, s.gCodeSystem)) return improperGCode(b, *g, s).alarm();
   const ModalState before = s;
   applyModal(b, s);

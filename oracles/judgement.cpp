@@ -1,6 +1,11 @@
 #include "oracles/judgement.h"
 
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
 #include "oracles/groove/groove_replay.h"
+#include "oracles/material/region.h"
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
 
@@ -11,16 +16,84 @@ const std::vector<std::unique_ptr<Oracle>>& allOracles() {
   return oracles;
 }
 
+namespace {
+
+std::string withThousands(double count) {
+  std::string digits = std::to_string(static_cast<long long>(count));
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<std::size_t>(i), ",");
+  return digits;
+}
+
+Finding unmeasurable(std::optional<std::size_t> move, std::string message) {
+  return Finding{kMeasurableOracle, {"PROG.CAP"}, move, std::move(message) + "; the path is not judged", {}};
+}
+
+// PROG.CAP (README "Limits"): the oracles flatten the path's arcs — the material model at the
+// chord tolerance, the depth of a layer at kMeasuringChord — so a path whose arcs would take more
+// than kMostChordsPerArc chords each or kMostChordsPerPath in all is reported rather than measured
+// for minutes: arcs of hundreds of metres, which no lathe cycle's shape makes.
+std::optional<Finding> pathTooLargeToMeasure(const Toolpath& path, const JudgeSettings& settings) {
+  const double finest = std::min(settings.chordTolerance, kMeasuringChord);
+  double total = 0;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    if (path.moves[i].shape == SegmentKind::Line) continue;
+    const Segment arc = path.segment(i);
+    const double chords = chordsToFlatten(arc, finest);
+    total += chords;
+    if (chords > kMostChordsPerArc) {
+      return unmeasurable(i, "an arc of radius " + std::to_string(arc.radius()) + " mm would take " +
+                                 withThousands(chords) + " chords of " + std::to_string(finest) +
+                                 " mm to measure; the oracles measure arcs of at most " +
+                                 withThousands(kMostChordsPerArc) + " chords");
+    }
+    if (total > kMostChordsPerPath) {
+      return unmeasurable(i, "the path's arcs up to this move would take " + withThousands(total) + " chords of " +
+                                 std::to_string(finest) + " mm to measure; the oracles measure at most " +
+                                 withThousands(kMostChordsPerPath) + " in a path");
+    }
+  }
+  return std::nullopt;
+}
+
+// README "Limits": at most kMostFindingsPerOracle findings of one oracle are listed (a path failing
+// every pass repeats one finding per pass); the last one says how many more there were.
+void boundFindingsPerOracle(std::vector<Finding>& findings) {
+  std::map<std::string, std::size_t> count;
+  for (const Finding& f : findings) ++count[f.oracle];
+  std::map<std::string, std::size_t> kept;
+  std::vector<Finding> out;
+  for (Finding& f : findings) {
+    const std::size_t k = ++kept[f.oracle];
+    if (k > kMostFindingsPerOracle) continue;
+    if (k == kMostFindingsPerOracle && count[f.oracle] > k) {
+      f.message += " (and " + withThousands(static_cast<double>(count[f.oracle] - k)) + " more " + f.oracle +
+                   " findings, not listed: cyclecert lists " + std::to_string(kMostFindingsPerOracle) +
+                   " per oracle)";
+    }
+    out.push_back(std::move(f));
+  }
+  findings = std::move(out);
+}
+
+}  // namespace
+
 std::vector<Finding> judge(const JudgeInput& in) {
+  if (auto tooLarge = pathTooLargeToMeasure(in.path, in.settings)) return {std::move(*tooLarge)};
   const std::optional<CycleFamily> family = in.program.judgedFamily();
   const bool groove = family == CycleFamily::G74_1;
-  const std::optional<MaterialReplay> replay = groove ? std::nullopt : replayMaterial(in);
-  const std::optional<GrooveReplay> grooveReplay = groove ? replayGroove(in) : std::nullopt;
-  const JudgeContext ctx{in, replay ? &*replay : nullptr, grooveReplay ? &*grooveReplay : nullptr};
   std::vector<Finding> findings;
-  for (const auto& oracle : allOracles()) {
-    if (!family || oracle->judges(*family)) oracle->judge(ctx, findings);
+  try {
+    const std::optional<MaterialReplay> replay = groove ? std::nullopt : replayMaterial(in);
+    const std::optional<GrooveReplay> grooveReplay = groove ? replayGroove(in) : std::nullopt;
+    const JudgeContext ctx{in, replay ? &*replay : nullptr, grooveReplay ? &*grooveReplay : nullptr};
+    for (const auto& oracle : allOracles()) {
+      if (!family || oracle->judges(*family)) oracle->judge(ctx, findings);
+    }
+  } catch (const std::invalid_argument& e) {
+    // Geometry the material model cannot take (Boost refusing a region, say): said, never a pass.
+    return {unmeasurable(std::nullopt, std::string("the oracles cannot measure this path: ") + e.what())};
   }
+  boundFindingsPerOracle(findings);
   return findings;
 }
 

@@ -81,7 +81,15 @@ class Oracle {
 // Every oracle, in a stable order.
 const std::vector<std::unique_ptr<Oracle>>& allOracles();
 
-// Runs every oracle (or the one named) and returns the findings, oracle by oracle.
+// Runs every oracle and returns the findings, oracle by oracle, at most kMostFindingsPerOracle of
+// each (the last one says how many more). A path the oracles cannot measure — its arcs would take
+// more than kMostChordsPerPath chords in all (or one arc more than kMostChordsPerArc), or geometry
+// the material model refuses — gives the one finding `measurable` (PROG.CAP) instead of a verdict.
 std::vector<Finding> judge(const JudgeInput& in);
+
+// README "Limits".
+inline constexpr std::size_t kMostFindingsPerOracle = 100;
+inline constexpr double kMostChordsPerPath = 10'000'000;
+inline constexpr const char* kMeasurableOracle = "measurable";
 
 }  // namespace cyclecert

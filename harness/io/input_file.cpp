@@ -109,4 +109,29 @@ std::string readInputStream(std::istream& in, const std::string& name, std::size
   return text;
 }
 
+BoundedLine readBoundedLine(std::istream& in, std::string& line, std::size_t maxBytes) {
+  line.clear();
+  std::istream::sentry ok(in, true);
+  if (!ok) return BoundedLine::End;
+  std::streambuf& buffer = *in.rdbuf();
+  bool tooLong = false, any = false;
+  for (int c = buffer.sbumpc(); c != std::char_traits<char>::eof(); c = buffer.sbumpc()) {
+    any = true;
+    if (c == '\n') return tooLong ? BoundedLine::TooLong : BoundedLine::Line;
+    if (tooLong) continue;
+    if (line.size() == maxBytes) {
+      tooLong = true;
+      std::string().swap(line);
+      continue;
+    }
+    line.push_back(static_cast<char>(c));
+  }
+  in.setstate(std::ios::eofbit);
+  if (!any) {
+    in.setstate(std::ios::failbit);
+    return BoundedLine::End;
+  }
+  return tooLong ? BoundedLine::TooLong : BoundedLine::Line;
+}
+
 }  // namespace cyclecert

@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <stdexcept>
 #include <ostream>
 
+#include "harness/io/input_file.h"
 #include "harness/run/run_record.h"
 #include "harness/spec/rule_catalogue.h"
 #include "reports/html/report_html.h"
@@ -42,9 +44,15 @@ void readResults(const std::string& file, ReportBuilder& builder, ReportFiles& s
   if (!in) throw ReportInputError("no results to report: cannot read " + file);
   auto lastProgress = std::chrono::steady_clock::now();
   std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  std::size_t number = 0;
+  for (BoundedLine read; (read = readBoundedLine(in, line)) != BoundedLine::End;) {
+    ++number;
+    if (read == BoundedLine::Line && line.find_first_not_of(" \t\r") == std::string::npos) continue;
     try {
+      if (read == BoundedLine::TooLong) {
+        throw std::length_error("a line longer than " + byteSizeText(kMaxInputBytes) +
+                                " (cyclecert writes result lines of at most that)");
+      }
       builder.add(json::parse(line));
       ++summary.lines;
     } catch (const std::exception& e) {

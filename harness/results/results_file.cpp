@@ -9,9 +9,54 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "harness/io/input_file.h"
 #include "harness/judge/judging.h"
 
 namespace cyclecert {
+
+namespace {
+
+std::string dumped(const nlohmann::json& j) {
+  // An engine's reply may hold anything (a process engine's message); the line must stay JSON.
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+// README "Limits": a result line holds at most kMaxInputBytes, what the readers take
+// (readBoundedLine). A longer one leaves out, in turn, the failure's plot, the findings' witnesses,
+// the findings after the first ten, and cuts the detail and the program to their first 4 KiB —
+// each named in "left_out" — so that a path of a million failing moves still gives a result.
+std::string boundedLine(nlohmann::json& j) {
+  std::string text = dumped(j);
+  if (text.size() <= kMaxInputBytes) return text;
+  nlohmann::json leftOut = nlohmann::json::array();
+  const auto note = [&](const std::string& what) {
+    leftOut.push_back(what);
+    j["left_out"] = leftOut;
+    text = dumped(j);
+    return text.size() <= kMaxInputBytes;
+  };
+  if (j.contains("plot")) {
+    j.erase("plot");
+    if (note("the plot")) return text;
+  }
+  for (auto& f : j["findings"]) f.erase("witness");
+  if (note("the findings' witnesses")) return text;
+  if (j["findings"].size() > 10) {
+    const std::size_t all = j["findings"].size();
+    j["findings"].erase(j["findings"].begin() + 10, j["findings"].end());
+    if (note("findings 11 to " + std::to_string(all))) return text;
+  }
+  constexpr std::size_t kKept = 4096;
+  for (const char* field : {"detail", "program"}) {
+    if (j.contains(field) && j[field].is_string() && j[field].get_ref<const std::string&>().size() > kKept) {
+      j[field] = j[field].get<std::string>().substr(0, kKept);
+    }
+  }
+  note("the detail and the program after their first 4 KiB");
+  return text;
+}
+
+}  // namespace
 
 std::string resultLine(const CaseResult& r) {
   nlohmann::json j{{"engine", r.engine},     {"case", r.caseId},   {"file", r.file},
@@ -27,15 +72,18 @@ std::string resultLine(const CaseResult& r) {
     if (!r.expectation->reason.empty()) j["expectation"]["reason"] = r.expectation->reason;
     if (!r.expectation->source.empty()) j["expectation"]["source"] = r.expectation->source;
   }
-  // An engine's reply may hold anything (a process engine's message); the line must stay JSON.
-  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return boundedLine(j) + "\n";
 }
 
 ResultLines readResultLines(const std::string& file) {
   ResultLines out;
   std::ifstream in(file);
   std::string line;
-  while (std::getline(in, line)) {
+  for (BoundedLine read; (read = readBoundedLine(in, line)) != BoundedLine::End;) {
+    if (read == BoundedLine::TooLong) {  // no result line is written so long (resultLine)
+      ++out.skipped;
+      continue;
+    }
     try {
       const auto j = nlohmann::json::parse(line);
       out.lines.push_back({line, {j.at("engine").get<std::string>(), j.at("case").get<std::string>()}});

@@ -32,6 +32,11 @@ double largestChordAngle(double radius, double chordTolerance) {
   return ratio >= 1 ? 2 * std::numbers::pi : 4 * std::asin(std::sqrt(ratio));
 }
 
+// The chords an arc of this sweep (signed) and radius is flattened into (flatten, chordsToFlatten).
+double chordsForSweep(double sweep, double radius, double chordTolerance) {
+  return std::ceil(std::abs(sweep) / largestChordAngle(radius, chordTolerance));
+}
+
 bool within(const BgPoint& a, const BgPoint& b, double tolerance) {
   return std::abs(a.x() - b.x()) <= tolerance && std::abs(a.y() - b.y()) <= tolerance;
 }
@@ -121,6 +126,12 @@ std::vector<Point> flatten(const Segment& s, double chordTolerance) {
   return points;
 }
 
+double chordsToFlatten(const Segment& s, double chordTolerance) {
+  const double radius = s.radius();
+  if (!s.isArc() || radius <= kGeomEps) return 1;
+  return std::max(1.0, chordsForSweep(ArcAngles(s).sweep, radius, chordTolerance));
+}
+
 void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance) {
   requireFinite(s);
   if (!(chordTolerance > 0) || !std::isfinite(chordTolerance)) {
@@ -135,7 +146,7 @@ void flattenInto(std::vector<Point>& points, const Segment& s, double chordToler
   }
   const ArcAngles angles(s);
   const double span = angles.sweep;  // signed: negative for clockwise
-  const double chords = std::ceil(std::abs(span) / largestChordAngle(radius, chordTolerance));
+  const double chords = chordsForSweep(span, radius, chordTolerance);
   if (chords > kMostChordsPerArc) {
     throw std::invalid_argument("the chord tolerance " + std::to_string(chordTolerance) +
                                 " mm is too small for an arc of radius " + std::to_string(radius) +

@@ -58,6 +58,9 @@ std::vector<Point> flatten(const Segment& s, double chordTolerance);
 // README "Limits": an arc of the largest radius the dimension words allow (999,999.999 mm) takes
 // some 70,000 chords at the default chord tolerance (1 µm); a tolerance set too fine is refused.
 inline constexpr double kMostChordsPerArc = 1e6;
+// How many chords flatten(s, chordTolerance) makes: 1 for a line or a degenerate arc; what a caller
+// may check against a budget before flattening (no bound applied here).
+double chordsToFlatten(const Segment& s, double chordTolerance);
 // The same into `points` (cleared first): a caller flattening move after move keeps one buffer.
 void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance);
 

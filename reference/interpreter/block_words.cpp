@@ -28,6 +28,9 @@ bool isDimensionOrFeed(char letter) {
 
 std::string at(const Word& w) { return w.text + " at column " + std::to_string(w.column); }
 
+// PROG.SIGN: a feed, a spindle speed and a tool number have no direction.
+bool takesNoMinusSign(char letter) { return letter == 'F' || letter == 'S' || letter == 'T'; }
+
 [[noreturn]] void improperAddress(const Word& w, const std::string& why) {
   throw CycleAlarm(alarm::kImproperAddress, w.line, at(w) + ": " + why);
 }
@@ -71,6 +74,10 @@ void checkWordRanges(const Block& b, bool inch) {
   checkOneWordPerAddress(b);
   const double largest = inch ? kLargestInch : kLargestMetric;
   for (const Word& w : b.words) {
+    if (takesNoMinusSign(w.letter) && std::signbit(w.value)) {
+      throw CycleAlarm(alarm::kNegativeSign, w.line,
+                       at(w) + ": " + w.letter + " takes no minus sign (a feed, a spindle speed or a tool number)");
+    }
     if (!isDimensionOrFeed(w.letter) || std::abs(w.value) <= largest) continue;
     std::ostringstream why;
     why << std::setprecision(12) << at(w) << " is outside -" << largest << "…" << largest

@@ -17,7 +17,8 @@ namespace cyclecert {
 
 // The range every dimension and feed word must stay within (PS0003), as the table's metric or
 // inch column; the cycle addresses have narrower ones (reference/gcode/address_ranges.h). First,
-// one word of an address per block, G and M apart: a second is PS0009 (checkOneWordPerAddress).
+// one word of an address per block, G and M apart: a second is PS0009 (checkOneWordPerAddress);
+// a minus sign after F, S or T is PS0006 (PROG.SIGN).
 void checkWordRanges(const Block& b, bool inch);
 void checkOneWordPerAddress(const Block& b);
 

@@ -7,6 +7,7 @@ namespace cyclecert {
 std::string alarmTitle(std::string_view code) {
   static const std::map<std::string_view, std::string_view> titles = {
       {alarm::kOutOfRange, "TOO MANY DIGITS (value outside the address's range)"},
+      {alarm::kNegativeSign, "ILLEGAL USE OF NEGATIVE SIGN"},
       {alarm::kIllegalDecimalPoint, "ILLEGAL USE OF DECIMAL POINT"},
       {alarm::kImproperAddress, "IMPROPER NC-ADDRESS"},
       {alarm::kImproperGCode, "IMPROPER G-CODE"},

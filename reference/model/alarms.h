@@ -13,6 +13,7 @@ namespace cyclecert {
 
 namespace alarm {
 inline constexpr std::string_view kOutOfRange = "PS0003";        // too many digits: outside the address's range
+inline constexpr std::string_view kNegativeSign = "PS0006";      // a minus sign after an address that takes none (F, S, T)
 inline constexpr std::string_view kIllegalDecimalPoint = "PS0007";  // decimal point in an address that takes none
 inline constexpr std::string_view kImproperAddress = "PS0009";   // an address the block gives no meaning
 inline constexpr std::string_view kImproperGCode = "PS0010";     // G code the controller does not have
