@@ -11,6 +11,11 @@ namespace cyclecert {
 
 namespace {
 
+// The names the alarms give the parameters of each cycle.
+struct CycleParameterNames {
+  std::string_view depth, roughingFeed, finishingFeed;
+};
+
 SiemensCycleSpec callSpec(CycleFamily family, const SiemensCycleCall& call, const MachiningType& type) {
   SiemensCycleSpec c;
   c.family = family;
@@ -54,21 +59,27 @@ SiemensCycleSpec cycle95Spec(const SiemensCycleCall& call, const Cycle95Paramete
 }
 
 // LCYC95.ALARMS, in the order the cycle checks before any move: the infeed depth (61610), the
-// contour (10931: empty, an arc over a quarter circle, against the finishing direction), then the
-// allowance and the nose radius (10931, from the oracles' own profile).
-void checkAndDescribe(SiemensCycleSpec& c, const SiemensCycleCall& call, std::string_view depthParameter) {
-  requireInfeedDepth(c.maxInfeed, c.type, depthParameter, c.line);
+// feeds it cuts at (10860, SIEMENS.FEED) and the infeed angle it plans (LCYC95.PARAMS), the contour
+// (10931: empty, an arc over a quarter circle, against the finishing direction), then the allowance
+// and the nose radius (10931, from the oracles' own profile); FF2 where CYCLE95 roughs one of the
+// undercuts of that profile (10860).
+void checkAndDescribe(SiemensCycleSpec& c, const SiemensCycleCall& call, const CycleParameterNames& names) {
+  requireInfeedDepth(c.maxInfeed, c.type, names.depth, c.line);
+  requireFeedsInUse(c.type, {c.roughingFeed, names.roughingFeed}, {c.finishingFeed, names.finishingFeed}, c.line);
+  requirePlannableInfeedAngle(c.infeedAngle, c.line);
   if (!call.contour) throw NotSupported(call.line, "the stock-removal cycle was called without a contour");
   checkContour(*call.contour, frameOf(c.type), c.line);
   describeSiemensCycle(c);
+  if (c.family == CycleFamily::Cycle95 && c.roughs() && !c.undercuts.empty()) requireUndercutFeed(c.undercutFeed, c.line);
 }
 
 // The call read: no moves, and the tool left at the computed start, where the cycle ends
 // (LCYC95.FINISH, LCYC95.ROUGH: the last move returns there).
-SiemensCycleOutcome recorded(ProgramSpec& spec, SiemensCycleSpec c, const SiemensCycleCall& call, std::string_view depth) {
+SiemensCycleOutcome recorded(ProgramSpec& spec, SiemensCycleSpec c, const SiemensCycleCall& call,
+                             const CycleParameterNames& names) {
   spec.siemensCycles.push_back(std::move(c));
   SiemensCycleSpec& kept = spec.siemensCycles.back();
-  checkAndDescribe(kept, call, depth);
+  checkAndDescribe(kept, call, names);
   SiemensCycleOutcome out;
   out.end = kept.frame.toPlane(kept.start);
   return out;
@@ -105,10 +116,10 @@ ProgramSpec readSiemensProgramSpec(const PlanRequest& request, const Profile& pr
   spec.siemensFamily = is802S ? CycleFamily::Lcyc95 : CycleFamily::Cycle95;
   SiemensPlanners planners;
   planners.lcyc95 = [&spec](const SiemensCycleCall& call, const Lcyc95Parameters& p) {
-    return recorded(spec, lcyc95Spec(call, p), call, "R108");
+    return recorded(spec, lcyc95Spec(call, p), call, {"R108", "R111", "R112"});
   };
   planners.cycle95 = [&spec](const SiemensCycleCall& call, const Cycle95Parameters& p) {
-    return recorded(spec, cycle95Spec(call, p), call, "MID");
+    return recorded(spec, cycle95Spec(call, p), call, {"MID", "FF1", "FF3"});
   };
   const Toolpath run = planSiemensProgram(siemensRunInputFor(request), profile, planners);
   spec.siemensAlarm = run.alarm;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "reference/model/number_text.h"
 #include "reference/model/offset.h"
 #include "reference/siemens/siemens_axis_allowance.h"
 
@@ -45,6 +46,30 @@ void requireInfeedDepth(double depth, const MachiningType& type, std::string_vie
   throw CycleAlarm(siemens_alarm::kNoInfeedDepth, line,
                    std::string(parameter) + "=" + std::to_string(depth) +
                        ": roughing needs an infeed depth greater than 0");
+}
+
+void requireFeedsInUse(const MachiningType& type, NamedParameter roughing, NamedParameter finishing, int line) {
+  const auto require = [line](bool used, NamedParameter feed) {
+    if (!used || feed.value > 0) return;
+    throw CycleAlarm(siemens_alarm::kNoFeedrate, line,
+                     std::string(feed.name) + " = " + shortDecimalText(feed.value) +
+                         ": the cycle cuts at this feed; give a feed above 0");
+  };
+  require(type.technology != SiemensTechnology::Finishing, roughing);
+  require(type.technology != SiemensTechnology::Roughing, finishing);
+}
+
+void requireUndercutFeed(double feed, int line) {
+  if (feed > 0) return;
+  throw CycleAlarm(siemens_alarm::kNoFeedrate, line,
+                   "FF2 = " + shortDecimalText(feed) + ": the cycle roughs an undercut at this feed; give a feed above 0");
+}
+
+void requirePlannableInfeedAngle(double angle, int line) {
+  if (angle >= 0 && angle < 90) return;
+  throw NotSupported(line, "R109 = " + shortDecimalText(angle) +
+                               ": the reference plans infeed angles 0 <= R109 < 90 degrees (from the infeed axis); "
+                               "the seed gives no range and no meaning for others");
 }
 
 void checkContour(const SiemensContour& contour, const StockRemovalFrame& frame, int line) {

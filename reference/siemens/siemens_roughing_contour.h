@@ -5,7 +5,8 @@
 //
 // Alarm numbers (interpretation, LCYC95.ALARMS in specs/rules.json): taken from our reading of
 // Siemens' 802S/840D cycle alarm lists, not confirmed by a stored page — 61002 for a machining type
-// outside 1…12, 10931 for a contour the cycle cannot use, 61610 for no infeed depth.
+// outside 1…12, 10931 for a contour the cycle cannot use, 61610 for no infeed depth, 10860 for a
+// cutting feed (R111/R112, FF1/FF2/FF3) the call uses that is not positive.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,11 +21,32 @@ namespace siemens_alarm {
 inline constexpr std::string_view kMachiningType = "61002";  // R105 / VARI not 1…12
 inline constexpr std::string_view kContour = "10931";        // arc > quarter circle, wrong direction, empty
 inline constexpr std::string_view kNoInfeedDepth = "61610";  // R108 / MID not positive when roughing
+inline constexpr std::string_view kNoFeedrate = "10860";    // a cutting feed the call uses not positive (SIEMENS.FEED)
 }  // namespace siemens_alarm
 
 
 // R108 / MID must be positive when the type roughs (roughing or complete): else alarm 61610.
 void requireInfeedDepth(double depth, const MachiningType& type, std::string_view parameter, int line);
+
+// A cycle parameter's value and its name in the call (R111, FF1, …), for the alarms.
+struct NamedParameter {
+  double value = 0;
+  std::string_view name;
+};
+
+// SIEMENS.FEED: the feeds the type cuts at must be above 0 — `roughing` (R111 / FF1) when it roughs
+// or machines completely, `finishing` (R112 / FF3) when it finishes or machines completely — else
+// alarm 10860 naming the parameter. (The seed: R111 has no effect when finishing, R112 none when
+// roughing.)
+void requireFeedsInUse(const MachiningType& type, NamedParameter roughing, NamedParameter finishing, int line);
+
+// SIEMENS.FEED: FF2 must be above 0 where CYCLE95 roughs an undercut; else alarm 10860.
+void requireUndercutFeed(double feed, int line);
+
+// LCYC95.PARAMS (interpretation): the reference plans an infeed angle R109 of 0 up to, not
+// including, 90 degrees from the infeed axis; neither the seed nor a manual we hold gives its range
+// or what another angle does, so NotSupported rather than a guess.
+void requirePlannableInfeedAngle(double angle, int line);
 
 // LCYC95.CONTOUR: at least one segment, each arc at most a quarter circle, and the contour
 // programmed in the finishing direction (towards −z in the frame: longitudinal towards −Z, face

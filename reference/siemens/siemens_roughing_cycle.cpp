@@ -57,6 +57,14 @@ void requirePlannableValues(const SiemensCycleCall& call, const StockRemovalSett
   }
 }
 
+// SIEMENS.FEED: every cutting move the plan makes has a positive feed; the roughing and finishing
+// feeds are checked before planning (requireFeedsInUse), so one at F0 here is an undercut's FF2.
+void requirePositiveCuttingFeeds(const std::vector<Move>& moves, const StockRemovalSettings& s, int line) {
+  for (const Move& m : moves) {
+    if (m.kind == MoveKind::Feed && !(m.feed.value_or(0) > 0)) requireUndercutFeed(s.undercutFeed, line);
+  }
+}
+
 // The unsigned parameters (R106, R110, FALZ, FALX, FAL, _VRT: "无符号", entered without sign) are
 // taken by their size (interpretation).
 StockRemovalSettings withUnsignedSizes(StockRemovalSettings s) {
@@ -91,6 +99,9 @@ std::vector<Warning> undercutsLeftToFinishing(const std::vector<Segment>& profil
 SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& settings) {
   requireInfeedDepth(settings.maxInfeed, settings.type, settings.infeedParameter, call.line);
   requirePlannableValues(call, settings);
+  requireFeedsInUse(settings.type, {settings.roughingFeed, settings.roughingFeedParameter},
+                    {settings.finishingFeed, settings.finishingFeedParameter}, call.line);
+  requirePlannableInfeedAngle(settings.infeedAngle, call.line);
   const StockRemovalSettings s = withUnsignedSizes(settings);
   const SiemensContour& contour = requireContour(call);
   const StockRemovalFrame frame = frameOf(s.type);
@@ -121,6 +132,7 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
     out.warnings = undercutsLeftToFinishing(cycle.profile, contour, frame, call.line);
   }
   for (Move& m : planStockRemoval(cycle, frame.toFrame(call.position))) out.moves.push_back(frame.toPlane(std::move(m)));
+  requirePositiveCuttingFeeds(out.moves, s, call.line);
   out.end = out.moves.empty() ? call.position : out.moves.back().to;
   return out;
 }

@@ -18,6 +18,8 @@ struct StockRemovalSettings {
   double clearance = 0;       // R110 / _VRT, in each axis
   double maxInfeed = 0;       // R108 / MID
   const char* infeedParameter = "R108";  // its name, for the alarm when roughing has none
+  const char* roughingFeedParameter = "R111";   // the feeds' names, for SIEMENS.FEED's alarm
+  const char* finishingFeedParameter = "R112";
   RoughingLevelsRule mainLevels = equalInfeedLevels;  // LCYC95.DEPTH
   double infeedAngle = 0;     // R109 (degrees from the infeed axis); CYCLE95: 0
   MoveKind infeedKind = MoveKind::Feed;
