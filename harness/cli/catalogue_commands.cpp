@@ -20,7 +20,8 @@ spec cases under specs/cases cite it.
 
 Options:
   --cycle C     only the rules of one cycle (G70, G71, G72, G73, G74_1, LCYC95, CYCLE95, …)
-  --uncited     only the rules no spec case cites (exit 1 if there are any)
+  --uncited     only the rules no spec case cites (exit 1 if there are any in scope; a rule marked
+                out of scope in rules.json, with its reason, is listed apart and does not fail)
   --json        machine-readable output
   --specs DIR   the specs directory (default: the repository's specs/)
 )HELP";
@@ -54,22 +55,28 @@ static int commandRules(const std::vector<std::string>& args) {
     for (const std::string& rule : loadSpecCase(file).rules) ++citations[rule];
   }
   nlohmann::json out = nlohmann::json::array();
-  int uncited = 0;
+  int uncited = 0, outOfScope = 0;
   for (const RuleEntry& r : catalogue.rules) {
     if (!cycle.empty() && r.cycle != cycle) continue;
     const int n = citations.count(r.id) ? citations.at(r.id) : 0;
-    if (n == 0) ++uncited;
+    if (n == 0) ++(r.outOfScope.empty() ? uncited : outOfScope);
     if (uncitedOnly && n > 0) continue;
     if (json) {
       out.push_back({{"id", r.id}, {"cycle", r.cycle}, {"seed", r.seed}, {"section", r.section},
                      {"summary", r.summary}, {"cases", n}, {"notes", r.notes}});
+      if (!r.outOfScope.empty()) out.back()["out_of_scope"] = r.outOfScope;
     } else {
-      std::cout << std::left << std::setw(22) << r.id << std::right << std::setw(4) << n << " case(s)  " << r.summary
-                << "\n";
+      std::cout << std::left << std::setw(22) << r.id << std::right << std::setw(4) << n << " case(s)  "
+                << (r.outOfScope.empty() ? r.summary : "out of scope: " + r.outOfScope) << "\n";
     }
   }
-  if (json) std::cout << out.dump(2) << "\n";
-  else std::cout << uncited << " rule(s) cited by no spec case\n";
+  if (json) {
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << uncited << " rule(s) cited by no spec case";
+    if (outOfScope > 0) std::cout << "; " << outOfScope << " more out of scope (no case can cite them: the reason above)";
+    std::cout << "\n";
+  }
   return uncitedOnly && uncited > 0 ? 1 : kExitOk;
 }
 

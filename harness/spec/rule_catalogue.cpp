@@ -30,6 +30,7 @@ RuleCatalogue loadRuleCatalogue(const std::string& path) {
     e.seed = r.value("seed", "");
     e.section = r.value("section", "");
     e.summary = r.value("summary", "");
+    e.outOfScope = r.value("out_of_scope", "");
     if (r.contains("notes") && r["notes"].is_array()) {
       for (const auto& n : r["notes"]) if (n.is_string()) e.notes.push_back(n.get<std::string>());
     }

@@ -9,6 +9,9 @@ namespace cyclecert {
 struct RuleEntry {
   std::string id, cycle, seed, section, summary;
   std::vector<std::string> notes;
+  // Why no spec case can cite the rule (rules.json "out_of_scope": a cycle the seed names without
+  // describing it); empty for a rule in scope. `rules --uncited` lists such rules apart.
+  std::string outOfScope;
 };
 
 struct RuleCatalogue {
