@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -23,7 +24,8 @@ namespace {
 
 using namespace siemens_test;
 
-// CYCLE95 VARI 1 (longitudinal external roughing), no allowances, FF1 0.2, FF2 0.05, _VRT 1.
+// CYCLE95 VARI 1 (longitudinal external roughing), FF1 0.2, FF2 0.05; no allowances and _VRT 1
+// unless given.
 // Every feed move of pass `firstPass` and after at `feed` (0: every feed move; moves outside the
 // passes have pass 0).
 void expectEveryFeedFrom(const std::vector<Move>& moves, int firstPass, double feed) {
@@ -34,15 +36,16 @@ void expectEveryFeedFrom(const std::vector<Move>& moves, int firstPass, double f
   }
 }
 
-SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid) {
+SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid, double fal = 0, double vrt = 1) {
   Cycle95Parameters p;
   p.contourName = contour.name;
   p.infeed = mid;
+  p.allowance = fal;
   p.roughingFeed = 0.2;
   p.undercutFeed = 0.05;
   p.finishingFeed = 0.1;
   p.type = machiningTypeOf(1).value();
-  p.retract = 1;
+  p.retract = vrt;
   SiemensCycleCall call;
   call.line = 4;
   call.position = {5, 15};
@@ -512,6 +515,46 @@ TEST(SiemensPockets, APocketOpenToTheEndGoesOverTheBumpItHolds) {
                              {G0, {-9, 9}, "return"},
                              {G0, {1, 9}, "return"},
                          });
+}
+
+// A pocket narrower than _VRT (1): (0, 6) → (−2, 6), down the falling wall to (−2, 2), along the
+// bottom to (−2.5, 2), up the rising wall to (−2.5, 6), along to (−10, 6). Top 6, bottom 2, MID 2:
+// main levels 4 and 2 (both below the face's top 6); start (1, 7).
+//  pass 1 (4): G0 down to (1, 4), G1 to the face at z 0; retract (1, 5) (no G0 back: at the start's z).
+//  pass 2 (2): likewise; retract (1, 3).
+//  The pocket: rim (−2, 6), top 6 (no level above the rim), bottom 2, levels 4 and 2; G0 up to (1, 7).
+//  pass 3 (4): G0 along to above the rim's wall (−2, 7), G1 down it to (−2, 4), across to the rising
+//    wall (−2.5, 4), up it to 6. Retract: the diagonal to (−1.5, 7) passes z −2 at 6.5, above the falling
+//    wall's top 6: by _VRT in each axis.
+//  pass 4 (2, the lowest): G0 to (−2, 7), G1 down the wall to (−2, 2), along the bottom to (−2.5, 2), up
+//    to 4. Retract: the diagonal to (−1.5, 5) would pass z −2 at 4.5, below the falling wall's top 6 —
+//    into the part: the tool lifts by _VRT along X only, to (−2.5, 5) (CYCLE95.UNDERCUT note).
+//  Return: X first (−2.5, 7), then Z (1, 7).
+// (Before: the retract went to (−1.5, 5) through the wall: no-gouge, fuzz seed 7566792160692496541.)
+TEST(SiemensPockets, ARetractWiderThanThePocketLiftsAlongXOnly) {
+  const SiemensContour c = polyline("N", {{0, 6}, {-2, 6}, {-2, 2}, {-2.5, 2}, {-2.5, 6}, {-10, 6}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 7}, "approach"},
+                                                 {G0, {1, 4}, "pass", 1},
+                                                 {G1, {0, 4}, "pass", 1},
+                                                 {G0, {1, 5}, "pass", 1},
+                                                 {G0, {1, 2}, "pass", 2},
+                                                 {G1, {0, 2}, "pass", 2},
+                                                 {G0, {1, 3}, "pass", 2},
+                                                 {G0, {1, 7}, "pass", 3},
+                                                 {G0, {-2, 7}, "pass", 3},
+                                                 {G1, {-2, 4}, "pass", 3},
+                                                 {G1, {-2.5, 4}, "pass", 3},
+                                                 {G1, {-2.5, 6}, "pass", 3},
+                                                 {G0, {-1.5, 7}, "pass", 3},
+                                                 {G0, {-2, 7}, "pass", 4},
+                                                 {G1, {-2, 2}, "pass", 4},
+                                                 {G1, {-2.5, 2}, "pass", 4},
+                                                 {G1, {-2.5, 4}, "pass", 4},
+                                                 {G0, {-2.5, 5}, "pass", 4},
+                                                 {G0, {-2.5, 7}, "return"},
+                                                 {G0, {1, 7}, "return"},
+                                             });
 }
 
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {

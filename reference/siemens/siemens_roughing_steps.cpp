@@ -190,6 +190,29 @@ bool isWall(const std::vector<Segment>& pieces) {
                      [](const Segment& s) { return !s.isArc() && std::abs(s.to.z - s.from.z) <= kGeomEps; });
 }
 
+// Whether the profile stands above the retract from `p` by `v` in each axis (the diagonal towards +z
+// and +x): the part lies in its way — a pocket's falling side closer than `v` in front of the pass's
+// end, standing higher than the diagonal there (CYCLE95.UNDERCUT note, interpretation). The
+// highest the profile stands above the diagonal within z ∈ (p.z, p.z + v] is at an element's end,
+// where it crosses z = p.z + v, or where an arc runs parallel to the diagonal.
+bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p, double v) {
+  const auto above = [&](Point q) {
+    return q.z > p.z + kGeomEps && q.z <= p.z + v + kGeomEps && q.x > p.x + (q.z - p.z) + kGeomEps;
+  };
+  const double h = 1 / std::numbers::sqrt2;
+  for (const Segment& s : profile) {
+    std::vector<Point> candidates{s.from, s.to};
+    for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) candidates.push_back(transposed(t));
+    if (s.isArc()) {
+      for (const Point& n : {Point{h, -h}, Point{-h, h}}) {
+        if (offsetAlongArc(s, std::atan2(n.x, n.z))) candidates.push_back(s.center + s.radius() * n);
+      }
+    }
+    if (std::any_of(candidates.begin(), candidates.end(), above)) return true;
+  }
+  return false;
+}
+
 class StockRemovalPlanner {
  public:
   StockRemovalPlanner(const StockRemoval& c, Point position)
@@ -408,7 +431,7 @@ class StockRemovalPlanner {
       cutAlongLevel(k, {end.z, level}, c_.undercutFeed, c_.rules.undercut);
     }
     climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
-    emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+    emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, rules);
   }
 
   // G0 along the cut axis to `z` at the current height, between a pocket's passes: where the profile
@@ -468,8 +491,16 @@ class StockRemovalPlanner {
   }
 
   // Retract by the clearance in each axis (R110 / _VRT), with G0.
-  void retract(int k) {
-    emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, {c_.rules.rough});
+  void retract(int k) { emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, {c_.rules.rough}); }
+
+  // Where the retract goes: the clearance in each axis; where the part stands in the way of that
+  // diagonal (a pocket narrower than the clearance in front of the pass's end), the clearance along
+  // the depth axis only — the profile lies below the tool there, so nothing stands above it
+  // (interpretation, CYCLE95.UNDERCUT note; before, the retract ran into the pocket's falling side:
+  // no-gouge, fuzz seed 7566792160692496541).
+  Point retractPoint() const {
+    if (diagonalRetractRunsIntoThePart(c_.profile, current(), c_.clearance.z)) return current() + Point{0, c_.clearance.x};
+    return current() + c_.clearance;
   }
 
   // G0 back along the cut axis to the start's z, at the retract height.
