@@ -511,6 +511,49 @@ TEST(SiemensOracles, APocketPassDescendingAlongASmallRoundingAtItsRimIsThePocket
   EXPECT_TRUE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
 }
 
+// The reference's path of a program, for the oracles to judge (the tests below expect no finding of
+// the oracle their rule concerns, or doctor one move and expect it named).
+Toolpath referencePath(const std::string& program, const std::string& profile, const std::string& contour) {
+  PlanRequest request{program, "case.mpf", profile, {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  return planWithReference(request);
+}
+
+// A pocket narrower than _VRT (issue 16, fuzz seed 7566792160692496541): L1 (radius) rounds from
+// (0, 2.01) to (−0.5, 2.51), falls down the wall at z −0.5 to 1, runs to −1.5 and rises to 2.51;
+// _VRT 1.01 is wider than the pocket (1). The last pocket pass ends on the rising wall at the level
+// 1.3775 (the pocket's levels 2.51 … 1 in four steps of 0.3775): the diagonal retract by 1.01 would
+// cross z −0.5 at 2.3775, below the falling wall's top 2.51 — into the part; the tool lifts by _VRT
+// along X only (CYCLE95.UNDERCUT note), which siemens-retract accepts there, and nothing gouges.
+// The first pocket pass's retract from the pocket's top (−1.5, 2.51) crosses z −0.5 at 3.51, above
+// the wall: there a lift along X only is a finding.
+const char* const kNarrowPocket =
+    "T1 D1\nG0 X13.86 Z4.42\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.1, 0.05, 1, 0, 0, 1.01)\nM02\n";
+const char* const kNarrowPocketContour = "G1X4.02Z0\nG2X5.02Z-0.5CR=1\nG1X2Z-0.5\nG1X2Z-1.5\nG1X5.02Z-1.5\nRET\n";
+
+TEST(SiemensOracles, ARetractOverANarrowPocketLiftsAlongXWhereTheDiagonalMeetsThePart) {
+  const Toolpath path = referencePath(kNarrowPocket, "sinumerik-802d", kNarrowPocketContour);
+  const std::vector<Finding> all = judged(kNarrowPocket, "sinumerik-802d", path, kNarrowPocketContour);
+  EXPECT_TRUE(of(all, "siemens-retract").empty()) << findingsText(all);
+  EXPECT_TRUE(of(all, "no-gouge").empty()) << findingsText(all);
+}
+
+TEST(SiemensOracles, ALiftAlongXOnlyWhereTheDiagonalIsFreeIsReported) {
+  Toolpath path = referencePath(kNarrowPocket, "sinumerik-802d", kNarrowPocketContour);
+  // The first pocket pass's retract: from the rising wall's top (−1.5, 2.51) to (−0.49, 3.52).
+  const auto retract = std::find_if(path.moves.begin(), path.moves.end(), [&](const Move& m) {
+    return m.kind == MoveKind::Rapid && std::abs(m.to.z + 0.49) < 1e-9 && std::abs(m.to.x - 3.52) < 1e-9;
+  });
+  ASSERT_NE(retract, path.moves.end());
+  const std::size_t i = static_cast<std::size_t>(retract - path.moves.begin());
+  ASSERT_NEAR(path.from(i).z, -1.5, 1e-9);
+  ASSERT_NEAR(path.from(i).x, 2.51, 1e-9);
+  retract->to.z = -1.5;  // lifted along X only
+  const std::vector<Finding> f = of(judged(kNarrowPocket, "sinumerik-802d", path, kNarrowPocketContour), "siemens-retract");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].move, i);
+}
+
 TEST(SiemensOracles, FalzShiftedIntoAGroovesNearWallIsAGouge) {
   const std::vector<Finding> all = judged(kGrooveFalz, "sinumerik-802d", grooveRoughingWithFalz(-9.5).path, kGroove, "L3");
   EXPECT_FALSE(of(all, "no-gouge").empty()) << findingsText(all);
