@@ -557,6 +557,44 @@ TEST(SiemensPockets, ARetractWiderThanThePocketLiftsAlongXOnly) {
                                              });
 }
 
+// A contour whose first element falls away from the front at 45°: (0, 4) → (−2, 2) → (−3, 2) →
+// (−3, 5), FAL 0.2·√2 (f), _VRT 0.1, MID 2. The profile, the contour offset by f on the stock side:
+// the slope moved by (−0.2, +0.2) — from (−0.2, 4.2), x = z + 4.4 —, the bottom at 2 + f, the wall at
+// −3 + f; the slope meets the bottom at (f − 2.4, 2 + f), the bottom the wall at (−3 + f, 2 + f); the
+// profile ends at (−3 + f, 5). Its largest z is −0.2, behind the contour's first point: the part's
+// face stands at z 0, so the start is _VRT beyond the face, (0.1, 5.1) (LCYC95.START note), not
+// beyond the profile alone (−0.1, 5.1). Top 5, bottom 2 + f, 2 levels: 3.5 + f/2 and 2 + f.
+//  pass 1 (3.5 + f/2, below the face's top 4.2): G0 straight down to (0.1, 3.5 + f/2), G1 to the
+//    face (0, 3.5 + f/2), up it to the contour's first point (0, 4), across the allowance to the
+//    profile's start (−0.2, 4.2), along the profile through the front stretch — down the slope,
+//    along the bottom, up the wall to the previous level 5; retract (−2.9 + f, 5.1); G0 back to z 0.1.
+//  pass 2 (2 + f): G0 down to (0.1, 2 + f), G1 to the face; the face's foot (4.2) stands above the
+//    previous level: no cleanup; retract (0.1, 2.1 + f).
+//  Return: X first to (0.1, 5.1); Z already there.
+// (Before: the start was (−0.1, 5.1), and each infeed ran back along the cut axis to the face at
+// z 0 — siemens-infeed, fuzz seed 17617655989876150606.)
+TEST(SiemensFrontPockets, TheStartLiesBeyondThePartsFaceWhenTheAllowanceMovesTheProfileBehindIt) {
+  const SiemensContour c = polyline("S", {{0, 4}, {-2, 2}, {-3, 2}, {-3, 5}});
+  const double f = 0.2 * std::sqrt(2.0);
+  const double l1 = 3.5 + f / 2, l2 = 2 + f;
+  expectMoves(roughWithCycle95(c, 2, f, 0.1).moves, {
+                                                         {G0, {0.1, 5.1}, "approach"},
+                                                         {G0, {0.1, l1}, "pass", 1},
+                                                         {G1, {0, l1}, "pass", 1},
+                                                         {G1, {0, 4}, "pass", 1},
+                                                         {G1, {-0.2, 4.2}, "pass", 1},
+                                                         {G1, {f - 2.4, 2 + f}, "pass", 1},
+                                                         {G1, {-3 + f, 2 + f}, "pass", 1},
+                                                         {G1, {-3 + f, 5}, "pass", 1},
+                                                         {G0, {-2.9 + f, 5.1}, "pass", 1},
+                                                         {G0, {0.1, 5.1}, "pass", 1},
+                                                         {G0, {0.1, l2}, "pass", 2},
+                                                         {G1, {0, l2}, "pass", 2},
+                                                         {G0, {0.1, l2 + 0.1}, "pass", 2},
+                                                         {G0, {0.1, 5.1}, "return"},
+                                                     });
+}
+
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {
   std::vector<Point> points{path.front().from};
   for (const Segment& s : path) points.push_back(s.to);

@@ -213,10 +213,22 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
   return false;
 }
 
+// The computed start (LCYC95.START, interpretation) lies the clearance beyond the part's face too:
+// where the allowance moves the profile's start behind the contour's first point (a first element
+// falling away from the front, offset contour-parallel), the face still stands at that point's z,
+// and a start the clearance beyond the profile alone stood over the part: the straight infeed from it
+// ran into the allowance (before, the infeed ran back along the cut axis to the face; fuzz seed
+// 17617655989876150606).
+Point startBeyondTheFace(const StockRemoval& c) {
+  Point start = computedStart(c.profile, c.clearance);
+  start.z = std::max(start.z, c.contourFront.z + c.clearance.z);
+  return start;
+}
+
 class StockRemovalPlanner {
  public:
   StockRemovalPlanner(const StockRemoval& c, Point position)
-      : c_(c), position_(position), start_(computedStart(c.profile, c.clearance)) {}
+      : c_(c), position_(position), start_(startBeyondTheFace(c)) {}
 
   std::vector<Move> plan() {
     if (c_.technology != SiemensTechnology::Finishing) rough();
