@@ -554,6 +554,23 @@ TEST(SiemensOracles, ALiftAlongXOnlyWhereTheDiagonalIsFreeIsReported) {
   EXPECT_EQ(f[0].move, i);
 }
 
+// CYCLE95 (fuzz seed 17617655989876150606): L1 falls from (0, 2.4) to (−1.4, 1) and rises on an
+// arc; FAL 0.2 moves the profile's start behind the contour's, to (−0.1414, 2.5414). The start is
+// _VRT (0.1) beyond the part's face at z 0 — (0.1, …), not beyond the profile alone (−0.0414, …) —
+// and each infeed goes straight down from it (LCYC95.START note); the axes return X then Z.
+TEST(SiemensOracles, TheStartLiesBeyondThePartsFace) {
+  const std::string program =
+      "T1 D1\nG0 X10.58 Z2.78\nCYCLE95(\"L1\", 0.5, 0, 0, 0.2, 0.26, 0.26, 0.06, 1, 0, 0, 0.1)\nM02\n";
+  const std::string contour = "G1X4.8Z0\nG1X2Z-1.4\nG3X5.02Z-2.91CR=3.02\nRET\n";
+  const Toolpath path = referencePath(program, "sinumerik-802d", contour);
+  ASSERT_FALSE(path.moves.empty());
+  EXPECT_NEAR(path.moves.front().to.z, 0.1, 1e-9);
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", path, contour);
+  EXPECT_TRUE(of(all, "siemens-infeed").empty()) << findingsText(all);
+  EXPECT_TRUE(of(all, "siemens-returns").empty()) << findingsText(all);
+  EXPECT_TRUE(of(all, "no-gouge").empty()) << findingsText(all);
+}
+
 TEST(SiemensOracles, FalzShiftedIntoAGroovesNearWallIsAGouge) {
   const std::vector<Finding> all = judged(kGrooveFalz, "sinumerik-802d", grooveRoughingWithFalz(-9.5).path, kGroove, "L3");
   EXPECT_FALSE(of(all, "no-gouge").empty()) << findingsText(all);

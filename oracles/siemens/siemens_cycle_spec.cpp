@@ -198,7 +198,10 @@ void describeSiemensCycle(SiemensCycleSpec& c) {
   c.finishPath = finishPathOf(c);
   const Extent e = extentOf(c.profile);
   const double clearance = std::abs(c.retract);
-  c.start = {e.zMax + clearance, e.xMax + clearance};
+  // The clearance beyond the part's face too, which stands at the contour's first point's z where
+  // the allowance moves the profile's start behind it (LCYC95.START note).
+  const double faceZ = frameContour.empty() ? e.zMax : std::max(e.zMax, frameContour.front().from.z);
+  c.start = {faceZ + clearance, e.xMax + clearance};
   c.levels = equalLevels(e.xMax, e.xMin, c.maxInfeed);
   c.undercuts = undercutsOf(c.profile, c.levels);
 }
