@@ -554,6 +554,22 @@ TEST(SiemensOracles, ALiftAlongXOnlyWhereTheDiagonalIsFreeIsReported) {
   EXPECT_EQ(f[0].move, i);
 }
 
+// Face external roughing (fuzz seed 7602198448822310842): L1 ends with G2 X1.68 Z0 CR=0.9 and a line
+// along X at Z0; FAL 0.03 rounds the corner between them. The pocket the arc closes (its rim where the
+// profile falls from (Z−0.24, X(radius)3.66)) is back at its top, the profile's top Z0.03, at the end
+// of that rounding: the pocket pass climbs along the arc and the rounding to the top at FF2 (0.07) —
+// the rounding's last piece starts 0.0027 below the top, within the tolerance, and is the pocket's
+// all the same (before: read as a main pass's, at FF1).
+TEST(SiemensOracles, ARoundingClosingAPocketAtItsTopIsThePockets) {
+  const std::string program =
+      "T1 D1\nG0 X9.62 Z1.16\nCYCLE95(\"L1\", 0.57, 0, 0, 0.03, 0.1, 0.07, 0.07, 2, 0, 0, 0.24)\nM02\n";
+  const std::string contour =
+      "G1X7.3Z-1\nG1X7.3Z-1.53\nG1X5.18Z-1.53\nG1X5.18Z-1\nG1X4.42Z-0.62\nG1X3.66Z-0.24\nG1X2.58Z-0.45\n"
+      "G2X1.68Z0CR=0.9\nG1X0.74Z0\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
+}
+
 // CYCLE95 (fuzz seed 17617655989876150606): L1 falls from (0, 2.4) to (−1.4, 1) and rises on an
 // arc; FAL 0.2 moves the profile's start behind the contour's, to (−0.1414, 2.5414). The start is
 // _VRT (0.1) beyond the part's face at z 0 — (0.1, …), not beyond the profile alone (−0.0414, …) —
