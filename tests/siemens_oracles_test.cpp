@@ -570,6 +570,18 @@ TEST(SiemensOracles, ARoundingClosingAPocketAtItsTopIsThePockets) {
   EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
 }
 
+// LCYC95 roughing (fuzz seed 8782156830944809353): L1 rises from (0, 1) to (0, 1.1) and runs to
+// (−0.1, 1.1); R108 0.5, R110 0.1: one level, 1 (the profile's bottom), start (0.1, 1.2). The pass
+// goes up the face to the previous level 1.1 and retracts by (0.1, 0.1) — to the start itself: the
+// return to the start is a move of no length, none (before: "the path makes 0 move(s) there").
+TEST(SiemensOracles, ARetractEndingAtTheStartNeedsNoReturn) {
+  const std::string program =
+      "T1 D1\nG0 X3.4 Z0.6\n_CNAME=\"L1\"\nR105=1 R106=0 R108=0.5 R109=0\nR110=0.1 R111=0.1 R112=0.05\nLCYC95\nM02\n";
+  const std::string contour = "G1X2Z0\nG1X2.2Z0\nG1X2.2Z-0.1\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802s", referencePath(program, "sinumerik-802s", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-returns").empty()) << findingsText(all);
+}
+
 // CYCLE95 (fuzz seed 17617655989876150606): L1 falls from (0, 2.4) to (−1.4, 1) and rises on an
 // arc; FAL 0.2 moves the profile's start behind the contour's, to (−0.1414, 2.5414). The start is
 // _VRT (0.1) beyond the part's face at z 0 — (0.1, …), not beyond the profile alone (−0.0414, …) —
