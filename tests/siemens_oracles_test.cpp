@@ -582,6 +582,19 @@ TEST(SiemensOracles, ARetractEndingAtTheStartNeedsNoReturn) {
   EXPECT_TRUE(of(all, "siemens-returns").empty()) << findingsText(all);
 }
 
+// CYCLE95 (fuzz seed 15499951743135697239): L1 falls from (0, 1.32) to (−0.1, 1) and rises on an arc;
+// FAL 0.01 moves the profile's start behind the contour's, to about (−0.0095, 1.323). The one level
+// (1.0273) meets the part's face at z 0; the pass goes up the face to the contour's first point and
+// across the allowance to the profile's start — a move rising 0.003 over 0.0095, within the
+// tolerance of a level: no cut of a level (before: "a roughing cut 0.009114 below the profile's top").
+TEST(SiemensOracles, TheMoveAcrossTheAllowanceAtTheFaceIsNoLevelsCut) {
+  const std::string program =
+      "T1 D1\nG0 X5.28 Z1.32\nCYCLE95(\"L1\", 1.61, 0, 0, 0.01, 0.26, 0.26, 0.09, 1, 0, 0, 0.35)\nM02\n";
+  const std::string contour = "G1X2.64Z0\nG1X2Z-0.1\nG3X2.64Z-0.42CR=0.64\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-infeed-steps").empty()) << findingsText(all);
+}
+
 // CYCLE95 (fuzz seed 17617655989876150606): L1 falls from (0, 2.4) to (−1.4, 1) and rises on an
 // arc; FAL 0.2 moves the profile's start behind the contour's, to (−0.1414, 2.5414). The start is
 // _VRT (0.1) beyond the part's face at z 0 — (0.1, …), not beyond the profile alone (−0.0414, …) —
