@@ -595,6 +595,19 @@ TEST(SiemensOracles, TheMoveAcrossTheAllowanceAtTheFaceIsNoLevelsCut) {
   EXPECT_TRUE(of(all, "siemens-infeed-steps").empty()) << findingsText(all);
 }
 
+// CYCLE95 finishing only (fuzz seed 14625125955531410820): L1 rises up the face from (0, 1) to
+// (0, 1.26) and falls to (−0.26, 1); FAL 0.01. The documented G0 back from the contour's end to the
+// start (0.11, 1.37) runs along x = z + 1.26, through the contour's corner (0, 1.26), where the
+// allowance in front of the face (removed along X only) still stands: the cycle's documented move,
+// which rapids-in-air leaves to the sequence as no-gouge does (LCYC95.FINISH note).
+TEST(SiemensOracles, TheDocumentedFinishingReturnIsNoRapidThroughMaterial) {
+  const std::string program =
+      "T1 D1\nG0 X3.74 Z0.61\nCYCLE95(\"L1\", 0.5, 0, 0, 0.01, 0.1, 0.1, 0.05, 5, 0, 0, 0.1)\nM02\n";
+  const std::string contour = "G1X2Z0\nG1X2.52Z0\nG1X2Z-0.26\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "rapids-in-air").empty()) << findingsText(all);
+}
+
 // CYCLE95 (fuzz seed 17617655989876150606): L1 falls from (0, 2.4) to (−1.4, 1) and rises on an
 // arc; FAL 0.2 moves the profile's start behind the contour's, to (−0.1414, 2.5414). The start is
 // _VRT (0.1) beyond the part's face at z 0 — (0.1, …), not beyond the profile alone (−0.0414, …) —
