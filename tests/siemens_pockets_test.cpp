@@ -595,6 +595,63 @@ TEST(SiemensFrontPockets, TheStartLiesBeyondThePartsFaceWhenTheAllowanceMovesThe
                                                      });
 }
 
+// A pocket level above the rim with a bump standing above it: (0, 2) → (−1, 2), up the wall to the rim
+// (−1, 4.2), down to (−2, 3), up the bump to (−3, 5), down to (−4, 2.5), up to the end (−5.1, 8) (x = 6
+// at z −4.7, 4.25 at −4.35). Top 8, bottom 2, MID 2: main levels 6, 4, 2; start (1, 9).
+//  pass 1 (6): to (−4.7, 6), up to (−5.1, 8); retract (−4.1, 9); back.
+//  pass 2 (4): to the wall (−1, 4), up to the rim 4.2, where the profile turns down; retract (0, 5.2);
+//    back.
+//  pass 3 (2): to (0, 2) (the flat lies on the level), along it, up the wall to 4; retract (0, 5).
+//  The pocket: rim (−1, 4.2), top 6 (the lowest level above the rim), back at 6 at (−4.7, 6), lowest
+//  point (−4, 2.5): depth 3.5, two levels of 1.75: 4.25 (above the rim) and 2.5. G0 up to (0, 9).
+//  pass 4 (4.25): a level above the rim goes down at the rim's z: G0 (−1, 9), G1 (−1, 4.25), across to
+//    where the level meets the bump, (−2.625, 4.25), over the bump (−3, 5), down to (−4, 2.5), up to 6
+//    at (−4.7, 6); retract (−3.7, 7).
+//  pass 5 (2.5, the lowest): G0 (−1, 7), G1 down to the rim, along the falling side — (−2, 3), over the
+//    bump, (−4, 2.5) —, up to 4.25 at (−4.35, 4.25); retract (−3.35, 5.25).
+//  Return: (−3.35, 9), (1, 9).
+// (Before: pass 4 went down where its level first meets the pocket's profile, on the bump's rising
+// side at −2.625, and crossed at 4.25 under the bump to its far side: no-gouge, fuzz seed
+// 5698905055672233322.)
+TEST(SiemensPockets, APocketLevelAboveTheRimGoesDownAtTheRimNotOnABump) {
+  const SiemensContour c = polyline("V", {{0, 2}, {-1, 2}, {-1, 4.2}, {-2, 3}, {-3, 5}, {-4, 2.5}, {-5.1, 8}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 9}, "approach"},
+                                                 {G0, {1, 6}, "pass", 1},
+                                                 {G1, {-4.7, 6}, "pass", 1},
+                                                 {G1, {-5.1, 8}, "pass", 1},
+                                                 {G0, {-4.1, 9}, "pass", 1},
+                                                 {G0, {1, 9}, "pass", 1},
+                                                 {G0, {1, 4}, "pass", 2},
+                                                 {G1, {-1, 4}, "pass", 2},
+                                                 {G1, {-1, 4.2}, "pass", 2},
+                                                 {G0, {0, 5.2}, "pass", 2},
+                                                 {G0, {1, 5.2}, "pass", 2},
+                                                 {G0, {1, 2}, "pass", 3},
+                                                 {G1, {0, 2}, "pass", 3},
+                                                 {G1, {-1, 2}, "pass", 3},
+                                                 {G1, {-1, 4}, "pass", 3},
+                                                 {G0, {0, 5}, "pass", 3},
+                                                 {G0, {0, 9}, "pass", 4},
+                                                 {G0, {-1, 9}, "pass", 4},
+                                                 {G1, {-1, 4.25}, "pass", 4},
+                                                 {G1, {-2.625, 4.25}, "pass", 4},
+                                                 {G1, {-3, 5}, "pass", 4},
+                                                 {G1, {-4, 2.5}, "pass", 4},
+                                                 {G1, {-4.7, 6}, "pass", 4},
+                                                 {G0, {-3.7, 7}, "pass", 4},
+                                                 {G0, {-1, 7}, "pass", 5},
+                                                 {G1, {-1, 4.2}, "pass", 5},
+                                                 {G1, {-2, 3}, "pass", 5},
+                                                 {G1, {-3, 5}, "pass", 5},
+                                                 {G1, {-4, 2.5}, "pass", 5},
+                                                 {G1, {-4.35, 4.25}, "pass", 5},
+                                                 {G0, {-3.35, 5.25}, "pass", 5},
+                                                 {G0, {-3.35, 9}, "return"},
+                                                 {G0, {1, 9}, "return"},
+                                             });
+}
+
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {
   std::vector<Point> points{path.front().from};
   for (const Segment& s : path) points.push_back(s.to);

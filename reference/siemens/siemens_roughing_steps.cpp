@@ -413,9 +413,12 @@ class StockRemovalPlanner {
     const std::vector<std::string> rules{c_.rules.undercut};
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
-      // A level at or above the rim (the pocket's top stands above it) crosses over from the rim.
+      // A level at or above the rim (the pocket's top stands above it) crosses over from the rim —
+      // where the level first meets the pocket's profile is then no falling side's point, but may
+      // be a bump's rising side further on (before, the pass went down there and crossed at the
+      // level under the bump: no-gouge, fuzz seed 5698905055672233322).
       const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
-      const double inZ = in ? in->at.z : level >= rim.x - kGeomEps ? rim.z : lowPoint.z;
+      const double inZ = level >= rim.x - kGeomEps ? rim.z : in ? in->at.z : lowPoint.z;
       rapidAlongTheCutAxis(inZ, k, rules);
       emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     } else {
