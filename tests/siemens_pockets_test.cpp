@@ -595,6 +595,51 @@ TEST(SiemensFrontPockets, TheStartLiesBeyondThePartsFaceWhenTheAllowanceMovesThe
                                                      });
 }
 
+// A bump beginning where the pocket's falling side reaches a pocket level: (0, 6) → (−2, 6), down the
+// slope to (−4, 4), up the bump to (−5, 5), down to (−6, 4) and (−8, 2), up the wall to (−8, 6), along
+// to (−10, 6). Top 6, bottom 2, MID 2: main levels 4 and 2, both below the face's top 6; start (1, 7).
+//  pass 1 (4), pass 2 (2): to the face at z 0; retract (1, 5), (1, 3).
+//  The pocket: rim (−2, 6), top 6, lowest point (−8, 2), levels 4 and 2; G0 up to (1, 7).
+//  pass 3 (4): G0 to above the rim (−2, 7), G1 down to it, down the slope to (−4, 4) — where the bump
+//    rises from the level at once: the level meets the pocket's profile there, so the pass goes on
+//    along the profile from there (CYCLE95.UNDERCUT note) — over the bump (−5, 5), down to (−6, 4) and
+//    (−8, 2), up the wall to the previous level 6; retract (−7, 7).
+//  pass 4 (2, the lowest): G0 to above (−4, 4), G1 down to it, along the falling side over the bump to
+//    (−8, 2), up the wall to 4; retract (−7, 5).
+//  Return: (−7, 7), (1, 7).
+// (Before: pass 3 crossed at the level from (−4, 4) to (−6, 4), under the bump: no-gouge, fuzz seed
+// 15931212366711559875.)
+TEST(SiemensPockets, ABumpRisingWhereTheFallingSideReachesTheLevelIsFollowed) {
+  const SiemensContour c = polyline("U", {{0, 6}, {-2, 6}, {-4, 4}, {-5, 5}, {-6, 4}, {-8, 2}, {-8, 6}, {-10, 6}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 7}, "approach"},
+                                                 {G0, {1, 4}, "pass", 1},
+                                                 {G1, {0, 4}, "pass", 1},
+                                                 {G0, {1, 5}, "pass", 1},
+                                                 {G0, {1, 2}, "pass", 2},
+                                                 {G1, {0, 2}, "pass", 2},
+                                                 {G0, {1, 3}, "pass", 2},
+                                                 {G0, {1, 7}, "pass", 3},
+                                                 {G0, {-2, 7}, "pass", 3},
+                                                 {G1, {-2, 6}, "pass", 3},
+                                                 {G1, {-4, 4}, "pass", 3},
+                                                 {G1, {-5, 5}, "pass", 3},
+                                                 {G1, {-6, 4}, "pass", 3},
+                                                 {G1, {-8, 2}, "pass", 3},
+                                                 {G1, {-8, 6}, "pass", 3},
+                                                 {G0, {-7, 7}, "pass", 3},
+                                                 {G0, {-4, 7}, "pass", 4},
+                                                 {G1, {-4, 4}, "pass", 4},
+                                                 {G1, {-5, 5}, "pass", 4},
+                                                 {G1, {-6, 4}, "pass", 4},
+                                                 {G1, {-8, 2}, "pass", 4},
+                                                 {G1, {-8, 4}, "pass", 4},
+                                                 {G0, {-7, 5}, "pass", 4},
+                                                 {G0, {-7, 7}, "return"},
+                                                 {G0, {1, 7}, "return"},
+                                             });
+}
+
 // A pocket level above the rim with a bump standing above it: (0, 2) → (−1, 2), up the wall to the rim
 // (−1, 4.2), down to (−2, 3), up the bump to (−3, 5), down to (−4, 2.5), up to the end (−5.1, 8) (x = 6
 // at z −4.7, 4.25 at −4.35). Top 8, bottom 2, MID 2: main levels 6, 4, 2; start (1, 9).

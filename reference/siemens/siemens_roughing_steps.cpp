@@ -184,6 +184,19 @@ std::optional<std::size_t> frontStretchEnd(const std::vector<Segment>& profile, 
   return profile.size() - 1;
 }
 
+// Where a pocket pass standing at `at` at its level next meets the pocket's profile along the level
+// (towards −z): where the profile rises from `at` itself — a bump inside the pocket beginning where
+// the falling side reaches the level —, at `at` (before, the pass crossed at the level under that
+// bump: no-gouge, fuzz seed 15931212366711559875); else the first point strictly beyond it (on the
+// falling side the pass came down: no crossing of its own).
+std::optional<ProfilePoint> nextMeetingAlongTheLevel(const std::vector<Segment>& pocket, double level, Point at) {
+  for (std::size_t i = 0; i < pocket.size(); ++i) {
+    if (distance(pocket[i].from, at) <= kGeomEps && unitTangentAtStart(pocket[i]).x > 1e-9) return ProfilePoint{i, at};
+  }
+  constexpr double kBeyond = 1e-7;
+  return roughingIntersection(pocket, level, at.z - kBeyond);
+}
+
 // Whether the pieces run straight along the depth axis (a wall): a plunge down them is one G1.
 bool isWall(const std::vector<Segment>& pieces) {
   return std::all_of(pieces.begin(), pieces.end(),
@@ -431,10 +444,8 @@ class StockRemovalPlanner {
     // bump's far side, a groove inside the pocket, a wall returning along itself) up to the previous
     // level. The lowest pass is at the lowest point already.
     const std::vector<Segment> pocket = piecesOf(u);
-    // Strictly beyond the point the pass came down to (on the falling side: no crossing of its own).
-    constexpr double kBeyond = 1e-7;
     const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
-                               : roughingIntersection(pocket, level, current().z - kBeyond);
+                               : nextMeetingAlongTheLevel(pocket, level, current());
     // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
     if (across) {
       cutAlongLevel(k, across->at, c_.undercutFeed, c_.rules.undercut);
