@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -695,6 +696,37 @@ TEST(SiemensPockets, APocketLevelAboveTheRimGoesDownAtTheRimNotOnABump) {
                                                  {G0, {-3.35, 9}, "return"},
                                                  {G0, {1, 9}, "return"},
                                              });
+}
+
+// The front stretch ending inside an arc that goes on over its top: (0, 2) falls to (−1, 0), a line
+// rises to (−3 + √2, 1.5 + √2), an arc of radius 2 about (−3, 1.5) (a quarter circle) runs over its top
+// (−3, 3.5) to (−3 − √2, 1.5 + √2), a line falls to (−5, 1), one rises to the end (−6, 4). Top 4,
+// bottom 0, MID 1: levels 3, 2, 1, 0; start (1, 5). The profile falls from its first point (x 2): the
+// front stretch runs to where it first rises back to 3, the lowest level above 2 — on the arc's
+// rising half at z −3 + √(4 − 1.5²) = −1.677124 — and no further, though the arc goes on.
+//  pass 1 (3, previous 4): G0 down to (1, 3), G1 to where the level meets the arc, (−1.677124, 3), along
+//    the arc up to its top (−3, 3.5), where the profile turns down (an undercut begins: the stretch
+//    ended before it); retract (−2, 4.5); G0 back to z 1.
+// (Before: the cleanup went through the arc's descent to its end (−3 − √2, 1.5 + √2) — the whole
+// element counted as the stretch's —, fuzz seed 15261219683670512766, an allowance rounding there.)
+TEST(SiemensFrontPockets, TheFrontStretchEndsWhereItReachesItsLevelNotAtItsElementsEnd) {
+  const double r2 = std::sqrt(2.0);
+  SiemensContour c = polyline("T", {{0, 2}, {-1, 0}, {-3 + r2, 1.5 + r2}});
+  c.segments.push_back(arc(SegmentKind::ArcCCW, {-3 + r2, 1.5 + r2}, {-3 - r2, 1.5 + r2}, {-3, 1.5}, 3));
+  c.segments.push_back(line({-3 - r2, 1.5 + r2}, {-5, 1}, 4));
+  c.segments.push_back(line({-5, 1}, {-6, 4}, 5));
+  const std::vector<Move> all = roughWithCycle95(c, 1).moves;
+  std::vector<Move> firstPass;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(firstPass), [](const Move& m) { return m.pass == 1; });
+  const double hitZ = -3 + std::sqrt(4 - 1.5 * 1.5);
+  expectMoves(firstPass, {
+                             {G0, {1, 3}, "pass", 1},
+                             {G1, {hitZ, 3}, "pass", 1},
+                             {G1, {-3, 3.5}, "pass", 1},
+                             {G0, {-2, 4.5}, "pass", 1},
+                             {G0, {1, 4.5}, "pass", 1},
+                         });
+  EXPECT_EQ(firstPass[2].shape, SegmentKind::ArcCCW);
 }
 
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {

@@ -113,28 +113,45 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughD
   });
 }
 
+// The parts of `s` (the piece of profile element `i` a cleanup runs along, its end the element's), each
+// with whether the cleanup goes through the profile's descents on it: up to `end` it does, beyond it
+// not — within the element where `end` lies too (an allowance rounding rising to the front stretch's
+// level and falling on from there: before, the main pass went on down its far side, fuzz seed
+// 15261219683670512766).
+std::vector<std::pair<Segment, bool>> partsThroughDescents(const Segment& element, const Segment& s, std::size_t i,
+                                                           const std::optional<ProfilePoint>& end) {
+  if (!end || i > end->segment) return {{s, false}};
+  if (i < end->segment) return {{s, true}};
+  const double at = positionAlong(element, end->at), from = positionAlong(element, s.from);
+  if (at <= from + kGeomEps) return {{s, false}};
+  if (at >= positionAlong(element, s.to) - kGeomEps) return {{s, true}};
+  return {{portionOf(s, s.from, end->at), true}, {portionOf(s, end->at, s.to), false}};
+}
+
 // The contour-parallel cleanup (LCYC95.ROUGH "G1/G2/G3 along contour + allowance to its last
 // point"; CYCLE95.ROUGH "up to the last point of intersection"), interpretation: from the roughing
 // intersection forwards along the profile until it reaches the previous level (the last point the
 // previous pass cut), turns back towards the depth axis (an undercut), or ends. A level that meets
 // the profile at an element's end goes on along the next element; a stop at an element's start
 // leaves nothing on it (no piece without length: an arc's would read as a full circle).
-// Up to the element `throughDescentsUpTo`, when given (the front stretch's end; a pocket's last
-// element), the cleanup goes on through the profile's descents.
+// Up to the point `throughDescentsUpTo`, when given (the front stretch's end; a pocket's end), the
+// cleanup goes on through the profile's descents.
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
-                                         std::optional<std::size_t> throughDescentsUpTo = std::nullopt) {
+                                         std::optional<ProfilePoint> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (hasNoLength(s)) continue;  // the hit is this element's end
-    const bool throughDescents = throughDescentsUpTo && i <= *throughDescentsUpTo;
-    if (const auto stop = cleanupStopOn(s, upper, throughDescents)) {
-      const Segment piece = portionOf(s, s.from, *stop);
-      if (!hasNoLength(piece)) pieces.push_back(piece);
-      break;
+    for (const auto& [part, throughDescents] : partsThroughDescents(profile[i], s, i, throughDescentsUpTo)) {
+      if (hasNoLength(part)) continue;
+      if (const auto stop = cleanupStopOn(part, upper, throughDescents)) {
+        const Segment piece = portionOf(part, part.from, *stop);
+        if (!hasNoLength(piece)) pieces.push_back(piece);
+        return pieces;
+      }
+      pieces.push_back(part);
+      if (part.to.x >= upper - kGeomEps) return pieces;
     }
-    pieces.push_back(s);
-    if (s.to.x >= upper - kGeomEps) break;
   }
   return pieces;
 }
@@ -169,19 +186,19 @@ std::vector<Segment> pathBetween(const std::vector<Segment>& path, const Profile
 // stretch from there to where the profile first rises back to the lowest level strictly above that
 // point is no undercut (findUndercuts passes over it): nothing stands before it, and the main
 // passes reach it along their levels from the start side. Their cleanup goes through the stretch's
-// descents up to the previous level. The element where the stretch ends, or nothing when the
+// descents up to the previous level. Where the stretch ends (its element and point), or nothing when the
 // profile does not fall from its first point (or never rises back).
-std::optional<std::size_t> frontStretchEnd(const std::vector<Segment>& profile, const std::vector<double>& levels) {
+std::optional<ProfilePoint> frontStretchEnd(const std::vector<Segment>& profile, const std::vector<double>& levels) {
   const Point first = profile.front().from;
   const auto descent = descentStartOn(profile.front());
   if (!descent || distance(*descent, first) > kGeomEps) return std::nullopt;
   const double top = lowestLevelAbove(levels, first.x);
   for (std::size_t i = 0; i < profile.size(); ++i) {
     for (const Point& p : intersectWithLevelX(profile[i], top)) {
-      if (distance(p, first) > kGeomEps) return i;
+      if (distance(p, first) > kGeomEps) return ProfilePoint{i, p};
     }
   }
-  return profile.size() - 1;
+  return ProfilePoint{profile.size() - 1, profile.back().to};
 }
 
 // Where a pocket pass standing at `at` at its level next meets the pocket's profile along the level
@@ -449,7 +466,7 @@ class StockRemovalPlanner {
     // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
     if (across) {
       cutAlongLevel(k, across->at, c_.undercutFeed, c_.rules.undercut);
-      for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
+      for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, ProfilePoint{pocket.size() - 1, pocket.back().to})) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
       }
     } else {  // the pocket stays open to the profile's end
@@ -560,7 +577,7 @@ class StockRemovalPlanner {
   const StockRemoval& c_;
   Point position_;
   Point start_;
-  std::optional<std::size_t> frontStretchEnd_;  // set by rough()
+  std::optional<ProfilePoint> frontStretchEnd_;  // set by rough()
   std::vector<Move> moves_;
 };
 
