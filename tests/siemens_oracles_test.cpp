@@ -570,6 +570,21 @@ TEST(SiemensOracles, ARoundingClosingAPocketAtItsTopIsThePockets) {
   EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
 }
 
+// Face external complete machining (fuzz seed 12256850900456832735): L1's pocket behind the rim at
+// Z-1.98 holds a spike rising back to Z-1.98 (X9.16, out and back along the same line), which FALX
+// 0.23 widens into a flat of 0.46 at Z-1.98; the pocket's top is the main level just above the rim,
+// 0.0027 higher. The pocket passes run along that flat, inside the pocket, at FF2 (0.12) — not a
+// main pass's cut along the top level, which lies at the top (before: FF1 asked of it).
+TEST(SiemensOracles, AFlatInsideAPocketJustBelowItsTopIsThePockets) {
+  const std::string program =
+      "T1 D1\nG0 X26.8 Z3.12\nCYCLE95(\"L1\", 0.7, 0, 0.23, 0, 0.11, 0.12, 0.1, 10, 0, 0, 0.47)\nM02\n";
+  const std::string contour =
+      "G1X20.56Z-7.25\nG1X20.56Z-6.22\nG1X17.18Z-4.53\nG2X12.08Z-1.98CR=5.1\nG1X12.08Z-2.71\nG1X9.16Z-2.71\n"
+      "G1X9.16Z-1.98\nG1X9.16Z-2.78\nG1X5.32Z-2.78\nG1X5.32Z-1.98\nG1X4.42Z-1.53\nG1X1.36Z0\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
+}
+
 // LCYC95 roughing (fuzz seed 8782156830944809353): L1 rises from (0, 1) to (0, 1.1) and runs to
 // (−0.1, 1.1); R108 0.5, R110 0.1: one level, 1 (the profile's bottom), start (0.1, 1.2). The pass
 // goes up the face to the previous level 1.1 and retracts by (0.1, 0.1) — to the start itself: the

@@ -217,14 +217,16 @@ bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol) {
   // spike whose far side falls into the pocket along the same line): the main pass's, not the
   // pocket's.
   const bool climb = zHigh - zLow <= tol && to.x > from.x;
-  // A move rising to the pocket's top (no higher) closes the pocket's pass however little below the
-  // top it starts: the last sliver of a rising side, an allowance rounding where the pocket ends.
-  const auto risesToTheTop = [&](const SiemensUndercut& u) {
-    return to.x > from.x && to.x <= u.top + tol && xLow < u.top - 1e-6;
+  // A move that does not descend and ends no higher than the pocket's top is the pocket pass's however
+  // little below the top it lies (by more than 1e-6): the last sliver of a rising side, an allowance
+  // rounding where the pocket ends, a flat a rounding error below the top (a spike's top inside the
+  // pocket). A main pass's cut along the top level (in pieces with DAM) lies at the top.
+  const auto justBelowTheTop = [&](const SiemensUndercut& u) {
+    return to.x >= from.x && to.x <= u.top + tol && xLow < u.top - 1e-6;
   };
   return std::any_of(c.undercuts.begin(), c.undercuts.end(), [&](const SiemensUndercut& u) {
     if (climb && std::abs(zHigh - u.rimZ) <= tol) return false;
-    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && (xLow < u.top + (plunge ? tol : -tol) || risesToTheTop(u));
+    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && (xLow < u.top + (plunge ? tol : -tol) || justBelowTheTop(u));
   });
 }
 
