@@ -231,6 +231,13 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
   };
   const double h = 1 / std::numbers::sqrt2;
   for (const Segment& s : profile) {
+    // Most elements lie outside the window or below p (the pass has just cut there): a box around
+    // the element (an arc's whole circle) rules them out before anything is computed.
+    const double r = s.isArc() ? s.radius() : 0;
+    const double zLow = s.isArc() ? s.center.z - r : std::min(s.from.z, s.to.z);
+    const double zHigh = s.isArc() ? s.center.z + r : std::max(s.from.z, s.to.z);
+    const double xHigh = s.isArc() ? s.center.x + r : std::max(s.from.x, s.to.x);
+    if (zHigh <= p.z + kGeomEps || zLow > p.z + v + kGeomEps || xHigh <= p.x + kGeomEps) continue;
     std::vector<Point> candidates{s.from, s.to};
     for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) candidates.push_back(transposed(t));
     if (s.isArc()) {
