@@ -5,6 +5,7 @@
 // where the part stands in the way of the diagonal (the profile within tolerance of it or above,
 // a pocket's falling side closer than v): there the retract lifts by v along the depth axis only
 // (CYCLE95.UNDERCUT note, interpretation).
+#include <algorithm>
 #include <cmath>
 
 #include "oracles/oracles.h"
@@ -17,10 +18,10 @@ namespace {
 
 // Whether the profile comes within `tol` of the diagonal from `p` by `v` in each axis, or stands
 // above it, for z in (p.z, p.z + v]: each element sampled every 0.01 mm at most (an arc's sagitta
-// between samples stays far below the tolerance).
+// between samples stays far below the tolerance; at most 100,001 samples an element).
 bool partInTheWayOfTheDiagonal(const std::vector<Segment>& profile, Point p, double v, double tol) {
   for (const Segment& s : profile) {
-    const int samples = 1 + static_cast<int>(std::ceil(s.length() / 0.01));
+    const int samples = 1 + static_cast<int>(std::min(1e5, std::ceil(s.length() / 0.01)));
     for (int j = 0; j <= samples; ++j) {
       const Point q = pointAt(s, static_cast<double>(j) / samples);
       const double along = q.z - p.z;
