@@ -102,8 +102,10 @@ bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance
 // SINUMERIK (LCYC95.FINISH: "G0 in both axes back to the cycle start"; CYCLE95.FINISH the same):
 // the finishing pass's return from the contour's end to the computed start is a straight line that
 // crosses the part wherever the contour ends below a profile standing between (a pocket open to the
-// contour's end). The documented move, not an engine's choice (interpretation): no-gouge leaves it
-// to the documented sequence, as rapids-in-air leaves G73's programmed head.
+// contour's end), or the allowance a finishing-only call leaves standing in front of a face it
+// went up (removed along the depth axis only). The documented move, not an engine's choice
+// (interpretation): no-gouge and rapids-in-air leave it to the documented sequence, as rapids-in-air
+// leaves G73's programmed head.
 bool isDocumentedFinishingReturn(const MaterialReplay& r, const JudgeInput& in, std::size_t i) {
   if (!r.siemensFinishing || r.siemensFinishing->finishPath.empty()) return false;
   if (in.path.moves[i].kind != MoveKind::Rapid) return false;
@@ -221,6 +223,7 @@ class RapidsInAirOracle : public Oracle {
       const Crossing& c = r->rapidCrossings[i];
       if (c.length <= 0) continue;
       if (programmedRapidHead && isShiftedG73Head(in, *r->cycle, i, tolerance(in))) continue;
+      if (isDocumentedFinishingReturn(*r, in, i)) continue;
       std::ostringstream m;
       m << "rapid move " << i << " crosses " << c.length << " mm of material still standing";
       Finding f = materialFinding(*this, *r, i, m.str(), kSiemensMaterialSteps);

@@ -511,6 +511,135 @@ TEST(SiemensOracles, APocketPassDescendingAlongASmallRoundingAtItsRimIsThePocket
   EXPECT_TRUE(of(judged(program, "sinumerik-802d", path, contour), "siemens-feeds").empty());
 }
 
+// The reference's path of a program, for the oracles to judge (the tests below expect no finding of
+// the oracle their rule concerns, or doctor one move and expect it named).
+Toolpath referencePath(const std::string& program, const std::string& profile, const std::string& contour) {
+  PlanRequest request{program, "case.mpf", profile, {}, {}};
+  request.subprograms.push_back({"L1", contour, "test#/subprograms/L1"});
+  return planWithReference(request);
+}
+
+// A pocket narrower than _VRT (issue 16, fuzz seed 7566792160692496541): L1 (radius) rounds from
+// (0, 2.01) to (−0.5, 2.51), falls down the wall at z −0.5 to 1, runs to −1.5 and rises to 2.51;
+// _VRT 1.01 is wider than the pocket (1). The last pocket pass ends on the rising wall at the level
+// 1.3775 (the pocket's levels 2.51 … 1 in four steps of 0.3775): the diagonal retract by 1.01 would
+// cross z −0.5 at 2.3775, below the falling wall's top 2.51 — into the part; the tool lifts by _VRT
+// along X only (CYCLE95.UNDERCUT note), which siemens-retract accepts there, and nothing gouges.
+// The first pocket pass's retract from the pocket's top (−1.5, 2.51) crosses z −0.5 at 3.51, above
+// the wall: there a lift along X only is a finding.
+const char* const kNarrowPocket =
+    "T1 D1\nG0 X13.86 Z4.42\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.1, 0.05, 1, 0, 0, 1.01)\nM02\n";
+const char* const kNarrowPocketContour = "G1X4.02Z0\nG2X5.02Z-0.5CR=1\nG1X2Z-0.5\nG1X2Z-1.5\nG1X5.02Z-1.5\nRET\n";
+
+TEST(SiemensOracles, ARetractOverANarrowPocketLiftsAlongXWhereTheDiagonalMeetsThePart) {
+  const Toolpath path = referencePath(kNarrowPocket, "sinumerik-802d", kNarrowPocketContour);
+  const std::vector<Finding> all = judged(kNarrowPocket, "sinumerik-802d", path, kNarrowPocketContour);
+  EXPECT_TRUE(of(all, "siemens-retract").empty()) << findingsText(all);
+  EXPECT_TRUE(of(all, "no-gouge").empty()) << findingsText(all);
+}
+
+TEST(SiemensOracles, ALiftAlongXOnlyWhereTheDiagonalIsFreeIsReported) {
+  Toolpath path = referencePath(kNarrowPocket, "sinumerik-802d", kNarrowPocketContour);
+  // The first pocket pass's retract: from the rising wall's top (−1.5, 2.51) to (−0.49, 3.52).
+  const auto retract = std::find_if(path.moves.begin(), path.moves.end(), [&](const Move& m) {
+    return m.kind == MoveKind::Rapid && std::abs(m.to.z + 0.49) < 1e-9 && std::abs(m.to.x - 3.52) < 1e-9;
+  });
+  ASSERT_NE(retract, path.moves.end());
+  const std::size_t i = static_cast<std::size_t>(retract - path.moves.begin());
+  ASSERT_NEAR(path.from(i).z, -1.5, 1e-9);
+  ASSERT_NEAR(path.from(i).x, 2.51, 1e-9);
+  retract->to.z = -1.5;  // lifted along X only
+  const std::vector<Finding> f = of(judged(kNarrowPocket, "sinumerik-802d", path, kNarrowPocketContour), "siemens-retract");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].move, i);
+}
+
+// Face external roughing (fuzz seed 7602198448822310842): L1 ends with G2 X1.68 Z0 CR=0.9 and a line
+// along X at Z0; FAL 0.03 rounds the corner between them. The pocket the arc closes (its rim where the
+// profile falls from (Z−0.24, X(radius)3.66)) is back at its top, the profile's top Z0.03, at the end
+// of that rounding: the pocket pass climbs along the arc and the rounding to the top at FF2 (0.07) —
+// the rounding's last piece starts 0.0027 below the top, within the tolerance, and is the pocket's
+// all the same (before: read as a main pass's, at FF1).
+TEST(SiemensOracles, ARoundingClosingAPocketAtItsTopIsThePockets) {
+  const std::string program =
+      "T1 D1\nG0 X9.62 Z1.16\nCYCLE95(\"L1\", 0.57, 0, 0, 0.03, 0.1, 0.07, 0.07, 2, 0, 0, 0.24)\nM02\n";
+  const std::string contour =
+      "G1X7.3Z-1\nG1X7.3Z-1.53\nG1X5.18Z-1.53\nG1X5.18Z-1\nG1X4.42Z-0.62\nG1X3.66Z-0.24\nG1X2.58Z-0.45\n"
+      "G2X1.68Z0CR=0.9\nG1X0.74Z0\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
+}
+
+// Face external complete machining (fuzz seed 12256850900456832735): L1's pocket behind the rim at
+// Z-1.98 holds a spike rising back to Z-1.98 (X9.16, out and back along the same line), which FALX
+// 0.23 widens into a flat of 0.46 at Z-1.98; the pocket's top is the main level just above the rim,
+// 0.0027 higher. The pocket passes run along that flat, inside the pocket, at FF2 (0.12) — not a
+// main pass's cut along the top level, which lies at the top (before: FF1 asked of it).
+TEST(SiemensOracles, AFlatInsideAPocketJustBelowItsTopIsThePockets) {
+  const std::string program =
+      "T1 D1\nG0 X26.8 Z3.12\nCYCLE95(\"L1\", 0.7, 0, 0.23, 0, 0.11, 0.12, 0.1, 10, 0, 0, 0.47)\nM02\n";
+  const std::string contour =
+      "G1X20.56Z-7.25\nG1X20.56Z-6.22\nG1X17.18Z-4.53\nG2X12.08Z-1.98CR=5.1\nG1X12.08Z-2.71\nG1X9.16Z-2.71\n"
+      "G1X9.16Z-1.98\nG1X9.16Z-2.78\nG1X5.32Z-2.78\nG1X5.32Z-1.98\nG1X4.42Z-1.53\nG1X1.36Z0\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
+}
+
+// LCYC95 roughing (fuzz seed 8782156830944809353): L1 rises from (0, 1) to (0, 1.1) and runs to
+// (−0.1, 1.1); R108 0.5, R110 0.1: one level, 1 (the profile's bottom), start (0.1, 1.2). The pass
+// goes up the face to the previous level 1.1 and retracts by (0.1, 0.1) — to the start itself: the
+// return to the start is a move of no length, none (before: "the path makes 0 move(s) there").
+TEST(SiemensOracles, ARetractEndingAtTheStartNeedsNoReturn) {
+  const std::string program =
+      "T1 D1\nG0 X3.4 Z0.6\n_CNAME=\"L1\"\nR105=1 R106=0 R108=0.5 R109=0\nR110=0.1 R111=0.1 R112=0.05\nLCYC95\nM02\n";
+  const std::string contour = "G1X2Z0\nG1X2.2Z0\nG1X2.2Z-0.1\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802s", referencePath(program, "sinumerik-802s", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-returns").empty()) << findingsText(all);
+}
+
+// CYCLE95 (fuzz seed 15499951743135697239): L1 falls from (0, 1.32) to (−0.1, 1) and rises on an arc;
+// FAL 0.01 moves the profile's start behind the contour's, to about (−0.0095, 1.323). The one level
+// (1.0273) meets the part's face at z 0; the pass goes up the face to the contour's first point and
+// across the allowance to the profile's start — a move rising 0.003 over 0.0095, within the
+// tolerance of a level: no cut of a level (before: "a roughing cut 0.009114 below the profile's top").
+TEST(SiemensOracles, TheMoveAcrossTheAllowanceAtTheFaceIsNoLevelsCut) {
+  const std::string program =
+      "T1 D1\nG0 X5.28 Z1.32\nCYCLE95(\"L1\", 1.61, 0, 0, 0.01, 0.26, 0.26, 0.09, 1, 0, 0, 0.35)\nM02\n";
+  const std::string contour = "G1X2.64Z0\nG1X2Z-0.1\nG3X2.64Z-0.42CR=0.64\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "siemens-infeed-steps").empty()) << findingsText(all);
+}
+
+// CYCLE95 finishing only (fuzz seed 14625125955531410820): L1 rises up the face from (0, 1) to
+// (0, 1.26) and falls to (−0.26, 1); FAL 0.01. The documented G0 back from the contour's end to the
+// start (0.11, 1.37) runs along x = z + 1.26, through the contour's corner (0, 1.26), where the
+// allowance in front of the face (removed along X only) still stands: the cycle's documented move,
+// which rapids-in-air leaves to the sequence as no-gouge does (LCYC95.FINISH note).
+TEST(SiemensOracles, TheDocumentedFinishingReturnIsNoRapidThroughMaterial) {
+  const std::string program =
+      "T1 D1\nG0 X3.74 Z0.61\nCYCLE95(\"L1\", 0.5, 0, 0, 0.01, 0.1, 0.1, 0.05, 5, 0, 0, 0.1)\nM02\n";
+  const std::string contour = "G1X2Z0\nG1X2.52Z0\nG1X2Z-0.26\nRET\n";
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  EXPECT_TRUE(of(all, "rapids-in-air").empty()) << findingsText(all);
+}
+
+// CYCLE95 (fuzz seed 17617655989876150606): L1 falls from (0, 2.4) to (−1.4, 1) and rises on an
+// arc; FAL 0.2 moves the profile's start behind the contour's, to (−0.1414, 2.5414). The start is
+// _VRT (0.1) beyond the part's face at z 0 — (0.1, …), not beyond the profile alone (−0.0414, …) —
+// and each infeed goes straight down from it (LCYC95.START note); the axes return X then Z.
+TEST(SiemensOracles, TheStartLiesBeyondThePartsFace) {
+  const std::string program =
+      "T1 D1\nG0 X10.58 Z2.78\nCYCLE95(\"L1\", 0.5, 0, 0, 0.2, 0.26, 0.26, 0.06, 1, 0, 0, 0.1)\nM02\n";
+  const std::string contour = "G1X4.8Z0\nG1X2Z-1.4\nG3X5.02Z-2.91CR=3.02\nRET\n";
+  const Toolpath path = referencePath(program, "sinumerik-802d", contour);
+  ASSERT_FALSE(path.moves.empty());
+  EXPECT_NEAR(path.moves.front().to.z, 0.1, 1e-9);
+  const std::vector<Finding> all = judged(program, "sinumerik-802d", path, contour);
+  EXPECT_TRUE(of(all, "siemens-infeed").empty()) << findingsText(all);
+  EXPECT_TRUE(of(all, "siemens-returns").empty()) << findingsText(all);
+  EXPECT_TRUE(of(all, "no-gouge").empty()) << findingsText(all);
+}
+
 TEST(SiemensOracles, FalzShiftedIntoAGroovesNearWallIsAGouge) {
   const std::vector<Finding> all = judged(kGrooveFalz, "sinumerik-802d", grooveRoughingWithFalz(-9.5).path, kGroove, "L3");
   EXPECT_FALSE(of(all, "no-gouge").empty()) << findingsText(all);

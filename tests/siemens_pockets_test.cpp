@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -23,7 +25,8 @@ namespace {
 
 using namespace siemens_test;
 
-// CYCLE95 VARI 1 (longitudinal external roughing), no allowances, FF1 0.2, FF2 0.05, _VRT 1.
+// CYCLE95 VARI 1 (longitudinal external roughing), FF1 0.2, FF2 0.05; no allowances and _VRT 1
+// unless given.
 // Every feed move of pass `firstPass` and after at `feed` (0: every feed move; moves outside the
 // passes have pass 0).
 void expectEveryFeedFrom(const std::vector<Move>& moves, int firstPass, double feed) {
@@ -34,15 +37,16 @@ void expectEveryFeedFrom(const std::vector<Move>& moves, int firstPass, double f
   }
 }
 
-SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid) {
+SiemensCycleOutcome roughWithCycle95(const SiemensContour& contour, double mid, double fal = 0, double vrt = 1) {
   Cycle95Parameters p;
   p.contourName = contour.name;
   p.infeed = mid;
+  p.allowance = fal;
   p.roughingFeed = 0.2;
   p.undercutFeed = 0.05;
   p.finishingFeed = 0.1;
   p.type = machiningTypeOf(1).value();
-  p.retract = 1;
+  p.retract = vrt;
   SiemensCycleCall call;
   call.line = 4;
   call.position = {5, 15};
@@ -512,6 +516,217 @@ TEST(SiemensPockets, APocketOpenToTheEndGoesOverTheBumpItHolds) {
                              {G0, {-9, 9}, "return"},
                              {G0, {1, 9}, "return"},
                          });
+}
+
+// A pocket narrower than _VRT (1): (0, 6) → (−2, 6), down the falling wall to (−2, 2), along the
+// bottom to (−2.5, 2), up the rising wall to (−2.5, 6), along to (−10, 6). Top 6, bottom 2, MID 2:
+// main levels 4 and 2 (both below the face's top 6); start (1, 7).
+//  pass 1 (4): G0 down to (1, 4), G1 to the face at z 0; retract (1, 5) (no G0 back: at the start's z).
+//  pass 2 (2): likewise; retract (1, 3).
+//  The pocket: rim (−2, 6), top 6 (no level above the rim), bottom 2, levels 4 and 2; G0 up to (1, 7).
+//  pass 3 (4): G0 along to above the rim's wall (−2, 7), G1 down it to (−2, 4), across to the rising
+//    wall (−2.5, 4), up it to 6. Retract: the diagonal to (−1.5, 7) passes z −2 at 6.5, above the falling
+//    wall's top 6: by _VRT in each axis.
+//  pass 4 (2, the lowest): G0 to (−2, 7), G1 down the wall to (−2, 2), along the bottom to (−2.5, 2), up
+//    to 4. Retract: the diagonal to (−1.5, 5) would pass z −2 at 4.5, below the falling wall's top 6 —
+//    into the part: the tool lifts by _VRT along X only, to (−2.5, 5) (CYCLE95.UNDERCUT note).
+//  Return: X first (−2.5, 7), then Z (1, 7).
+// (Before: the retract went to (−1.5, 5) through the wall: no-gouge, fuzz seed 7566792160692496541.)
+TEST(SiemensPockets, ARetractWiderThanThePocketLiftsAlongXOnly) {
+  const SiemensContour c = polyline("N", {{0, 6}, {-2, 6}, {-2, 2}, {-2.5, 2}, {-2.5, 6}, {-10, 6}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 7}, "approach"},
+                                                 {G0, {1, 4}, "pass", 1},
+                                                 {G1, {0, 4}, "pass", 1},
+                                                 {G0, {1, 5}, "pass", 1},
+                                                 {G0, {1, 2}, "pass", 2},
+                                                 {G1, {0, 2}, "pass", 2},
+                                                 {G0, {1, 3}, "pass", 2},
+                                                 {G0, {1, 7}, "pass", 3},
+                                                 {G0, {-2, 7}, "pass", 3},
+                                                 {G1, {-2, 4}, "pass", 3},
+                                                 {G1, {-2.5, 4}, "pass", 3},
+                                                 {G1, {-2.5, 6}, "pass", 3},
+                                                 {G0, {-1.5, 7}, "pass", 3},
+                                                 {G0, {-2, 7}, "pass", 4},
+                                                 {G1, {-2, 2}, "pass", 4},
+                                                 {G1, {-2.5, 2}, "pass", 4},
+                                                 {G1, {-2.5, 4}, "pass", 4},
+                                                 {G0, {-2.5, 5}, "pass", 4},
+                                                 {G0, {-2.5, 7}, "return"},
+                                                 {G0, {1, 7}, "return"},
+                                             });
+}
+
+// A contour whose first element falls away from the front at 45°: (0, 4) → (−2, 2) → (−3, 2) →
+// (−3, 5), FAL 0.2·√2 (f), _VRT 0.1, MID 2. The profile, the contour offset by f on the stock side:
+// the slope moved by (−0.2, +0.2) — from (−0.2, 4.2), x = z + 4.4 —, the bottom at 2 + f, the wall at
+// −3 + f; the slope meets the bottom at (f − 2.4, 2 + f), the bottom the wall at (−3 + f, 2 + f); the
+// profile ends at (−3 + f, 5). Its largest z is −0.2, behind the contour's first point: the part's
+// face stands at z 0, so the start is _VRT beyond the face, (0.1, 5.1) (LCYC95.START note), not
+// beyond the profile alone (−0.1, 5.1). Top 5, bottom 2 + f, 2 levels: 3.5 + f/2 and 2 + f.
+//  pass 1 (3.5 + f/2, below the face's top 4.2): G0 straight down to (0.1, 3.5 + f/2), G1 to the
+//    face (0, 3.5 + f/2), up it to the contour's first point (0, 4), across the allowance to the
+//    profile's start (−0.2, 4.2), along the profile through the front stretch — down the slope,
+//    along the bottom, up the wall to the previous level 5; retract (−2.9 + f, 5.1); G0 back to z 0.1.
+//  pass 2 (2 + f): G0 down to (0.1, 2 + f), G1 to the face; the face's foot (4.2) stands above the
+//    previous level: no cleanup; retract (0.1, 2.1 + f).
+//  Return: X first to (0.1, 5.1); Z already there.
+// (Before: the start was (−0.1, 5.1), and each infeed ran back along the cut axis to the face at
+// z 0 — siemens-infeed, fuzz seed 17617655989876150606.)
+TEST(SiemensFrontPockets, TheStartLiesBeyondThePartsFaceWhenTheAllowanceMovesTheProfileBehindIt) {
+  const SiemensContour c = polyline("S", {{0, 4}, {-2, 2}, {-3, 2}, {-3, 5}});
+  const double f = 0.2 * std::sqrt(2.0);
+  const double l1 = 3.5 + f / 2, l2 = 2 + f;
+  expectMoves(roughWithCycle95(c, 2, f, 0.1).moves, {
+                                                         {G0, {0.1, 5.1}, "approach"},
+                                                         {G0, {0.1, l1}, "pass", 1},
+                                                         {G1, {0, l1}, "pass", 1},
+                                                         {G1, {0, 4}, "pass", 1},
+                                                         {G1, {-0.2, 4.2}, "pass", 1},
+                                                         {G1, {f - 2.4, 2 + f}, "pass", 1},
+                                                         {G1, {-3 + f, 2 + f}, "pass", 1},
+                                                         {G1, {-3 + f, 5}, "pass", 1},
+                                                         {G0, {-2.9 + f, 5.1}, "pass", 1},
+                                                         {G0, {0.1, 5.1}, "pass", 1},
+                                                         {G0, {0.1, l2}, "pass", 2},
+                                                         {G1, {0, l2}, "pass", 2},
+                                                         {G0, {0.1, l2 + 0.1}, "pass", 2},
+                                                         {G0, {0.1, 5.1}, "return"},
+                                                     });
+}
+
+// A bump beginning where the pocket's falling side reaches a pocket level: (0, 6) → (−2, 6), down the
+// slope to (−4, 4), up the bump to (−5, 5), down to (−6, 4) and (−8, 2), up the wall to (−8, 6), along
+// to (−10, 6). Top 6, bottom 2, MID 2: main levels 4 and 2, both below the face's top 6; start (1, 7).
+//  pass 1 (4), pass 2 (2): to the face at z 0; retract (1, 5), (1, 3).
+//  The pocket: rim (−2, 6), top 6, lowest point (−8, 2), levels 4 and 2; G0 up to (1, 7).
+//  pass 3 (4): G0 to above the rim (−2, 7), G1 down to it, down the slope to (−4, 4) — where the bump
+//    rises from the level at once: the level meets the pocket's profile there, so the pass goes on
+//    along the profile from there (CYCLE95.UNDERCUT note) — over the bump (−5, 5), down to (−6, 4) and
+//    (−8, 2), up the wall to the previous level 6; retract (−7, 7).
+//  pass 4 (2, the lowest): G0 to above (−4, 4), G1 down to it, along the falling side over the bump to
+//    (−8, 2), up the wall to 4; retract (−7, 5).
+//  Return: (−7, 7), (1, 7).
+// (Before: pass 3 crossed at the level from (−4, 4) to (−6, 4), under the bump: no-gouge, fuzz seed
+// 15931212366711559875.)
+TEST(SiemensPockets, ABumpRisingWhereTheFallingSideReachesTheLevelIsFollowed) {
+  const SiemensContour c = polyline("U", {{0, 6}, {-2, 6}, {-4, 4}, {-5, 5}, {-6, 4}, {-8, 2}, {-8, 6}, {-10, 6}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 7}, "approach"},
+                                                 {G0, {1, 4}, "pass", 1},
+                                                 {G1, {0, 4}, "pass", 1},
+                                                 {G0, {1, 5}, "pass", 1},
+                                                 {G0, {1, 2}, "pass", 2},
+                                                 {G1, {0, 2}, "pass", 2},
+                                                 {G0, {1, 3}, "pass", 2},
+                                                 {G0, {1, 7}, "pass", 3},
+                                                 {G0, {-2, 7}, "pass", 3},
+                                                 {G1, {-2, 6}, "pass", 3},
+                                                 {G1, {-4, 4}, "pass", 3},
+                                                 {G1, {-5, 5}, "pass", 3},
+                                                 {G1, {-6, 4}, "pass", 3},
+                                                 {G1, {-8, 2}, "pass", 3},
+                                                 {G1, {-8, 6}, "pass", 3},
+                                                 {G0, {-7, 7}, "pass", 3},
+                                                 {G0, {-4, 7}, "pass", 4},
+                                                 {G1, {-4, 4}, "pass", 4},
+                                                 {G1, {-5, 5}, "pass", 4},
+                                                 {G1, {-6, 4}, "pass", 4},
+                                                 {G1, {-8, 2}, "pass", 4},
+                                                 {G1, {-8, 4}, "pass", 4},
+                                                 {G0, {-7, 5}, "pass", 4},
+                                                 {G0, {-7, 7}, "return"},
+                                                 {G0, {1, 7}, "return"},
+                                             });
+}
+
+// A pocket level above the rim with a bump standing above it: (0, 2) → (−1, 2), up the wall to the rim
+// (−1, 4.2), down to (−2, 3), up the bump to (−3, 5), down to (−4, 2.5), up to the end (−5.1, 8) (x = 6
+// at z −4.7, 4.25 at −4.35). Top 8, bottom 2, MID 2: main levels 6, 4, 2; start (1, 9).
+//  pass 1 (6): to (−4.7, 6), up to (−5.1, 8); retract (−4.1, 9); back.
+//  pass 2 (4): to the wall (−1, 4), up to the rim 4.2, where the profile turns down; retract (0, 5.2);
+//    back.
+//  pass 3 (2): to (0, 2) (the flat lies on the level), along it, up the wall to 4; retract (0, 5).
+//  The pocket: rim (−1, 4.2), top 6 (the lowest level above the rim), back at 6 at (−4.7, 6), lowest
+//  point (−4, 2.5): depth 3.5, two levels of 1.75: 4.25 (above the rim) and 2.5. G0 up to (0, 9).
+//  pass 4 (4.25): a level above the rim goes down at the rim's z: G0 (−1, 9), G1 (−1, 4.25), across to
+//    where the level meets the bump, (−2.625, 4.25), over the bump (−3, 5), down to (−4, 2.5), up to 6
+//    at (−4.7, 6); retract (−3.7, 7).
+//  pass 5 (2.5, the lowest): G0 (−1, 7), G1 down to the rim, along the falling side — (−2, 3), over the
+//    bump, (−4, 2.5) —, up to 4.25 at (−4.35, 4.25); retract (−3.35, 5.25).
+//  Return: (−3.35, 9), (1, 9).
+// (Before: pass 4 went down where its level first meets the pocket's profile, on the bump's rising
+// side at −2.625, and crossed at 4.25 under the bump to its far side: no-gouge, fuzz seed
+// 5698905055672233322.)
+TEST(SiemensPockets, APocketLevelAboveTheRimGoesDownAtTheRimNotOnABump) {
+  const SiemensContour c = polyline("V", {{0, 2}, {-1, 2}, {-1, 4.2}, {-2, 3}, {-3, 5}, {-4, 2.5}, {-5.1, 8}});
+  expectMoves(roughWithCycle95(c, 2).moves, {
+                                                 {G0, {1, 9}, "approach"},
+                                                 {G0, {1, 6}, "pass", 1},
+                                                 {G1, {-4.7, 6}, "pass", 1},
+                                                 {G1, {-5.1, 8}, "pass", 1},
+                                                 {G0, {-4.1, 9}, "pass", 1},
+                                                 {G0, {1, 9}, "pass", 1},
+                                                 {G0, {1, 4}, "pass", 2},
+                                                 {G1, {-1, 4}, "pass", 2},
+                                                 {G1, {-1, 4.2}, "pass", 2},
+                                                 {G0, {0, 5.2}, "pass", 2},
+                                                 {G0, {1, 5.2}, "pass", 2},
+                                                 {G0, {1, 2}, "pass", 3},
+                                                 {G1, {0, 2}, "pass", 3},
+                                                 {G1, {-1, 2}, "pass", 3},
+                                                 {G1, {-1, 4}, "pass", 3},
+                                                 {G0, {0, 5}, "pass", 3},
+                                                 {G0, {0, 9}, "pass", 4},
+                                                 {G0, {-1, 9}, "pass", 4},
+                                                 {G1, {-1, 4.25}, "pass", 4},
+                                                 {G1, {-2.625, 4.25}, "pass", 4},
+                                                 {G1, {-3, 5}, "pass", 4},
+                                                 {G1, {-4, 2.5}, "pass", 4},
+                                                 {G1, {-4.7, 6}, "pass", 4},
+                                                 {G0, {-3.7, 7}, "pass", 4},
+                                                 {G0, {-1, 7}, "pass", 5},
+                                                 {G1, {-1, 4.2}, "pass", 5},
+                                                 {G1, {-2, 3}, "pass", 5},
+                                                 {G1, {-3, 5}, "pass", 5},
+                                                 {G1, {-4, 2.5}, "pass", 5},
+                                                 {G1, {-4.35, 4.25}, "pass", 5},
+                                                 {G0, {-3.35, 5.25}, "pass", 5},
+                                                 {G0, {-3.35, 9}, "return"},
+                                                 {G0, {1, 9}, "return"},
+                                             });
+}
+
+// The front stretch ending inside an arc that goes on over its top: (0, 2) falls to (−1, 0), a line
+// rises to (−3 + √2, 1.5 + √2), an arc of radius 2 about (−3, 1.5) (a quarter circle) runs over its top
+// (−3, 3.5) to (−3 − √2, 1.5 + √2), a line falls to (−5, 1), one rises to the end (−6, 4). Top 4,
+// bottom 0, MID 1: levels 3, 2, 1, 0; start (1, 5). The profile falls from its first point (x 2): the
+// front stretch runs to where it first rises back to 3, the lowest level above 2 — on the arc's
+// rising half at z −3 + √(4 − 1.5²) = −1.677124 — and no further, though the arc goes on.
+//  pass 1 (3, previous 4): G0 down to (1, 3), G1 to where the level meets the arc, (−1.677124, 3), along
+//    the arc up to its top (−3, 3.5), where the profile turns down (an undercut begins: the stretch
+//    ended before it); retract (−2, 4.5); G0 back to z 1.
+// (Before: the cleanup went through the arc's descent to its end (−3 − √2, 1.5 + √2) — the whole
+// element counted as the stretch's —, fuzz seed 15261219683670512766, an allowance rounding there.)
+TEST(SiemensFrontPockets, TheFrontStretchEndsWhereItReachesItsLevelNotAtItsElementsEnd) {
+  const double r2 = std::sqrt(2.0);
+  SiemensContour c = polyline("T", {{0, 2}, {-1, 0}, {-3 + r2, 1.5 + r2}});
+  c.segments.push_back(arc(SegmentKind::ArcCCW, {-3 + r2, 1.5 + r2}, {-3 - r2, 1.5 + r2}, {-3, 1.5}, 3));
+  c.segments.push_back(line({-3 - r2, 1.5 + r2}, {-5, 1}, 4));
+  c.segments.push_back(line({-5, 1}, {-6, 4}, 5));
+  const std::vector<Move> all = roughWithCycle95(c, 1).moves;
+  std::vector<Move> firstPass;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(firstPass), [](const Move& m) { return m.pass == 1; });
+  const double hitZ = -3 + std::sqrt(4 - 1.5 * 1.5);
+  expectMoves(firstPass, {
+                             {G0, {1, 3}, "pass", 1},
+                             {G1, {hitZ, 3}, "pass", 1},
+                             {G1, {-3, 3.5}, "pass", 1},
+                             {G0, {-2, 4.5}, "pass", 1},
+                             {G0, {1, 4.5}, "pass", 1},
+                         });
+  EXPECT_EQ(firstPass[2].shape, SegmentKind::ArcCCW);
 }
 
 std::vector<Point> cornersOf(const std::vector<Segment>& path) {

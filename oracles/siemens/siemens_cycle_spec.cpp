@@ -198,7 +198,10 @@ void describeSiemensCycle(SiemensCycleSpec& c) {
   c.finishPath = finishPathOf(c);
   const Extent e = extentOf(c.profile);
   const double clearance = std::abs(c.retract);
-  c.start = {e.zMax + clearance, e.xMax + clearance};
+  // The clearance beyond the part's face too, which stands at the contour's first point's z where
+  // the allowance moves the profile's start behind it (LCYC95.START note).
+  const double faceZ = frameContour.empty() ? e.zMax : std::max(e.zMax, frameContour.front().from.z);
+  c.start = {faceZ + clearance, e.xMax + clearance};
   c.levels = equalLevels(e.xMax, e.xMin, c.maxInfeed);
   c.undercuts = undercutsOf(c.profile, c.levels);
 }
@@ -214,9 +217,16 @@ bool inUndercut(const SiemensCycleSpec& c, Point from, Point to, double tol) {
   // spike whose far side falls into the pocket along the same line): the main pass's, not the
   // pocket's.
   const bool climb = zHigh - zLow <= tol && to.x > from.x;
+  // A move that does not descend and ends no higher than the pocket's top is the pocket pass's however
+  // little below the top it lies (by more than 1e-6): the last sliver of a rising side, an allowance
+  // rounding where the pocket ends, a flat a rounding error below the top (a spike's top inside the
+  // pocket). A main pass's cut along the top level (in pieces with DAM) lies at the top.
+  const auto justBelowTheTop = [&](const SiemensUndercut& u) {
+    return to.x >= from.x && to.x <= u.top + tol && xLow < u.top - 1e-6;
+  };
   return std::any_of(c.undercuts.begin(), c.undercuts.end(), [&](const SiemensUndercut& u) {
     if (climb && std::abs(zHigh - u.rimZ) <= tol) return false;
-    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && xLow < u.top + (plunge ? tol : -tol);
+    return zHigh <= u.rimZ + tol && zLow >= u.endZ - tol && (xLow < u.top + (plunge ? tol : -tol) || justBelowTheTop(u));
   });
 }
 

@@ -79,6 +79,9 @@ SiemensCycleMoves movesOfCall(const JudgeInput& in, const SiemensCycleSpec& c, M
 bool SiemensCycleMoves::isMainLevelCut(std::size_t i) const {
   if (!isLevelCutTowardsMinusZ(*this, i)) return false;
   const Point a = from(i), b = to(i);
+  // A level's cut comes from the entry side; a move from the contour's first point (the top of the
+  // part's face) goes across the allowance to the profile's start behind it (LCYC95.ROUGH note).
+  if (!c.contour.empty() && nearlyEqual(a, c.frame.toFrame(c.contour.front().from), tol)) return false;
   return !nearPath(0.5 * (a + b), c.profile, tol) && !inUndercut(c, a, b, tol);
 }
 

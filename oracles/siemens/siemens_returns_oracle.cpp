@@ -65,6 +65,9 @@ class SiemensReturnsOracle : public Oracle {
 
   // LCYC95.ROUGH: one G0 in both axes to S.
   void judgeReturnBothAxes(const SiemensCycleMoves& m, std::size_t begin, std::vector<Finding>& out) const {
+    // The last retract ended at S (the previous level and the last cut's end are S less the
+    // retract): the return is a move of no length, which is no move.
+    if (begin == m.range.end && begin > 0 && nearlyEqual(m.to(begin - 1), m.c.start, m.tol)) return;
     if (begin + 1 == m.range.end && m.isRapid(begin) && nearlyEqual(m.to(begin), m.c.start, m.tol)) return;
     out.push_back(m.report(*this, std::min(begin, m.range.end - 1),
                            "after the last roughing cut's retract LCYC95 returns to its start " + planeText(m.c, m.c.start) +

@@ -113,28 +113,45 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughD
   });
 }
 
+// The parts of `s` (the piece of profile element `i` a cleanup runs along, its end the element's), each
+// with whether the cleanup goes through the profile's descents on it: up to `end` it does, beyond it
+// not — within the element where `end` lies too (an allowance rounding rising to the front stretch's
+// level and falling on from there: before, the main pass went on down its far side, fuzz seed
+// 15261219683670512766).
+std::vector<std::pair<Segment, bool>> partsThroughDescents(const Segment& element, const Segment& s, std::size_t i,
+                                                           const std::optional<ProfilePoint>& end) {
+  if (!end || i > end->segment) return {{s, false}};
+  if (i < end->segment) return {{s, true}};
+  const double at = positionAlong(element, end->at), from = positionAlong(element, s.from);
+  if (at <= from + kGeomEps) return {{s, false}};
+  if (at >= positionAlong(element, s.to) - kGeomEps) return {{s, true}};
+  return {{portionOf(s, s.from, end->at), true}, {portionOf(s, end->at, s.to), false}};
+}
+
 // The contour-parallel cleanup (LCYC95.ROUGH "G1/G2/G3 along contour + allowance to its last
 // point"; CYCLE95.ROUGH "up to the last point of intersection"), interpretation: from the roughing
 // intersection forwards along the profile until it reaches the previous level (the last point the
 // previous pass cut), turns back towards the depth axis (an undercut), or ends. A level that meets
 // the profile at an element's end goes on along the next element; a stop at an element's start
 // leaves nothing on it (no piece without length: an arc's would read as a full circle).
-// Up to the element `throughDescentsUpTo`, when given (the front stretch's end; a pocket's last
-// element), the cleanup goes on through the profile's descents.
+// Up to the point `throughDescentsUpTo`, when given (the front stretch's end; a pocket's end), the
+// cleanup goes on through the profile's descents.
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
-                                         std::optional<std::size_t> throughDescentsUpTo = std::nullopt) {
+                                         std::optional<ProfilePoint> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (hasNoLength(s)) continue;  // the hit is this element's end
-    const bool throughDescents = throughDescentsUpTo && i <= *throughDescentsUpTo;
-    if (const auto stop = cleanupStopOn(s, upper, throughDescents)) {
-      const Segment piece = portionOf(s, s.from, *stop);
-      if (!hasNoLength(piece)) pieces.push_back(piece);
-      break;
+    for (const auto& [part, throughDescents] : partsThroughDescents(profile[i], s, i, throughDescentsUpTo)) {
+      if (hasNoLength(part)) continue;
+      if (const auto stop = cleanupStopOn(part, upper, throughDescents)) {
+        const Segment piece = portionOf(part, part.from, *stop);
+        if (!hasNoLength(piece)) pieces.push_back(piece);
+        return pieces;
+      }
+      pieces.push_back(part);
+      if (part.to.x >= upper - kGeomEps) return pieces;
     }
-    pieces.push_back(s);
-    if (s.to.x >= upper - kGeomEps) break;
   }
   return pieces;
 }
@@ -169,19 +186,32 @@ std::vector<Segment> pathBetween(const std::vector<Segment>& path, const Profile
 // stretch from there to where the profile first rises back to the lowest level strictly above that
 // point is no undercut (findUndercuts passes over it): nothing stands before it, and the main
 // passes reach it along their levels from the start side. Their cleanup goes through the stretch's
-// descents up to the previous level. The element where the stretch ends, or nothing when the
+// descents up to the previous level. Where the stretch ends (its element and point), or nothing when the
 // profile does not fall from its first point (or never rises back).
-std::optional<std::size_t> frontStretchEnd(const std::vector<Segment>& profile, const std::vector<double>& levels) {
+std::optional<ProfilePoint> frontStretchEnd(const std::vector<Segment>& profile, const std::vector<double>& levels) {
   const Point first = profile.front().from;
   const auto descent = descentStartOn(profile.front());
   if (!descent || distance(*descent, first) > kGeomEps) return std::nullopt;
   const double top = lowestLevelAbove(levels, first.x);
   for (std::size_t i = 0; i < profile.size(); ++i) {
     for (const Point& p : intersectWithLevelX(profile[i], top)) {
-      if (distance(p, first) > kGeomEps) return i;
+      if (distance(p, first) > kGeomEps) return ProfilePoint{i, p};
     }
   }
-  return profile.size() - 1;
+  return ProfilePoint{profile.size() - 1, profile.back().to};
+}
+
+// Where a pocket pass standing at `at` at its level next meets the pocket's profile along the level
+// (towards −z): where the profile rises from `at` itself — a bump inside the pocket beginning where
+// the falling side reaches the level —, at `at` (before, the pass crossed at the level under that
+// bump: no-gouge, fuzz seed 15931212366711559875); else the first point strictly beyond it (on the
+// falling side the pass came down: no crossing of its own).
+std::optional<ProfilePoint> nextMeetingAlongTheLevel(const std::vector<Segment>& pocket, double level, Point at) {
+  for (std::size_t i = 0; i < pocket.size(); ++i) {
+    if (distance(pocket[i].from, at) <= kGeomEps && unitTangentAtStart(pocket[i]).x > 1e-9) return ProfilePoint{i, at};
+  }
+  constexpr double kBeyond = 1e-7;
+  return roughingIntersection(pocket, level, at.z - kBeyond);
 }
 
 // Whether the pieces run straight along the depth axis (a wall): a plunge down them is one G1.
@@ -190,10 +220,52 @@ bool isWall(const std::vector<Segment>& pieces) {
                      [](const Segment& s) { return !s.isArc() && std::abs(s.to.z - s.from.z) <= kGeomEps; });
 }
 
+// Whether the profile stands above the retract from `p` by `v` in each axis (the diagonal towards +z
+// and +x): the part lies in its way — a pocket's falling side closer than `v` in front of the pass's
+// end, standing higher than the diagonal there (CYCLE95.UNDERCUT note, interpretation). The
+// highest the profile stands above the diagonal within z ∈ (p.z, p.z + v] is at an element's end,
+// where it crosses z = p.z + v, or where an arc runs parallel to the diagonal.
+bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p, double v) {
+  const auto above = [&](Point q) {
+    return q.z > p.z + kGeomEps && q.z <= p.z + v + kGeomEps && q.x > p.x + (q.z - p.z) + kGeomEps;
+  };
+  const double h = 1 / std::numbers::sqrt2;
+  for (const Segment& s : profile) {
+    // Most elements lie outside the window or below p (the pass has just cut there): a box around
+    // the element (an arc's whole circle) rules them out before anything is computed.
+    const double r = s.isArc() ? s.radius() : 0;
+    const double zLow = s.isArc() ? s.center.z - r : std::min(s.from.z, s.to.z);
+    const double zHigh = s.isArc() ? s.center.z + r : std::max(s.from.z, s.to.z);
+    const double xHigh = s.isArc() ? s.center.x + r : std::max(s.from.x, s.to.x);
+    if (zHigh <= p.z + kGeomEps || zLow > p.z + v + kGeomEps || xHigh <= p.x + kGeomEps) continue;
+    std::vector<Point> candidates{s.from, s.to};
+    for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) candidates.push_back(transposed(t));
+    if (s.isArc()) {
+      for (const Point& n : {Point{h, -h}, Point{-h, h}}) {
+        if (offsetAlongArc(s, std::atan2(n.x, n.z))) candidates.push_back(s.center + s.radius() * n);
+      }
+    }
+    if (std::any_of(candidates.begin(), candidates.end(), above)) return true;
+  }
+  return false;
+}
+
+// The computed start (LCYC95.START, interpretation) lies the clearance beyond the part's face too:
+// where the allowance moves the profile's start behind the contour's first point (a first element
+// falling away from the front, offset contour-parallel), the face still stands at that point's z,
+// and a start the clearance beyond the profile alone stood over the part: the straight infeed from it
+// ran into the allowance (before, the infeed ran back along the cut axis to the face; fuzz seed
+// 17617655989876150606).
+Point startBeyondTheFace(const StockRemoval& c) {
+  Point start = computedStart(c.profile, c.clearance);
+  start.z = std::max(start.z, c.contourFront.z + c.clearance.z);
+  return start;
+}
+
 class StockRemovalPlanner {
  public:
   StockRemovalPlanner(const StockRemoval& c, Point position)
-      : c_(c), position_(position), start_(computedStart(c.profile, c.clearance)) {}
+      : c_(c), position_(position), start_(startBeyondTheFace(c)) {}
 
   std::vector<Move> plan() {
     if (c_.technology != SiemensTechnology::Finishing) rough();
@@ -378,9 +450,12 @@ class StockRemovalPlanner {
     const std::vector<std::string> rules{c_.rules.undercut};
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
-      // A level at or above the rim (the pocket's top stands above it) crosses over from the rim.
+      // A level at or above the rim (the pocket's top stands above it) crosses over from the rim —
+      // where the level first meets the pocket's profile is then no falling side's point, but may
+      // be a bump's rising side further on (before, the pass went down there and crossed at the
+      // level under the bump: no-gouge, fuzz seed 5698905055672233322).
       const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
-      const double inZ = in ? in->at.z : level >= rim.x - kGeomEps ? rim.z : lowPoint.z;
+      const double inZ = level >= rim.x - kGeomEps ? rim.z : in ? in->at.z : lowPoint.z;
       rapidAlongTheCutAxis(inZ, k, rules);
       emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
     } else {
@@ -393,14 +468,12 @@ class StockRemovalPlanner {
     // bump's far side, a groove inside the pocket, a wall returning along itself) up to the previous
     // level. The lowest pass is at the lowest point already.
     const std::vector<Segment> pocket = piecesOf(u);
-    // Strictly beyond the point the pass came down to (on the falling side: no crossing of its own).
-    constexpr double kBeyond = 1e-7;
     const auto across = lowest ? std::optional<ProfilePoint>{ProfilePoint{u.down.size(), lowPoint}}
-                               : roughingIntersection(pocket, level, current().z - kBeyond);
+                               : nextMeetingAlongTheLevel(pocket, level, current());
     // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
     if (across) {
       cutAlongLevel(k, across->at, c_.undercutFeed, c_.rules.undercut);
-      for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, pocket.size() - 1)) {
+      for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, ProfilePoint{pocket.size() - 1, pocket.back().to})) {
         emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
       }
     } else {  // the pocket stays open to the profile's end
@@ -408,7 +481,7 @@ class StockRemovalPlanner {
       cutAlongLevel(k, {end.z, level}, c_.undercutFeed, c_.rules.undercut);
     }
     climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
-    emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, rules);
+    emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, rules);
   }
 
   // G0 along the cut axis to `z` at the current height, between a pocket's passes: where the profile
@@ -468,8 +541,16 @@ class StockRemovalPlanner {
   }
 
   // Retract by the clearance in each axis (R110 / _VRT), with G0.
-  void retract(int k) {
-    emit(MoveKind::Rapid, current() + c_.clearance, 0, MovePhase::Pass, k, {c_.rules.rough});
+  void retract(int k) { emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, {c_.rules.rough}); }
+
+  // Where the retract goes: the clearance in each axis; where the part stands in the way of that
+  // diagonal (a pocket narrower than the clearance in front of the pass's end), the clearance along
+  // the depth axis only — the profile lies below the tool there, so nothing stands above it
+  // (interpretation, CYCLE95.UNDERCUT note; before, the retract ran into the pocket's falling side:
+  // no-gouge, fuzz seed 7566792160692496541).
+  Point retractPoint() const {
+    if (diagonalRetractRunsIntoThePart(c_.profile, current(), c_.clearance.z)) return current() + Point{0, c_.clearance.x};
+    return current() + c_.clearance;
   }
 
   // G0 back along the cut axis to the start's z, at the retract height.
@@ -503,7 +584,7 @@ class StockRemovalPlanner {
   const StockRemoval& c_;
   Point position_;
   Point start_;
-  std::optional<std::size_t> frontStretchEnd_;  // set by rough()
+  std::optional<ProfilePoint> frontStretchEnd_;  // set by rough()
   std::vector<Move> moves_;
 };
 
