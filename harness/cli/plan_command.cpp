@@ -39,7 +39,7 @@ Options:
 
 Without --json and --svg, the toolpath JSON goes to standard output.
 JSON: {"profile", "units": "mm", "plane", "start", "moves": [{"kind": "rapid"|"feed",
-       "shape": "line"|"arc_cw"|"arc_ccw", "to": {"x", "z"}, "center"?, "feed"?, "phase", "rules"}],
+       "shape": "line"|"arc_cw"|"arc_ccw", "to": {"x", "z"}, "center"?, "feed"?, "dwell"?, "phase", "rules"}],
        "alarm": null | {"code", "message", "line"}, "warnings", "cycles"}   (x = radius, mm)
 Exit: 0 planned, 1 the controller alarmed (JSON still written), 2 bad usage or unreadable or
 malformed input, 3 not supported by the reference yet.
