@@ -120,5 +120,31 @@ TEST(G74_1Nose, AFloorChamferTheNoseCannotReachLeavesTheCornerSharp) {
   EXPECT_GT(touched.floorFrom, 1 + 1e-6);
 }
 
+// A mouth rising behind S (∠p 30°) with an r1 chamfer of 1 (found by fuzz --cycles g74.1 --seed 1 as
+// 0.003 mm left at the chamfer's top). u = 20 − x, w = −z, R 0.2, tip 0 (the control point is the
+// centre). The chamfer (I10: 1 along each edge from S): P0 = S − (cos 30°, sin 30°) = (−0.866025,
+// −0.5) on the mouth, above the start level, to E = (0, 1) on the 90° near flank; its direction
+// (0.5, 0.866025), the groove's side (0.866025, −0.5). The nose's edge follows the whole chamfer as
+// the point's path does from P0 (I26): its centre starts at P0 + 0.2·(0.866025, −0.5) = (−0.692820,
+// −0.6) — z 0.6, x 20.692820 — not where the chamfer's offset crosses the start level (the lowest
+// point on w 0: centre (−0.461880, −0.2), x 20.461880 z 0.2, which left the chamfer's top above
+// w −0.4 standing); then to E + 0.2·(0.866025, −0.5) = (0.173205, 0.9) — z −0.9, x 19.826795 — and
+// round E (an arc of R: the part's corner there is convex) to the flank's offset (0.2, 1): z −1, x 19.8.
+TEST(G74_1Nose, TheNoseFollowsAnR1ChamferRisingAboveTheStartLevelWhole) {
+  const Toolpath t = planWithNose("G00 X42 Z3 F0.1;\nG41;\nG74.1 X40 Z0 P2 Q5 H-4 D-8 L30;\nG74.1 R0.5 A1;\n", 0.2, 0);
+  ASSERT_FALSE(t.alarm) << t.alarm->message;
+  std::size_t pass = 0;
+  while (pass < t.moves.size() && t.moves[pass].phase != MovePhase::SemiFinish) ++pass;
+  ASSERT_LT(pass + 2, t.moves.size());
+  EXPECT_EQ(t.moves[pass].kind, MoveKind::Feed);
+  EXPECT_NEAR(t.moves[pass].to.z, 0.6, 1e-6);
+  EXPECT_NEAR(t.moves[pass].to.x, 20.692820, 1e-6);
+  EXPECT_NEAR(t.moves[pass + 1].to.z, -0.9, 1e-6);
+  EXPECT_NEAR(t.moves[pass + 1].to.x, 19.826795, 1e-6);
+  EXPECT_NE(t.moves[pass + 2].shape, SegmentKind::Line);
+  EXPECT_NEAR(t.moves[pass + 2].to.z, -1, 1e-6);
+  EXPECT_NEAR(t.moves[pass + 2].to.x, 19.8, 1e-6);
+}
+
 }  // namespace
 }  // namespace cyclecert
