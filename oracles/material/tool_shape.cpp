@@ -50,22 +50,19 @@ namespace {
 
 using Box = bg::model::box<BgPoint>;
 
-double sizeOfBox(const Box& b) {
-  return std::max(b.max_corner().x() - b.min_corner().x(), b.max_corner().y() - b.min_corner().y());
-}
-
-bool withinBox(const Box& inner, const Box& outer, double slack) {
+// Whether `result` lies within `region`'s envelope (within 1e-6 of its size, as checkedIntersection).
+bool withinTheEnvelopeOf(const BgRegion& result, const BgRegion& region) {
+  const Box inner = bg::return_envelope<Box>(result), outer = bg::return_envelope<Box>(region);
+  const double size = std::max(outer.max_corner().x() - outer.min_corner().x(), outer.max_corner().y() - outer.min_corner().y());
+  const double slack = 1e-6 * std::max(1.0, size);
   return inner.min_corner().x() >= outer.min_corner().x() - slack && inner.min_corner().y() >= outer.min_corner().y() - slack &&
          inner.max_corner().x() <= outer.max_corner().x() + slack && inner.max_corner().y() <= outer.max_corner().y() + slack;
 }
 
 // A result of a ∩ b that lies within both operands' envelopes and is no larger than either.
 bool consistentWith(const BgRegion& result, const BgRegion& a, const BgRegion& b) {
-  if (result.empty()) return true;
-  const Box got = bg::return_envelope<Box>(result), boxA = bg::return_envelope<Box>(a), boxB = bg::return_envelope<Box>(b);
-  const double slack = 1e-6 * std::max({1.0, sizeOfBox(boxA), sizeOfBox(boxB)});
-  return withinBox(got, boxA, slack) && withinBox(got, boxB, slack) &&
-         bg::area(result) <= std::min(bg::area(a), bg::area(b)) * (1 + 1e-9) + 1e-12;
+  return result.empty() || (withinTheEnvelopeOf(result, a) && withinTheEnvelopeOf(result, b) &&
+                            bg::area(result) <= std::min(bg::area(a), bg::area(b)) * (1 + 1e-9) + 1e-12);
 }
 
 BgRegion translated(const BgRegion& region, double dx, double dy) {
@@ -83,8 +80,11 @@ BgRegion translated(const BgRegion& region, double dx, double dy) {
 
 BgRegion consistentIntersection(const BgRegion& a, const BgRegion& b) {
   BgRegion first = checkedIntersection(a, b);
-  if (a.empty() || b.empty() || consistentWith(first, a, b)) return first;
-  const double size = std::max(1.0, sizeOfBox(bg::return_envelope<Box>(b)));
+  // checkedIntersection's answer (by its first route, or by the one it falls back on unchecked) is kept
+  // when it lies within both envelopes.
+  if (first.empty() || (withinTheEnvelopeOf(first, a) && withinTheEnvelopeOf(first, b))) return first;
+  const Box box = bg::return_envelope<Box>(b);
+  const double size = std::max({1.0, box.max_corner().x() - box.min_corner().x(), box.max_corner().y() - box.min_corner().y()});
   for (double step : {1e-7, 1e-6, 1e-5}) {
     for (const auto& [dx, dy] : {std::pair{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}}) {
       const BgRegion nudged = translated(b, step * size * dx, step * size * dy);
