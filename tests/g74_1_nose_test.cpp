@@ -3,6 +3,7 @@
 // coordinates are worked out by hand in the comments. Plane points are (z, x radius); P and Q in mm.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -144,6 +145,32 @@ TEST(G74_1Nose, TheNoseFollowsAnR1ChamferRisingAboveTheStartLevelWhole) {
   EXPECT_NE(t.moves[pass + 2].shape, SegmentKind::Line);
   EXPECT_NEAR(t.moves[pass + 2].to.z, -1, 1e-6);
   EXPECT_NEAR(t.moves[pass + 2].to.x, 19.8, 1e-6);
+}
+
+// I22 with a nose: no layer below one whose cycles all stopped on the flanks (the class `fuzz --cycles
+// g74.1` found as rapids-in-air of about 0.01 mm beside a slanted flank: layer 2 plunged at its
+// slice's near boundary through what layer 1 had not cut). u = 20 − x, w = −z; R 0.2, tip 0 (the
+// control point is the centre, 0.2 above the lowest point: z = 0.2 − w). The groove: flanks at 45°
+// from S (0, 0) to N (2, 2) and from F (3, 2) to M2 (5, 0). For the lowest point (I26) the near flank
+// moves in to u = w + q with q = 0.2·√2 − 0.2 = 0.082843, the far one to u = 5.2 − 0.2·√2 − w, the floor
+// stays at w 2. A11 = (q, 0). Layer 1 (w 0 … 1, V1): cycles at u q (depth 0: no move), q + Δi/2 =
+// q + 4 (the far flank allows 5.2 − 0.2·√2 − 4 − q = 1.4 − 0.4·√2 = 0.834315 < 1: one feed, Δk 5),
+// Amf u 5.2 − 0.2·√2 (depth 0). None reached 1: no layer 2; ⑧ back to A11; ⑨ N' (2 + q, 2), F'
+// (3.2 − 0.2·√2, 2), the far flank to the start level; back to A11; the return to X38 Z3.
+TEST(G74_1Nose, NoLayerBelowOneWhoseCyclesAllStoppedOnTheFlanks) {
+  const double q = 0.2 * std::sqrt(2.0) - 0.2, far = 5.2 - 0.2 * std::sqrt(2.0);
+  const Toolpath t = planWithNose("G00 X38 Z3 F0.1;\nG41;\nG74.1 X40 Z0 P8 Q5 H-2 D-2 A45 B45;\nG74.1 R0.5 V1;\n", 0.2, 0);
+  expectMoves(t, {{'r', 0.2, 20 - q},
+                  {'r', 0.2, 16 - q},
+                  {'f', 0.2 - (1.4 - 0.4 * std::sqrt(2.0)), 16 - q},
+                  {'r', 0.2, 16 - q},
+                  {'r', 0.2, 20 - far},
+                  {'r', 0.2, 20 - q},
+                  {'f', -1.8, 18 - q},
+                  {'f', -1.8, 20 - (far - 2)},
+                  {'f', 0.2, 20 - far},
+                  {'r', 0.2, 20 - q},
+                  {'r', 3, 19}});
 }
 
 }  // namespace
