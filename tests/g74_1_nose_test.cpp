@@ -3,6 +3,7 @@
 // coordinates are worked out by hand in the comments. Plane points are (z, x radius); P and Q in mm.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,58 @@ TEST(G74_1Nose, AFloorChamferTheNoseCannotReachLeavesTheCornerSharp) {
   g.corners[kCornerR3].size = 1;
   const GrooveProfile touched = noseCentreProfile(g, 0, 0, 1);
   EXPECT_GT(touched.floorFrom, 1 + 1e-6);
+}
+
+// A mouth rising behind S (∠p 30°) with an r1 chamfer of 1 (found by fuzz --cycles g74.1 --seed 1 as
+// 0.003 mm left at the chamfer's top). u = 20 − x, w = −z, R 0.2, tip 0 (the control point is the
+// centre). The chamfer (I10: 1 along each edge from S): P0 = S − (cos 30°, sin 30°) = (−0.866025,
+// −0.5) on the mouth, above the start level, to E = (0, 1) on the 90° near flank; its direction
+// (0.5, 0.866025), the groove's side (0.866025, −0.5). The nose's edge follows the whole chamfer as
+// the point's path does from P0 (I26): its centre starts at P0 + 0.2·(0.866025, −0.5) = (−0.692820,
+// −0.6) — z 0.6, x 20.692820 — not where the chamfer's offset crosses the start level (the lowest
+// point on w 0: centre (−0.461880, −0.2), x 20.461880 z 0.2, which left the chamfer's top above
+// w −0.4 standing); then to E + 0.2·(0.866025, −0.5) = (0.173205, 0.9) — z −0.9, x 19.826795 — and
+// round E (an arc of R: the part's corner there is convex) to the flank's offset (0.2, 1): z −1, x 19.8.
+TEST(G74_1Nose, TheNoseFollowsAnR1ChamferRisingAboveTheStartLevelWhole) {
+  const Toolpath t = planWithNose("G00 X42 Z3 F0.1;\nG41;\nG74.1 X40 Z0 P2 Q5 H-4 D-8 L30;\nG74.1 R0.5 A1;\n", 0.2, 0);
+  ASSERT_FALSE(t.alarm) << t.alarm->message;
+  std::size_t pass = 0;
+  while (pass < t.moves.size() && t.moves[pass].phase != MovePhase::SemiFinish) ++pass;
+  ASSERT_LT(pass + 2, t.moves.size());
+  EXPECT_EQ(t.moves[pass].kind, MoveKind::Feed);
+  EXPECT_NEAR(t.moves[pass].to.z, 0.6, 1e-6);
+  EXPECT_NEAR(t.moves[pass].to.x, 20.692820, 1e-6);
+  EXPECT_NEAR(t.moves[pass + 1].to.z, -0.9, 1e-6);
+  EXPECT_NEAR(t.moves[pass + 1].to.x, 19.826795, 1e-6);
+  EXPECT_NE(t.moves[pass + 2].shape, SegmentKind::Line);
+  EXPECT_NEAR(t.moves[pass + 2].to.z, -1, 1e-6);
+  EXPECT_NEAR(t.moves[pass + 2].to.x, 19.8, 1e-6);
+}
+
+// I22 with a nose: no layer below one whose cycles all stopped on the flanks (the class `fuzz --cycles
+// g74.1` found as rapids-in-air of about 0.01 mm beside a slanted flank: layer 2 plunged at its
+// slice's near boundary through what layer 1 had not cut). u = 20 − x, w = −z; R 0.2, tip 0 (the
+// control point is the centre, 0.2 above the lowest point: z = 0.2 − w). The groove: flanks at 45°
+// from S (0, 0) to N (2, 2) and from F (3, 2) to M2 (5, 0). For the lowest point (I26) the near flank
+// moves in to u = w + q with q = 0.2·√2 − 0.2 = 0.082843, the far one to u = 5.2 − 0.2·√2 − w, the floor
+// stays at w 2. A11 = (q, 0). Layer 1 (w 0 … 1, V1): cycles at u q (depth 0: no move), q + Δi/2 =
+// q + 4 (the far flank allows 5.2 − 0.2·√2 − 4 − q = 1.4 − 0.4·√2 = 0.834315 < 1: one feed, Δk 5),
+// Amf u 5.2 − 0.2·√2 (depth 0). None reached 1: no layer 2; ⑧ back to A11; ⑨ N' (2 + q, 2), F'
+// (3.2 − 0.2·√2, 2), the far flank to the start level; back to A11; the return to X38 Z3.
+TEST(G74_1Nose, NoLayerBelowOneWhoseCyclesAllStoppedOnTheFlanks) {
+  const double q = 0.2 * std::sqrt(2.0) - 0.2, far = 5.2 - 0.2 * std::sqrt(2.0);
+  const Toolpath t = planWithNose("G00 X38 Z3 F0.1;\nG41;\nG74.1 X40 Z0 P8 Q5 H-2 D-2 A45 B45;\nG74.1 R0.5 V1;\n", 0.2, 0);
+  expectMoves(t, {{'r', 0.2, 20 - q},
+                  {'r', 0.2, 16 - q},
+                  {'f', 0.2 - (1.4 - 0.4 * std::sqrt(2.0)), 16 - q},
+                  {'r', 0.2, 16 - q},
+                  {'r', 0.2, 20 - far},
+                  {'r', 0.2, 20 - q},
+                  {'f', -1.8, 18 - q},
+                  {'f', -1.8, 20 - (far - 2)},
+                  {'f', 0.2, 20 - far},
+                  {'r', 0.2, 20 - q},
+                  {'r', 3, 19}});
 }
 
 }  // namespace

@@ -345,6 +345,39 @@ TEST(G74_1Layers, ALayerRunsOverTheCyclesOfTheLayerAboveThatReachedItsBottom) {
   EXPECT_NEAR(layerEnds.back().x, 12, 1e-9);   // layer 2's
 }
 
+// I22 when no cycle of a layer reaches its bottom (found by fuzz --cycles g74.1 --seed 7, shrunk): a
+// pointed tool (no I) stepping Δi/2 = P38800 × 0.0001 / 2 = 1.94 across a groove 1.97 wide at the
+// start level, Δk = Q2000 × 0.0001 = 0.2, e = 1.53, V0.5. u = 16.51 − x (radius), w = 13.77 − z.
+// The groove: near flank w = u·tan 48° (N: u = cot 48° = 0.900404, w 1), floor to F (1.900404, 1),
+// far flank at 86° to M2: u = 1.900404 + cot 86° = 1.970331. Layer 1 (w 0 … 0.5): the cycle at u 0
+// stands on the near flank's top (no move); at u 1.94 the far flank allows (1.970331 − 1.94)·tan 86°
+// = 0.433751: feeds to w 0.2, retract to −1.33, feed to 0.4, retract to −1.13, feed to Bmn 0.433751
+// (0.6 passes it), back to w 0; Amf u 1.970331 is on the far flank's top (no move). No cycle reached
+// 0.5, so there is no layer 2 (it plunged at the slice's u 0.5·cot 48° = 0.450202 through 0.063 mm of
+// material and crossed 1.49 mm along w 0.5 with rapids only). ⑧ back to A11, ⑨ N, F, M2, A11, return.
+TEST(G74_1Layers, NoLayerBelowOneWhoseCyclesAllStoppedOnAFlank) {
+  const Toolpath t = planGsk("G00 X29.46 Z16.1 F0.1;\nG74.1 X33.02 Z13.77 P38800 Q2000 H-1 D-2 A48 B86;\nG74.1 R1.53 V0.5;\n", {});
+  const double n = 16.51 - 0.900404, f = 16.51 - 1.900404, m2 = 16.51 - 1.970331;
+  ASSERT_EQ(t.moves.size(), 15u);
+  expectMoves(t, 0,
+              {{'r', 13.77, 16.51, "G74_1.STEP1"},
+               {'r', 13.77, 14.57, "G74_1.STEP7"},
+               {'f', 13.57, 14.57, "G74_1.STEP3"},
+               {'r', 15.1, 14.57, "G74_1.STEP4"},
+               {'f', 13.37, 14.57, "G74_1.STEP5"},
+               {'r', 14.9, 14.57, "G74_1.STEP4"}});
+  EXPECT_NEAR(t.moves[6].to.z, 13.77 - 0.433751, 1e-6);  // Bmn
+  expectMoves(t, 7, {{'r', 13.77, 14.57, "G74_1.STEP6"}});
+  EXPECT_NEAR(t.moves[8].to.x, m2, 1e-6);  // ⑦ to Amf
+  expectMoves(t, 9, {{'r', 13.77, 16.51, "G74_1.STEP8"}});
+  EXPECT_NEAR(t.moves[10].to.x, n, 1e-6);
+  EXPECT_NEAR(t.moves[10].to.z, 12.77, 1e-9);
+  EXPECT_NEAR(t.moves[11].to.x, f, 1e-6);
+  EXPECT_NEAR(t.moves[12].to.x, m2, 1e-6);
+  EXPECT_NEAR(t.moves[12].to.z, 13.77, 1e-9);
+  expectMoves(t, 13, {{'r', 13.77, 16.51, "G74_1.STEP9"}, {'r', 16.1, 14.73, "G74_1.STEP10"}});
+}
+
 // Found by the metamorphic relation scale-k on a fuzzer's case: the groove below (∠a 20°, rounded
 // corners, Δk 1.875, e 0.025) has the far flank's last axial cycle 7.5 deep — computed through the
 // round r4 as 7.500000024 — and the pecks land on 7.5 by (Δk + e) exactly: 1.875, 3.75, 5.625, 7.5.

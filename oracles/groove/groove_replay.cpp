@@ -117,7 +117,7 @@ BgRegion materialNow(const BgRegion& withoutTheOthers, const ClearedStaircase& c
 
 }  // namespace
 
-BgRegion GrooveReplay::leftover() const { return checkedIntersection(remaining, reachable); }
+BgRegion GrooveReplay::leftover() const { return consistentIntersection(remaining, reachable); }
 
 namespace {
 

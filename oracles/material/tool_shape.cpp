@@ -1,6 +1,7 @@
 #include "oracles/material/tool_shape.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "oracles/material/boost_geometry.h"
 
@@ -45,6 +46,55 @@ BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b
   return sweptConvexShape(move, {{0, 0}, a * da, a * da + b * db, b * db}, chordTolerance);
 }
 
+namespace {
+
+using Box = bg::model::box<BgPoint>;
+
+// Whether `result` lies within `region`'s envelope (within 1e-6 of its size, as checkedIntersection).
+bool withinTheEnvelopeOf(const BgRegion& result, const BgRegion& region) {
+  const Box inner = bg::return_envelope<Box>(result), outer = bg::return_envelope<Box>(region);
+  const double size = std::max(outer.max_corner().x() - outer.min_corner().x(), outer.max_corner().y() - outer.min_corner().y());
+  const double slack = 1e-6 * std::max(1.0, size);
+  return inner.min_corner().x() >= outer.min_corner().x() - slack && inner.min_corner().y() >= outer.min_corner().y() - slack &&
+         inner.max_corner().x() <= outer.max_corner().x() + slack && inner.max_corner().y() <= outer.max_corner().y() + slack;
+}
+
+// A result of a ∩ b that lies within both operands' envelopes and is no larger than either.
+bool consistentWith(const BgRegion& result, const BgRegion& a, const BgRegion& b) {
+  return result.empty() || (withinTheEnvelopeOf(result, a) && withinTheEnvelopeOf(result, b) &&
+                            bg::area(result) <= std::min(bg::area(a), bg::area(b)) * (1 + 1e-9) + 1e-12);
+}
+
+BgRegion translated(const BgRegion& region, double dx, double dy) {
+  BgRegion out = region;
+  for (BgPolygon& p : out) {
+    for (BgPoint& q : p.outer()) q = BgPoint(q.x() + dx, q.y() + dy);
+    for (auto& hole : p.inners()) {
+      for (BgPoint& q : hole) q = BgPoint(q.x() + dx, q.y() + dy);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+BgRegion consistentIntersection(const BgRegion& a, const BgRegion& b) {
+  BgRegion first = checkedIntersection(a, b);
+  // checkedIntersection's answer (by its first route, or by the one it falls back on unchecked) is kept
+  // when it lies within both envelopes.
+  if (first.empty() || (withinTheEnvelopeOf(first, a) && withinTheEnvelopeOf(first, b))) return first;
+  const Box box = bg::return_envelope<Box>(b);
+  const double size = std::max({1.0, box.max_corner().x() - box.min_corner().x(), box.max_corner().y() - box.min_corner().y()});
+  for (double step : {1e-7, 1e-6, 1e-5}) {
+    for (const auto& [dx, dy] : {std::pair{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}}) {
+      const BgRegion nudged = translated(b, step * size * dx, step * size * dy);
+      BgRegion again = checkedIntersection(a, nudged);
+      if (consistentWith(again, a, nudged)) return again;
+    }
+  }
+  return first;
+}
+
 double thickestRing(const BgRegion& region) {
   double thickest = 0;
   for (const BgPolygon& p : region) {
@@ -65,7 +115,7 @@ ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const Too
     return out;
   }
   const BgRegion swept = sweptRegion(move, blade.across, tool.width, blade.back, blade.length, chordTolerance);
-  BgRegion crossed = checkedIntersection(swept, region);
+  BgRegion crossed = consistentIntersection(swept, region);
   BgRegion thick;
   for (BgPolygon& p : crossed) {
     BgRegion one{p};

@@ -39,6 +39,14 @@ BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, 
 // region the blade sweeps; with b = 0 it is a point's shadow of length a along da.
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance);
 
+// a ∩ b (checkedIntersection, region.h), checked against both operands. Boost's overlay can take a
+// polygon that touches the other only along a nearly collinear edge for one inside it (its
+// coordinates snapped to a grid of about 1e-7 of the operands' size) and return it whole — a
+// result reaching beyond b's envelope, or larger than b. Such a result is redone with b nudged by a
+// few grid steps (at most 1e-5 of the size: far below any tolerance), the first consistent answer
+// kept; when none is, the first result stands (reported, never hidden).
+BgRegion consistentIntersection(const BgRegion& a, const BgRegion& b);
+
 // How far a tool's move enters `region` beyond `epsilon`.
 struct ToolCrossing {
   double amount = 0;          // mm for a point (the length inside), mm² for a blade (the area)

@@ -62,23 +62,17 @@ Point offsetNearFlankAtTheStartLevel(const GrooveProfile& p, double noseRadius) 
   return grooveLocal(through.x + t * p.nearDirection.x, 0);
 }
 
-// The chain from its first to its last crossing of the start level w = 0 where its ends lie above it
-// (in the air over the mouth), and its end lines drawn on to the start level where they end below
-// it: the passes begin and end on the start level, as the point tool's.
-std::vector<Segment> betweenTheStartLevels(std::vector<Segment> chain) {
+// The chain up to its last crossing of the start level w = 0 where its far end lies above it (in the
+// air over the mouth), and its end lines drawn on to the start level where they end below it: the
+// passes begin and end on the start level, as the point tool's — but where its start lies above the
+// start level (an r1 on a mouth rising behind S, ∠p > 0) the pass follows the whole corner from
+// there, as the point tool's does from P0 (I26).
+std::vector<Segment> toTheStartLevels(std::vector<Segment> chain) {
   const auto crossing = [](const Segment& s) -> std::optional<Point> {
     const std::vector<Point> hits = intersectWithLevelX(transposed(s), 0);
     if (hits.empty()) return std::nullopt;
     return transposed(hits.front());
   };
-  while (!chain.empty() && chain.front().from.z < -kGeomEps) {
-    const std::optional<Point> hit = crossing(chain.front());
-    if (hit && distance(*hit, chain.front().to) > kGeomEps) {
-      chain.front().from = *hit;
-      break;
-    }
-    chain.erase(chain.begin());
-  }
   while (!chain.empty() && chain.back().to.z < -kGeomEps) {
     const std::optional<Point> hit = crossing(chain.back());
     if (hit && distance(chain.back().from, *hit) > kGeomEps) {
@@ -122,7 +116,7 @@ GrooveProfile noseCentreProfile(const GrooveShape& g, double flankAllowance, dou
   nose.nearDirection = p.nearDirection;
   nose.farDirection = p.farDirection;
   bool floorFound = false;
-  for (const Segment& s : betweenTheStartLevels(offset)) {
+  for (const Segment& s : toTheStartLevels(offset)) {
     const GroovePart part = p.parts[static_cast<std::size_t>(s.sourceLine)];
     if (part == GroovePart::Floor && !s.isArc()) {
       floorFound = true;

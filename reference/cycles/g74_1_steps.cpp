@@ -205,6 +205,7 @@ class G74_1Planner {
     std::vector<GrooveLayer> out;
     double moves = 0;
     for (int m = 0; m < static_cast<int>(count); ++m) {
+      if (!out.empty() && !anyReachedTheBottom(out.back())) break;  // I22: nothing cleared down to this layer
       GrooveLayer layer;
       layer.top = c_.layerDepth ? m * *c_.layerDepth : 0.0;
       layer.bottom = c_.layerDepth ? std::min((m + 1) * *c_.layerDepth, depth) : depth;
@@ -226,7 +227,8 @@ class G74_1Planner {
   // reached that layer's bottom: it starts (Cmf, STEP8; Am1, STEP2) at the first of them and ends
   // (Amf, STEP7) at the last — so the plunge to it and the rapids across it run where the layer above
   // cut out, not through the staircase that layer left along a slanted flank; at the slice's
-  // boundaries where they lie further in, or when no cycle reached the bottom.
+  // boundaries where they lie further in. When no cycle reached the bottom there is no such layer
+  // (layers(): the layers end there, the rest is left to STEP9).
   double nextLayerStart(const GrooveLayer& above, const GrooveSlice& slice) const {
     const double atTheSlice = slice.nearU + c_.toolWidth;
     for (const AxialCycle& cycle : above.cycles) {
@@ -244,6 +246,11 @@ class G74_1Planner {
 
   static bool reachedTheBottom(const GrooveLayer& layer, const AxialCycle& cycle) {
     return cycle.end >= layer.bottom - kGeomEps;
+  }
+
+  static bool anyReachedTheBottom(const GrooveLayer& layer) {
+    return std::any_of(layer.cycles.begin(), layer.cycles.end(),
+                       [&layer](const AxialCycle& cycle) { return reachedTheBottom(layer, cycle); });
   }
 
   AxialCycle axialCycleAt(const GrooveLayer& layer, double u) const {
