@@ -514,6 +514,80 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
   return frameBoxInPlane(s.frame, frontZ - reach, frontZ, faceTop - reach, faceTop);
 }
 
+// Whether two paths are one within `tolerance`: the same kinds of segment, their ends and centres
+// that close.
+bool samePathWithin(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].kind != b[i].kind || !nearlyEqual(a[i].from, b[i].from, tolerance) || !nearlyEqual(a[i].to, b[i].to, tolerance) ||
+        (a[i].isArc() && !nearlyEqual(a[i].center, b[i].center, tolerance))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The allowance layer of a SINUMERIK call: between its roughing profile and the finishing path (both
+// in the plane). Without allowances and nose radius the two are the contour, one to rounding: no
+// layer (the boolean of their regions leaves dust, which it drops). Two graphs over the cut axis a
+// contour-parallel allowance keeps apart bound the layer themselves: the profile, across to the
+// finishing path's end and back along it. Either way no boolean.
+BgRegion siemensAllowanceLayer(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
+                               const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
+  if (samePathWithin(profile, finish, kTidyDistance)) return {};
+  const DepthFrame frame(away);
+  if (std::abs(s.allowance) > kTidyDistance && isGraphOverCutAxis(profile, frame) && isGraphOverCutAxis(finish, frame)) {
+    std::vector<Point> outline;
+    for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
+    for (auto seg = finish.rbegin(); seg != finish.rend(); ++seg) appendFlattened(outline, seg->reversed(), chordTolerance);
+    return regionFromSimpleOutline(outline);
+  }
+  return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
+}
+
+// The stock below a profile that is a graph over the cut axis less the face box (siemensFrontFace),
+// without a boolean, when the box spans the stock's whole cut range (the profile runs from its
+// first point away from the face side: no point of the stock stands beyond the face's z): then the
+// box takes what stands below the face's top, and each ring is clipped to the half-plane above it
+// in the frame (Sutherland–Hodgman). Each piece of such a stock is what stands between the profile
+// and the top level, so its part above a level stays one simple ring. Tidied at the resolution the
+// boolean had (its operands' size), so that the region is the one `without` makes. Nothing when the
+// box does not span the stock.
+std::optional<BgRegion> stockAboveFaceTop(const BgRegion& stock, const BgRegion& face, const SiemensCycleSpec& s,
+                                          double reach) {
+  if (stock.empty() || face.empty()) return std::nullopt;
+  const double frontZ = std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+  const double faceTop = siemensFaceTop(s);
+  BgRegion above;
+  std::vector<Point> ring, clipped;
+  for (const BgPolygon& polygon : stock) {
+    if (!polygon.inners().empty()) return std::nullopt;
+    ring.clear();
+    for (const BgPoint& p : polygon.outer()) {
+      ring.push_back(s.frame.toFrame(fromBg(p)));
+      const Point q = ring.back();
+      if (q.z > frontZ || q.z < frontZ - reach || q.x < faceTop - reach) return std::nullopt;
+    }
+    clipped.clear();
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {  // the ring is closed: its last point is its first
+      const Point a = ring[i], b = ring[i + 1];
+      if (a.x >= faceTop) clipped.push_back(s.frame.toPlane(a));
+      if ((a.x >= faceTop) != (b.x >= faceTop)) {
+        const double t = (faceTop - a.x) / (b.x - a.x);
+        clipped.push_back(s.frame.toPlane(Point{a.z + t * (b.z - a.z), faceTop}));
+      }
+    }
+    const BgRegion piece = regionFromSimpleOutline(clipped);
+    above.insert(above.end(), piece.begin(), piece.end());
+  }
+  using Box = boost::geometry::model::box<BgPoint>;
+  Box operands = boost::geometry::return_envelope<Box>(stock);
+  boost::geometry::expand(operands, boost::geometry::return_envelope<Box>(face));
+  tidy(above, std::max(operands.max_corner().x() - operands.min_corner().x(),
+                       operands.max_corner().y() - operands.min_corner().y()));
+  return above;
+}
+
 // The stock a SINUMERIK call implies (interpretation, LCYC95.ROUGH note): a call that roughs takes
 // the bar its first level is cut from — everything between the roughing profile (contour +
 // allowances) and the level of the profile's highest point (LCYC95.DEPTH), over the profile's span
@@ -522,22 +596,16 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
 // profile and the finishing path.
 BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
                              const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
-  const DepthFrame frame(away);
-  if (!s.roughs()) {
-    // Two graphs over the cut axis a contour-parallel allowance keeps apart bound the layer
-    // themselves: the profile, across to the finishing path's end and back along it — no boolean.
-    if (std::abs(s.allowance) > kTidyDistance && isGraphOverCutAxis(profile, frame) && isGraphOverCutAxis(finish, frame)) {
-      std::vector<Point> outline;
-      for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
-      for (auto seg = finish.rbegin(); seg != finish.rend(); ++seg) appendFlattened(outline, seg->reversed(), chordTolerance);
-      return regionFromSimpleOutline(outline);
-    }
-    return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
-  }
+  if (!s.roughs()) return siemensAllowanceLayer(s, profile, finish, away, reach, chordTolerance);
   // The frame's x is the plane's depth along `away`: the top level is the profile's highest point.
   const BgRegion stock = stockUpToLevel(profile, away, s.levels.top, reach, chordTolerance);
   // Only a profile that comes down below the face's top has stock behind the face.
-  return s.levels.bottom < siemensFaceTop(s) - kTidyDistance ? without(stock, siemensFrontFace(s, reach)) : stock;
+  if (!(s.levels.bottom < siemensFaceTop(s) - kTidyDistance)) return stock;
+  const BgRegion face = siemensFrontFace(s, reach);
+  if (isGraphOverCutAxis(profile, DepthFrame(away))) {
+    if (std::optional<BgRegion> above = stockAboveFaceTop(stock, face, s, reach)) return *std::move(above);
+  }
+  return without(stock, face);
 }
 
 // What a SINUMERIK call leaves standing by its rules: LCYC95 roughs no undercut (CYCLE95.UNDERCUT
@@ -635,9 +703,8 @@ class SiemensDocumentedCrossings {
   // first crosses material.
   const BgRegion& allowanceLayer() const {
     if (!layer_) {
-      const BgRegion belowProfile = partRegionOf(s_.frame.toPlane(s_.profile), r_.away, r_.reach, chord_);
       const SiemensCycleSpec& f = r_.siemensFinishing ? *r_.siemensFinishing : s_;
-      layer_ = cyclecert::without(belowProfile, partRegionOf(f.frame.toPlane(f.finishPath), r_.away, r_.reach, chord_));
+      layer_ = siemensAllowanceLayer(s_, s_.frame.toPlane(s_.profile), f.frame.toPlane(f.finishPath), r_.away, r_.reach, chord_);
     }
     return *layer_;
   }
