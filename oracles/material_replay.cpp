@@ -169,20 +169,69 @@ std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& fr
 
 namespace {
 
+// The stock between a graph over the cut axis (flattened: `points`) and a level it reaches between
+// its ends (a collar up to the level), over [lo, hi] along the cut axis: one outline for each run of
+// the points between two that reach the level (within kTidyDistance), closed along the level — the
+// pieces the band below the level minus the part falls into. Tidied at the resolution that boolean
+// had (the size of its operands: the band down to `bottom`, the part down to `bottom`), so that the
+// region is the one `without` makes. Nothing when a point stands above the level (the boolean
+// decides).
+std::optional<BgRegion> stockPiecesUpToLevel(const std::vector<Point>& points, const DepthFrame& frame, double level,
+                                             double lo, double hi, double bottom) {
+  using Box = boost::geometry::model::box<BgPoint>;
+  Box operands = boost::geometry::make_inverse<Box>();
+  for (Point corner : {frame.point(lo, level), frame.point(hi, level), frame.point(lo, bottom), frame.point(hi, bottom),
+                       frame.atDepth(points.back(), bottom), frame.atDepth(points.front(), bottom)}) {
+    boost::geometry::expand(operands, toBg(corner));
+  }
+  BgRegion pieces;
+  std::vector<Point> outline;
+  const auto closePiece = [&] {
+    if (outline.size() >= 2) {
+      outline.push_back(frame.atDepth(outline.back(), level));
+      outline.push_back(frame.atDepth(outline.front(), level));
+      const BgRegion piece = regionFromSimpleOutline(outline);
+      pieces.insert(pieces.end(), piece.begin(), piece.end());
+    }
+    outline.clear();
+  };
+  for (Point p : points) {
+    if (frame.depth(p) > level + kTidyDistance) return std::nullopt;
+    boost::geometry::expand(operands, toBg(p));
+    outline.push_back(p);
+    if (frame.depth(p) >= level - kTidyDistance && outline.size() > 1) {
+      closePiece();
+      outline.push_back(p);
+    }
+  }
+  closePiece();
+  tidy(pieces, std::max(operands.max_corner().x() - operands.min_corner().x(),
+                        operands.max_corner().y() - operands.min_corner().y()));
+  return pieces;
+}
+
 // The stock between a shape and a level above it, over the shape's span along the cut axis: the
 // band below the level minus the part. A shape that is a graph over the cut axis and stands below
 // the level between its ends (an end may stand on it) bounds the stock itself: the shape, up to the
-// level at its end and back along it — the same region, without a boolean.
+// level at its end and back along it — the same region, without a boolean; one that reaches the
+// level between its ends bounds its pieces (stockPiecesUpToLevel).
 BgRegion stockUpToLevel(const std::vector<Segment>& shape, Point away, double level, double reach, double chordTolerance) {
   const DepthFrame frame(away);
   const auto [lo, hi] = cutSpanOf(shape, frame);
   if (!(hi > lo)) return {};
-  if (isGraphOverCutAxis(shape, frame) && highestBetweenEnds(shape, frame) < level - kTidyDistance) {
+  if (isGraphOverCutAxis(shape, frame)) {
     std::vector<Point> outline;
     for (const Segment& s : shape) appendFlattened(outline, s, chordTolerance);
-    outline.push_back(frame.atDepth(shape.back().to, level));
-    outline.push_back(frame.atDepth(shape.front().from, level));
-    return regionFromSimpleOutline(outline);
+    if (highestBetweenEnds(shape, frame) < level - kTidyDistance) {
+      outline.push_back(frame.atDepth(shape.back().to, level));
+      outline.push_back(frame.atDepth(shape.front().from, level));
+      return regionFromSimpleOutline(outline);
+    }
+    double deepest = INFINITY;  // as the part's outline takes it (partOutlineOf): the segments' ends
+    for (const Segment& s : shape) deepest = std::min({deepest, frame.depth(s.from), frame.depth(s.to)});
+    if (std::optional<BgRegion> pieces = stockPiecesUpToLevel(outline, frame, level, lo, hi, deepest - reach)) {
+      return *std::move(pieces);
+    }
   }
   const BgRegion band = regionFromSimpleOutline({frame.point(lo, level), frame.point(hi, level),
                                                  frame.point(hi, level - reach), frame.point(lo, level - reach)});

@@ -1,5 +1,5 @@
 // The material a SINUMERIK call implies (oracles/material_replay.cpp), built without booleans where
-// the shape allows: each region here is derived by hand from the rules (LCYC95.ROUGH note: the bar
+// the shape allows (stockUpToLevel, stockAboveFaceTop, siemensAllowanceLayer): each region here is derived by hand from the rules (LCYC95.ROUGH note: the bar
 // up to the profile's highest point, less what stands behind the part's face; a finishing call
 // works on the allowance layer between the profile and the finishing path).
 #include <gtest/gtest.h>
@@ -46,6 +46,18 @@ TEST(SiemensMaterial, TheStockBehindARaisedStartStandsAboveThePartsFace) {
   ASSERT_TRUE(r.has_value());
   EXPECT_NEAR(boost::geometry::area(r->stock), 0.105, 1e-9);
   EXPECT_NEAR(lowestX(r->stock), 1.4, 1e-9);
+}
+
+// A collar up to the profile's highest point: L1 (z0,x10) → (−5,10) → (−5,20) → (−10,20) → (−10,12)
+// → (−20,12). The bar reaches x 20, the collar's top, which parts it in two: in front of the collar
+// 5 × 10 = 50, behind it 10 × 8 = 80 (the collar's top itself holds none).
+TEST(SiemensMaterial, ACollarUpToTheTopPartsTheStock) {
+  const std::string program = "T1 D1\nG0 X44 Z2\nCYCLE95(\"L1\", 2, 0, 0, 0, 0.2, 0.1, 0.05, 1, 0, 0, 1)\nM02\n";
+  const std::optional<MaterialReplay> r = replayOf(program, "G1 X20 Z0\nZ-5\nX40\nZ-10\nX24\nZ-20\nRET\n");
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->stock.size(), 2u);
+  EXPECT_NEAR(boost::geometry::area(r->stock), 130, 1e-9);
+  EXPECT_NEAR(lowestX(r->stock), 10, 1e-9);
 }
 
 // A finishing call (VARI 5, longitudinal external finishing) without allowances and without a
