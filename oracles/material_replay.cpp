@@ -169,17 +169,24 @@ std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& fr
 
 namespace {
 
+using BgBox = boost::geometry::model::box<BgPoint>;
+
+// A region built without the boolean that would have made it, tidied as that boolean's result is
+// (region.h: at the resolution of its operands' size, the largest side of their envelope), so that
+// it is the region the boolean makes.
+void tidyAsBooleanOf(BgRegion& region, const BgBox& operands) {
+  tidy(region, std::max(operands.max_corner().x() - operands.min_corner().x(),
+                        operands.max_corner().y() - operands.min_corner().y()));
+}
+
 // The stock between a graph over the cut axis (flattened: `points`) and a level it reaches between
 // its ends (a collar up to the level), over [lo, hi] along the cut axis: one outline for each run of
 // the points between two that reach the level (within kTidyDistance), closed along the level — the
-// pieces the band below the level minus the part falls into. Tidied at the resolution that boolean
-// had (the size of its operands: the band down to `bottom`, the part down to `bottom`), so that the
-// region is the one `without` makes. Nothing when a point stands above the level (the boolean
-// decides).
+// pieces the band below the level minus the part falls into (its operands: the band and the part,
+// both down to `bottom`). Nothing when a point stands above the level (the boolean decides).
 std::optional<BgRegion> stockPiecesUpToLevel(const std::vector<Point>& points, const DepthFrame& frame, double level,
                                              double lo, double hi, double bottom) {
-  using Box = boost::geometry::model::box<BgPoint>;
-  Box operands = boost::geometry::make_inverse<Box>();
+  BgBox operands = boost::geometry::make_inverse<BgBox>();
   for (Point corner : {frame.point(lo, level), frame.point(hi, level), frame.point(lo, bottom), frame.point(hi, bottom),
                        frame.atDepth(points.back(), bottom), frame.atDepth(points.front(), bottom)}) {
     boost::geometry::expand(operands, toBg(corner));
@@ -205,8 +212,7 @@ std::optional<BgRegion> stockPiecesUpToLevel(const std::vector<Point>& points, c
     }
   }
   closePiece();
-  tidy(pieces, std::max(operands.max_corner().x() - operands.min_corner().x(),
-                        operands.max_corner().y() - operands.min_corner().y()));
+  tidyAsBooleanOf(pieces, operands);
   return pieces;
 }
 
@@ -554,11 +560,15 @@ double siemensFaceTop(const SiemensCycleSpec& s) {
 // stands at that point's z, up to siemensFaceTop; a level below that meets the part at the face.
 // What lies behind the face and above the profile (a recess the contour draws beyond a raised
 // start) is out of the levels' reach: no stock of theirs.
+// The face's z (frame): the profile's first point's, or the contour's where the allowance moved the
+// profile's start behind it.
+double siemensFrontZ(const SiemensCycleSpec& s) {
+  return std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+}
+
 BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
   if (s.profile.empty() || s.contour.empty()) return {};
-  // The profile's first point's z, or the contour's where the allowance moved the profile's start
-  // behind it.
-  const double frontZ = std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+  const double frontZ = siemensFrontZ(s);
   const double faceTop = siemensFaceTop(s);
   return frameBoxInPlane(s.frame, frontZ - reach, frontZ, faceTop - reach, faceTop);
 }
@@ -568,8 +578,10 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
 bool samePathWithin(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a[i].kind != b[i].kind || !nearlyEqual(a[i].from, b[i].from, tolerance) || !nearlyEqual(a[i].to, b[i].to, tolerance) ||
-        (a[i].isArc() && !nearlyEqual(a[i].center, b[i].center, tolerance))) {
+    const bool same = a[i].kind == b[i].kind && nearlyEqual(a[i].from, b[i].from, tolerance) &&
+                      nearlyEqual(a[i].to, b[i].to, tolerance) &&
+                      (!a[i].isArc() || nearlyEqual(a[i].center, b[i].center, tolerance));
+    if (!same) {
       return false;
     }
   }
@@ -599,13 +611,12 @@ BgRegion siemensAllowanceLayer(const SiemensCycleSpec& s, const std::vector<Segm
 // first point away from the face side: no point of the stock stands beyond the face's z): then the
 // box takes what stands below the face's top, and each ring is clipped to the half-plane above it
 // in the frame (Sutherland–Hodgman). Each piece of such a stock is what stands between the profile
-// and the top level, so its part above a level stays one simple ring. Tidied at the resolution the
-// boolean had (its operands' size), so that the region is the one `without` makes. Nothing when the
-// box does not span the stock.
+// and the top level, so its part above a level stays one simple ring. Nothing when the box does not
+// span the stock.
 std::optional<BgRegion> stockAboveFaceTop(const BgRegion& stock, const BgRegion& face, const SiemensCycleSpec& s,
                                           double reach) {
   if (stock.empty() || face.empty()) return std::nullopt;
-  const double frontZ = std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+  const double frontZ = siemensFrontZ(s);
   const double faceTop = siemensFaceTop(s);
   BgRegion above;
   std::vector<Point> ring, clipped;
@@ -629,11 +640,9 @@ std::optional<BgRegion> stockAboveFaceTop(const BgRegion& stock, const BgRegion&
     const BgRegion piece = regionFromSimpleOutline(clipped);
     above.insert(above.end(), piece.begin(), piece.end());
   }
-  using Box = boost::geometry::model::box<BgPoint>;
-  Box operands = boost::geometry::return_envelope<Box>(stock);
-  boost::geometry::expand(operands, boost::geometry::return_envelope<Box>(face));
-  tidy(above, std::max(operands.max_corner().x() - operands.min_corner().x(),
-                       operands.max_corner().y() - operands.min_corner().y()));
+  BgBox operands = boost::geometry::return_envelope<BgBox>(stock);
+  boost::geometry::expand(operands, boost::geometry::return_envelope<BgBox>(face));
+  tidyAsBooleanOf(above, operands);
   return above;
 }
 
@@ -753,7 +762,8 @@ class SiemensDocumentedCrossings {
   const BgRegion& allowanceLayer() const {
     if (!layer_) {
       const SiemensCycleSpec& f = r_.siemensFinishing ? *r_.siemensFinishing : s_;
-      layer_ = siemensAllowanceLayer(s_, s_.frame.toPlane(s_.profile), f.frame.toPlane(f.finishPath), r_.away, r_.reach, chord_);
+      layer_ = siemensAllowanceLayer(s_, s_.frame.toPlane(s_.profile), f.frame.toPlane(f.finishPath), r_.away, r_.reach,
+                                     chord_);
     }
     return *layer_;
   }

@@ -1,7 +1,8 @@
 // The material a SINUMERIK call implies (oracles/material_replay.cpp), built without booleans where
-// the shape allows (stockUpToLevel, stockAboveFaceTop, siemensAllowanceLayer): each region here is derived by hand from the rules (LCYC95.ROUGH note: the bar
-// up to the profile's highest point, less what stands behind the part's face; a finishing call
-// works on the allowance layer between the profile and the finishing path).
+// the shape allows (stockUpToLevel, stockAboveFaceTop, siemensAllowanceLayer): each region here is
+// derived by hand from the rules (LCYC95.ROUGH note: the bar up to the profile's highest point, less
+// what stands behind the part's face; a finishing call works on the allowance layer between the
+// profile and the finishing path).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,7 +41,8 @@ double lowestX(const BgRegion& region) {
 // stands above x 1.4: the triangle over the chamfer (0.1 × 0.1 / 2 = 0.005) and the groove's top
 // (1 × 0.1 = 0.1) — not the groove below 1.4 (which would make 0.505).
 TEST(SiemensMaterial, TheStockBehindARaisedStartStandsAboveThePartsFace) {
-  const std::string program = "T1 D1\nG0 X4.2 Z0.6\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
+  const std::string program =
+      "T1 D1\nG0 X4.2 Z0.6\nCYCLE95(\"L1\", 0.5, 0, 0, 0, 0.1, 0.05, 0.05, 1, 0, 0, 0.1)\nM02\n";
   const std::string contour = "G1 X2.8 Z0\nG1 X3 Z-0.1\nG1 X2 Z-0.1\nG1 X2 Z-1.1\nG1 X3 Z-1.1\nRET\n";
   const std::optional<MaterialReplay> r = replayOf(program, contour);
   ASSERT_TRUE(r.has_value());
