@@ -169,20 +169,75 @@ std::vector<Segment> stockBoundingShape(const CycleSpec& c, const DepthFrame& fr
 
 namespace {
 
+using BgBox = boost::geometry::model::box<BgPoint>;
+
+// A region built without the boolean that would have made it, tidied as that boolean's result is
+// (region.h: at the resolution of its operands' size, the largest side of their envelope), so that
+// it is the region the boolean makes.
+void tidyAsBooleanOf(BgRegion& region, const BgBox& operands) {
+  tidy(region, std::max(operands.max_corner().x() - operands.min_corner().x(),
+                        operands.max_corner().y() - operands.min_corner().y()));
+}
+
+// The stock between a graph over the cut axis (flattened: `points`) and a level it reaches between
+// its ends (a collar up to the level), over [lo, hi] along the cut axis: one outline for each run of
+// the points between two that reach the level (within kTidyDistance), closed along the level — the
+// pieces the band below the level minus the part falls into (its operands: the band and the part,
+// both down to `bottom`). Nothing when a point stands above the level (the boolean decides).
+std::optional<BgRegion> stockPiecesUpToLevel(const std::vector<Point>& points, const DepthFrame& frame, double level,
+                                             double lo, double hi, double bottom) {
+  BgBox operands = boost::geometry::make_inverse<BgBox>();
+  for (Point corner : {frame.point(lo, level), frame.point(hi, level), frame.point(lo, bottom), frame.point(hi, bottom),
+                       frame.atDepth(points.back(), bottom), frame.atDepth(points.front(), bottom)}) {
+    boost::geometry::expand(operands, toBg(corner));
+  }
+  BgRegion pieces;
+  std::vector<Point> outline;
+  const auto closePiece = [&] {
+    if (outline.size() >= 2) {
+      outline.push_back(frame.atDepth(outline.back(), level));
+      outline.push_back(frame.atDepth(outline.front(), level));
+      const BgRegion piece = regionFromSimpleOutline(outline);
+      pieces.insert(pieces.end(), piece.begin(), piece.end());
+    }
+    outline.clear();
+  };
+  for (Point p : points) {
+    if (frame.depth(p) > level + kTidyDistance) return std::nullopt;
+    boost::geometry::expand(operands, toBg(p));
+    outline.push_back(p);
+    if (frame.depth(p) >= level - kTidyDistance && outline.size() > 1) {
+      closePiece();
+      outline.push_back(p);
+    }
+  }
+  closePiece();
+  tidyAsBooleanOf(pieces, operands);
+  return pieces;
+}
+
 // The stock between a shape and a level above it, over the shape's span along the cut axis: the
 // band below the level minus the part. A shape that is a graph over the cut axis and stands below
 // the level between its ends (an end may stand on it) bounds the stock itself: the shape, up to the
-// level at its end and back along it — the same region, without a boolean.
+// level at its end and back along it — the same region, without a boolean; one that reaches the
+// level between its ends bounds its pieces (stockPiecesUpToLevel).
 BgRegion stockUpToLevel(const std::vector<Segment>& shape, Point away, double level, double reach, double chordTolerance) {
   const DepthFrame frame(away);
   const auto [lo, hi] = cutSpanOf(shape, frame);
   if (!(hi > lo)) return {};
-  if (isGraphOverCutAxis(shape, frame) && highestBetweenEnds(shape, frame) < level - kTidyDistance) {
+  if (isGraphOverCutAxis(shape, frame)) {
     std::vector<Point> outline;
     for (const Segment& s : shape) appendFlattened(outline, s, chordTolerance);
-    outline.push_back(frame.atDepth(shape.back().to, level));
-    outline.push_back(frame.atDepth(shape.front().from, level));
-    return regionFromSimpleOutline(outline);
+    if (highestBetweenEnds(shape, frame) < level - kTidyDistance) {
+      outline.push_back(frame.atDepth(shape.back().to, level));
+      outline.push_back(frame.atDepth(shape.front().from, level));
+      return regionFromSimpleOutline(outline);
+    }
+    double deepest = INFINITY;  // as the part's outline takes it (partOutlineOf): the segments' ends
+    for (const Segment& s : shape) deepest = std::min({deepest, frame.depth(s.from), frame.depth(s.to)});
+    if (std::optional<BgRegion> pieces = stockPiecesUpToLevel(outline, frame, level, lo, hi, deepest - reach)) {
+      return *std::move(pieces);
+    }
   }
   const BgRegion band = regionFromSimpleOutline({frame.point(lo, level), frame.point(hi, level),
                                                  frame.point(hi, level - reach), frame.point(lo, level - reach)});
@@ -505,13 +560,90 @@ double siemensFaceTop(const SiemensCycleSpec& s) {
 // stands at that point's z, up to siemensFaceTop; a level below that meets the part at the face.
 // What lies behind the face and above the profile (a recess the contour draws beyond a raised
 // start) is out of the levels' reach: no stock of theirs.
+// The face's z (frame): the profile's first point's, or the contour's where the allowance moved the
+// profile's start behind it.
+double siemensFrontZ(const SiemensCycleSpec& s) {
+  return std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+}
+
 BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
   if (s.profile.empty() || s.contour.empty()) return {};
-  // The profile's first point's z, or the contour's where the allowance moved the profile's start
-  // behind it.
-  const double frontZ = std::max(s.profile.front().from.z, s.frame.toFrame(s.contour.front().from).z);
+  const double frontZ = siemensFrontZ(s);
   const double faceTop = siemensFaceTop(s);
   return frameBoxInPlane(s.frame, frontZ - reach, frontZ, faceTop - reach, faceTop);
+}
+
+// Whether two paths are one within `tolerance`: the same kinds of segment, their ends and centres
+// that close.
+bool samePathWithin(const std::vector<Segment>& a, const std::vector<Segment>& b, double tolerance) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const bool same = a[i].kind == b[i].kind && nearlyEqual(a[i].from, b[i].from, tolerance) &&
+                      nearlyEqual(a[i].to, b[i].to, tolerance) &&
+                      (!a[i].isArc() || nearlyEqual(a[i].center, b[i].center, tolerance));
+    if (!same) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The allowance layer of a SINUMERIK call: between its roughing profile and the finishing path (both
+// in the plane). Without allowances and nose radius the two are the contour, one to rounding: no
+// layer (the boolean of their regions leaves dust, which it drops). Two graphs over the cut axis a
+// contour-parallel allowance keeps apart bound the layer themselves: the profile, across to the
+// finishing path's end and back along it. Either way no boolean.
+BgRegion siemensAllowanceLayer(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
+                               const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
+  if (samePathWithin(profile, finish, kTidyDistance)) return {};
+  const DepthFrame frame(away);
+  if (std::abs(s.allowance) > kTidyDistance && isGraphOverCutAxis(profile, frame) && isGraphOverCutAxis(finish, frame)) {
+    std::vector<Point> outline;
+    for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
+    for (auto seg = finish.rbegin(); seg != finish.rend(); ++seg) appendFlattened(outline, seg->reversed(), chordTolerance);
+    return regionFromSimpleOutline(outline);
+  }
+  return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
+}
+
+// The stock below a profile that is a graph over the cut axis less the face box (siemensFrontFace),
+// without a boolean, when the box spans the stock's whole cut range (the profile runs from its
+// first point away from the face side: no point of the stock stands beyond the face's z): then the
+// box takes what stands below the face's top, and each ring is clipped to the half-plane above it
+// in the frame (Sutherland–Hodgman). Each piece of such a stock is what stands between the profile
+// and the top level, so its part above a level stays one simple ring. Nothing when the box does not
+// span the stock.
+std::optional<BgRegion> stockAboveFaceTop(const BgRegion& stock, const BgRegion& face, const SiemensCycleSpec& s,
+                                          double reach) {
+  if (stock.empty() || face.empty()) return std::nullopt;
+  const double frontZ = siemensFrontZ(s);
+  const double faceTop = siemensFaceTop(s);
+  BgRegion above;
+  std::vector<Point> ring, clipped;
+  for (const BgPolygon& polygon : stock) {
+    if (!polygon.inners().empty()) return std::nullopt;
+    ring.clear();
+    for (const BgPoint& p : polygon.outer()) {
+      ring.push_back(s.frame.toFrame(fromBg(p)));
+      const Point q = ring.back();
+      if (q.z > frontZ || q.z < frontZ - reach || q.x < faceTop - reach) return std::nullopt;
+    }
+    clipped.clear();
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {  // the ring is closed: its last point is its first
+      const Point a = ring[i], b = ring[i + 1];
+      if (a.x >= faceTop) clipped.push_back(s.frame.toPlane(a));
+      if ((a.x >= faceTop) != (b.x >= faceTop)) {
+        const double t = (faceTop - a.x) / (b.x - a.x);
+        clipped.push_back(s.frame.toPlane(Point{a.z + t * (b.z - a.z), faceTop}));
+      }
+    }
+    const BgRegion piece = regionFromSimpleOutline(clipped);
+    above.insert(above.end(), piece.begin(), piece.end());
+  }
+  BgBox operands = boost::geometry::return_envelope<BgBox>(stock);
+  boost::geometry::expand(operands, boost::geometry::return_envelope<BgBox>(face));
+  tidyAsBooleanOf(above, operands);
+  return above;
 }
 
 // The stock a SINUMERIK call implies (interpretation, LCYC95.ROUGH note): a call that roughs takes
@@ -522,22 +654,16 @@ BgRegion siemensFrontFace(const SiemensCycleSpec& s, double reach) {
 // profile and the finishing path.
 BgRegion siemensImpliedStock(const SiemensCycleSpec& s, const std::vector<Segment>& profile,
                              const std::vector<Segment>& finish, Point away, double reach, double chordTolerance) {
-  const DepthFrame frame(away);
-  if (!s.roughs()) {
-    // Two graphs over the cut axis a contour-parallel allowance keeps apart bound the layer
-    // themselves: the profile, across to the finishing path's end and back along it — no boolean.
-    if (std::abs(s.allowance) > kTidyDistance && isGraphOverCutAxis(profile, frame) && isGraphOverCutAxis(finish, frame)) {
-      std::vector<Point> outline;
-      for (const Segment& seg : profile) appendFlattened(outline, seg, chordTolerance);
-      for (auto seg = finish.rbegin(); seg != finish.rend(); ++seg) appendFlattened(outline, seg->reversed(), chordTolerance);
-      return regionFromSimpleOutline(outline);
-    }
-    return without(partRegionOf(profile, away, reach, chordTolerance), partRegionOf(finish, away, reach, chordTolerance));
-  }
+  if (!s.roughs()) return siemensAllowanceLayer(s, profile, finish, away, reach, chordTolerance);
   // The frame's x is the plane's depth along `away`: the top level is the profile's highest point.
   const BgRegion stock = stockUpToLevel(profile, away, s.levels.top, reach, chordTolerance);
   // Only a profile that comes down below the face's top has stock behind the face.
-  return s.levels.bottom < siemensFaceTop(s) - kTidyDistance ? without(stock, siemensFrontFace(s, reach)) : stock;
+  if (!(s.levels.bottom < siemensFaceTop(s) - kTidyDistance)) return stock;
+  const BgRegion face = siemensFrontFace(s, reach);
+  if (isGraphOverCutAxis(profile, DepthFrame(away))) {
+    if (std::optional<BgRegion> above = stockAboveFaceTop(stock, face, s, reach)) return *std::move(above);
+  }
+  return without(stock, face);
 }
 
 // What a SINUMERIK call leaves standing by its rules: LCYC95 roughs no undercut (CYCLE95.UNDERCUT
@@ -635,9 +761,9 @@ class SiemensDocumentedCrossings {
   // first crosses material.
   const BgRegion& allowanceLayer() const {
     if (!layer_) {
-      const BgRegion belowProfile = partRegionOf(s_.frame.toPlane(s_.profile), r_.away, r_.reach, chord_);
       const SiemensCycleSpec& f = r_.siemensFinishing ? *r_.siemensFinishing : s_;
-      layer_ = cyclecert::without(belowProfile, partRegionOf(f.frame.toPlane(f.finishPath), r_.away, r_.reach, chord_));
+      layer_ = siemensAllowanceLayer(s_, s_.frame.toPlane(s_.profile), f.frame.toPlane(f.finishPath), r_.away, r_.reach,
+                                     chord_);
     }
     return *layer_;
   }

@@ -62,8 +62,9 @@ struct MaterialReplay {
 BgRegion partRegionOf(const std::vector<Segment>& profile, Point away, double reach, double chordTolerance);
 
 // The stock a cycle implies: for G73 the near-net blank (nearNetBlankProfile); else between the
-// start point's level and the finish shape over the shape's span along the cut axis — built as that band minus the part region, so that a shape touching
-// the start level (a collar) splits it cleanly.
+// start point's level and the finish shape over the shape's span along the cut axis — that band
+// minus the part region, so that a shape touching the start level (a collar) splits it cleanly;
+// built from the shape's outline, piece by piece, where the shape is a graph over the cut axis.
 BgRegion impliedStockOf(const CycleSpec& c, Point away, double reach, double chordTolerance);
 
 // The region without its skins: what remains when it is shifted by ± `width` along the cut axis

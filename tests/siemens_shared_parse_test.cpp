@@ -11,6 +11,7 @@
 #include "harness/engines/reference_plan.h"
 #include "reference/model/program.h"
 #include "reference/profiles/default_profile.h"
+#include "reference/siemens/siemens_contour.h"
 #include "reference/siemens/siemens_parser.h"
 #include "reference/siemens/siemens_runner.h"
 
@@ -70,6 +71,51 @@ TEST(SiemensSharedParse, ASubprogramNoCycleNamesIsNotParsed) {
   EXPECT_FALSE(path.moves.empty());
   request.subprograms.front().text = "G1X0Z0\nR105=\n";  // now the one LCYC95 reads
   EXPECT_THROW(planWithReference(request), ParseError);
+}
+
+// The contour a cycle reads from a kept subprogram parse is read once too: the harness's reader
+// (siemensRunInputFor) answers a second run of the same text — the judge's reading after the
+// engine's — with the contour it read the first time, the same segments.
+TEST(SiemensSharedParse, TheContourOfAKeptParseIsReadOnceAnotherModalStateReadsItAgain) {
+  const PlanRequest request = requestFor(kMain, kContour);
+  const SiemensRunInput input = siemensRunInputFor(request);
+  const auto blocks = input.parsers.subprogram(kContour, "case.json#/subprograms/L42");
+  const SiemensContour first = input.parsers.contour("L42", blocks, SiemensModal{});
+  const SiemensContour again = siemensRunInputFor(request).parsers.contour("L42", blocks, SiemensModal{});
+  ASSERT_EQ(first.segments.size(), 3u);  // (0, 10) → (−20, 10) → (−20, 20) → (−30, 20), x radius
+  ASSERT_EQ(again.segments.size(), first.segments.size());
+  for (std::size_t i = 0; i < first.segments.size(); ++i) {
+    EXPECT_EQ(again.segments[i].from, first.segments[i].from) << i;
+    EXPECT_EQ(again.segments[i].to, first.segments[i].to) << i;
+  }
+  EXPECT_NEAR(first.segments[1].to.x, 20, 1e-12);
+  // Read with another modal state (G22: X a radius) the same blocks give another contour.
+  const SiemensContour inRadius = input.parsers.contour("L42", blocks, SiemensModal{0, false});
+  ASSERT_EQ(inRadius.segments.size(), 3u);
+  EXPECT_NEAR(inRadius.segments[1].to.x, 40, 1e-12);
+}
+
+// The runner asks its contour reader only for a subprogram its subprogram parser read: one printed
+// after the main program is read by readSiemensContour from the program's own parse.
+TEST(SiemensSharedParse, TheRunnerAsksItsContourReaderOnlyForAKeptParse) {
+  int asked = 0;
+  const auto counting = [&asked](const std::string& name, const std::shared_ptr<const SiemensBlocks>& blocks,
+                                 SiemensModal modal) {
+    ++asked;
+    return readSiemensContour(name, *blocks, modal);
+  };
+  SiemensRunInput given{kMain, "t.mpf", {{"L42", kContour, "t#/subprograms/L42"}}, "", ToolOffset{}};
+  given.parsers.contour = counting;
+  const Toolpath withReader = planSiemensProgram(given, *findProfile("sinumerik-802s"));
+  EXPECT_EQ(asked, 1);
+  given.parsers.contour = {};
+  const Toolpath without = planSiemensProgram(given, *findProfile("sinumerik-802s"));
+  ASSERT_EQ(withReader.moves.size(), without.moves.size());
+  for (std::size_t i = 0; i < without.moves.size(); ++i) EXPECT_EQ(withReader.moves[i].to, without.moves[i].to) << i;
+  SiemensRunInput printed{std::string(kMain) + "L42.spf\n" + kContour, "t.mpf", {}, "", ToolOffset{}};
+  printed.parsers.contour = counting;
+  EXPECT_FALSE(planSiemensProgram(printed, *findProfile("sinumerik-802s")).moves.empty());
+  EXPECT_EQ(asked, 1);
 }
 
 }  // namespace

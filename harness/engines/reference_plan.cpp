@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <deque>
+#include <map>
+#include <memory>
 #include <regex>
 #include <string_view>
+#include <tuple>
 #include <unordered_map>
 
 #include "reference/gcode/parser.h"
@@ -11,6 +14,7 @@
 #include "reference/model/alarms.h"
 #include "reference/model/profile.h"
 #include "reference/profiles/default_profile.h"
+#include "reference/siemens/siemens_contour.h"
 #include "reference/siemens/siemens_parser.h"
 #include "reference/siemens/siemens_runner.h"
 #include "reference/siemens/siemens_signature.h"
@@ -46,6 +50,32 @@ std::shared_ptr<const Parsed> parsedOnce(std::string_view text, const std::strin
   parsed.emplace(key, program);
   oldestFirst.push_back(std::move(key));
   return program;
+}
+
+// The contours read lately on this thread (the last 128) from a kept parse of a subprogram
+// (parsedOnce), by that parse, the name and the modal state read with: the reference engine and
+// the oracles' reading of its program read the same contour from the same parse. Each entry keeps
+// its parse alive, so that no other parse takes its address while the entry stands.
+SiemensContour contourReadOnce(const std::string& name, const std::shared_ptr<const SiemensBlocks>& blocks,
+                               SiemensModal modal) {
+  constexpr std::size_t kKept = 128;
+  using Key = std::tuple<const SiemensBlocks*, std::string, int, bool>;
+  struct Read {
+    std::shared_ptr<const SiemensBlocks> blocks;
+    SiemensContour contour;
+  };
+  thread_local std::map<Key, Read> read;
+  thread_local std::deque<Key> oldestFirst;
+  Key key{blocks.get(), name, modal.motion, modal.diameterX};
+  if (const auto found = read.find(key); found != read.end()) return found->second.contour;
+  SiemensContour contour = readSiemensContour(name, *blocks, modal);
+  if (oldestFirst.size() == kKept) {
+    read.erase(oldestFirst.front());
+    oldestFirst.pop_front();
+  }
+  read.emplace(key, Read{blocks, contour});
+  oldestFirst.push_back(std::move(key));
+  return contour;
 }
 
 }  // namespace
@@ -114,6 +144,7 @@ SiemensParsers siemensParsersKeepingWhatTheyParse() {
   parsers.subprogram = [](std::string_view text, const std::string& file) {
     return parsedOnce<SiemensBlocks>(text, file, parseSiemensSubprogram);
   };
+  parsers.contour = contourReadOnce;
   return parsers;
 }
 

@@ -190,6 +190,11 @@ class SiemensRunner {
 
   SiemensContour contourNamed(const std::string& name, int line, int column) {
     const SiemensBlocks& blocks = subprograms_.find(name, input_.file, line, column);
+    if (input_.parsers.contour) {
+      if (const std::shared_ptr<const SiemensBlocks> kept = subprograms_.kept(name)) {
+        return input_.parsers.contour(name, kept, modal_);
+      }
+    }
     return readSiemensContour(name, blocks, modal_);
   }
 

@@ -17,6 +17,7 @@
 #include "reference/model/toolpath.h"
 #include "reference/siemens/siemens_cycle_parameters.h"
 #include "reference/siemens/siemens_cycles.h"
+#include "reference/siemens/siemens_motion.h"
 #include "reference/siemens/siemens_program.h"
 #include "reference/siemens/siemens_subprograms.h"
 
@@ -30,12 +31,17 @@ struct SiemensPlanners {
   MachiningTypeLookup typeOf = machiningTypeOf;
 };
 
-// How the runner reads texts into blocks: parseSiemensProgram and parseSiemensSubprogram when
-// empty. A caller that reads the same program twice (the reference engine, then the oracles'
-// reading of it) may pass parsers that keep what they parsed.
+// How the runner reads texts into blocks and a contour subprogram's blocks into its contour:
+// parseSiemensProgram, parseSiemensSubprogram and readSiemensContour when empty. A caller that
+// reads the same program twice (the reference engine, then the oracles' reading of it) may pass
+// parsers that keep what they parsed; `contour` is asked only for a subprogram the `subprogram`
+// parser read (its parse, kept: SiemensSubprograms::kept), and must answer as readSiemensContour.
 struct SiemensParsers {
   std::function<std::shared_ptr<const SiemensProgram>(std::string_view text, const std::string& file)> program = {};
   SiemensSubprogramParser subprogram = {};
+  std::function<SiemensContour(const std::string& name, const std::shared_ptr<const SiemensBlocks>& blocks,
+                               SiemensModal modal)>
+      contour = {};
 };
 
 struct SiemensRunInput {

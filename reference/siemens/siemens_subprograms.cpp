@@ -41,6 +41,16 @@ const SiemensBlocks& SiemensSubprograms::find(const std::string& name, const std
   return contourOnly(located(name, file, line, column), name);
 }
 
+std::shared_ptr<const SiemensBlocks> SiemensSubprograms::kept(const std::string& name) const {
+  for (const PrintedSubprogram& p : program_.printed) {
+    if (equalIgnoringCase(p.name, name)) return nullptr;
+  }
+  std::string key = name;
+  for (char& c : key) c = asciiUpper(c);
+  const auto found = read_.find(key);
+  return found != read_.end() ? found->second : nullptr;
+}
+
 const SiemensBlocks& SiemensSubprograms::located(const std::string& name, const std::string& file, int line, int column) {
   for (const PrintedSubprogram& p : program_.printed) {
     if (equalIgnoringCase(p.name, name)) return p.body;

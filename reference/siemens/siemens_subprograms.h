@@ -40,6 +40,11 @@ class SiemensSubprograms {
   // subprogram (itself included) or a cycle.
   const SiemensBlocks& find(const std::string& name, const std::string& file, int line, int column);
 
+  // The parse of a subprogram found (find) in the case's "subprograms" or a sibling file, as the
+  // parser returned it (shared with the caller's other reads of the same text); nothing for one
+  // printed after the main program (part of the program's parse) or not found yet.
+  std::shared_ptr<const SiemensBlocks> kept(const std::string& name) const;
+
  private:
   const SiemensBlocks& located(const std::string& name, const std::string& file, int line, int column);
   const SiemensProgram& program_;
