@@ -568,6 +568,33 @@ TEST(MetamorphicRelations, MergeContinuationsJoinsOnlyWhatContinues) {
   EXPECT_FALSE(compareGeometry(t, merged, kTol));
 }
 
+// A line followed by one it almost continues, and the same with the second line split at its
+// midpoint (MetamorphicProperties.SplitSegment, random seed 18393464799836836717, shrunk): the
+// semi-finish (0, 0) → (−0.3, 0.29) → (−1.18, 1.14) against (0, 0) → (−0.3, 0.29) → (−0.74, 0.715)
+// → (−1.18, 1.14). The corner (−0.3, 0.29) lies 0.000122 mm from the chord (0, 0)–(−1.18, 1.14), more
+// than the 1e-4 tolerance, but only 0.0000972 from the chord to the midpoint: joining greedily
+// move after move kept it in the first path and dropped it in the second. Douglas–Peucker over the
+// run keeps it in both (the farthest point first), and the split point goes.
+TEST(MetamorphicRelations, MergeContinuationsKeepsTheSameCornersWhenALineIsSplit) {
+  constexpr double kTight = 1e-4;
+  const auto feed = [](Point to) {
+    Move m;
+    m.kind = MoveKind::Feed;
+    m.to = to;
+    m.feed = 0.2;
+    return m;
+  };
+  Toolpath whole, split;
+  whole.start = split.start = {0, 0};
+  whole.moves = {feed({-0.3, 0.29}), feed({-1.18, 1.14})};
+  split.moves = {feed({-0.3, 0.29}), feed({-0.74, 0.715}), feed({-1.18, 1.14})};
+  const Toolpath a = mergeContinuations(whole, kTight), b = mergeContinuations(split, kTight);
+  ASSERT_EQ(a.moves.size(), 2u);
+  ASSERT_EQ(b.moves.size(), 2u);
+  EXPECT_EQ(b.moves[0].to, (Point{-0.3, 0.29}));
+  EXPECT_FALSE(compareGeometry(whole, split, kTight));
+}
+
 TEST(MetamorphicRelations, CompareToolpathsNamesAlarmsAndSkipsNegligibleMoves) {
   Toolpath a, b;
   a.alarm = Alarm{"PS0064", "not monotonic", 4, ""};

@@ -44,18 +44,65 @@ std::string describeAlarm(const std::optional<Alarm>& a) {
   return a ? "alarm " + a->code + " (line " + std::to_string(a->line) + ": " + a->message + ")" : "no alarm";
 }
 
-// True when `next` continues `last` (which starts at `from`) as one line or one arc.
-bool continues(Point from, const Move& last, const Move& next, double tol) {
-  if (last.kind != next.kind || last.shape != next.shape || !sameFeed(last.feed, next.feed, tol)) return false;
-  if (last.shape == SegmentKind::Line) {
-    const Point a = last.to - from, b = next.to - last.to;
-    const Point whole = next.to - from;
-    const double length = std::hypot(whole.z, whole.x);
-    if (length <= tol) return false;
-    const double offLine = std::abs(a.z * whole.x - a.x * whole.z) / length;  // last.to from the joined line
-    return offLine <= tol && a.z * b.z + a.x * b.x > 0;
-  }
+// The distance of `p` from the line through `a` and `b` (from `a` when they coincide).
+double offLine(Point p, Point a, Point b) {
+  const Point whole = b - a, d = p - a;
+  const double length = std::hypot(whole.z, whole.x);
+  if (length == 0) return std::hypot(d.z, d.x);
+  return std::abs(d.z * whole.x - d.x * whole.z) / length;
+}
+
+// True when `next` may continue `last` as one line: both lines of the same kind and feed, going on
+// forwards, the joint within tol of the line from where `last` starts to where `next` ends — a test
+// of the three points alone, so that it does not depend on how the moves around were merged.
+bool linesMayJoin(Point from, const Move& last, const Move& next, double tol) {
+  if (last.shape != SegmentKind::Line || next.shape != SegmentKind::Line) return false;
+  if (last.kind != next.kind || !sameFeed(last.feed, next.feed, tol)) return false;
+  const Point a = last.to - from, b = next.to - last.to;
+  return a.z * b.z + a.x * b.x > 0 && offLine(last.to, from, next.to) <= tol;
+}
+
+// True when `next` continues the arc `last`: the same direction around the same centre (within tol).
+bool arcContinues(const Move& last, const Move& next, double tol) {
+  if (last.shape == SegmentKind::Line || last.shape != next.shape) return false;
+  if (last.kind != next.kind || !sameFeed(last.feed, next.feed, tol)) return false;
   return last.center && next.center && nearlyEqual(*last.center, *next.center, tol);
+}
+
+// Douglas–Peucker over the points first…last of a run of lines: marks in `keep` the points the
+// run needs so that every dropped point lies within tol of the line that replaces it. The point
+// farthest from the chord is kept first, so a run and the same run with points added on its lines
+// (a split block) keep the same corners.
+void markCorners(const std::vector<Point>& points, std::size_t first, std::size_t last, double tol,
+                 std::vector<bool>& keep) {
+  if (last <= first + 1) return;
+  std::size_t farthest = first;
+  double distance = -1;
+  for (std::size_t i = first + 1; i < last; ++i) {
+    const double d = offLine(points[i], points[first], points[last]);
+    if (d > distance) {
+      distance = d;
+      farthest = i;
+    }
+  }
+  if (distance <= tol) return;
+  keep[farthest] = true;
+  markCorners(points, first, farthest, tol, keep);
+  markCorners(points, farthest, last, tol, keep);
+}
+
+// The moves of a run of lines (moves[begin…end), starting at `from`) with the points Douglas–Peucker
+// drops removed: each kept move is the run's move that ends at the kept point.
+void appendSimplifiedRun(const std::vector<Move>& moves, std::size_t begin, std::size_t end, Point from, double tol,
+                         std::vector<Move>& out) {
+  std::vector<Point> points{from};
+  for (std::size_t i = begin; i < end; ++i) points.push_back(moves[i].to);
+  std::vector<bool> keep(points.size(), false);
+  keep.back() = true;
+  markCorners(points, 0, points.size() - 1, tol, keep);
+  for (std::size_t i = begin; i < end; ++i) {
+    if (keep[i - begin + 1]) out.push_back(moves[i]);
+  }
 }
 
 // The indices of the moves that end farther than tol from where they start.
@@ -101,18 +148,37 @@ std::optional<std::string> compareToolpaths(const Toolpath& expected, const Tool
 }
 
 Toolpath mergeContinuations(const Toolpath& path, double tol) {
+  // The moves that move (a negligible move is dropped, as compareToolpaths does).
+  std::vector<Move> moving;
+  Point at = path.start;
+  for (const Move& m : path.moves) {
+    if (nearlyEqual(at, m.to, tol)) continue;
+    moving.push_back(m);
+    at = m.to;
+  }
   Toolpath merged = path;
   merged.moves.clear();
-  Point lastFrom = path.start;  // where the last merged move starts
-  for (const Move& m : path.moves) {
+  std::size_t i = 0;
+  while (i < moving.size()) {
     const Point from = merged.moves.empty() ? path.start : merged.moves.back().to;
-    if (nearlyEqual(from, m.to, tol)) continue;  // a negligible move (a full circle is no lathe move)
-    if (!merged.moves.empty() && continues(lastFrom, merged.moves.back(), m, tol)) {
-      merged.moves.back().to = m.to;
+    // A run of lines each joint of which may be dropped (linesMayJoin), simplified as a whole.
+    std::size_t end = i + 1;
+    Point runFrom = from;
+    while (end < moving.size() && linesMayJoin(end - 1 == i ? runFrom : moving[end - 2].to, moving[end - 1],
+                                               moving[end], tol)) {
+      ++end;
+    }
+    if (end > i + 1) {
+      appendSimplifiedRun(moving, i, end, runFrom, tol, merged.moves);
+      i = end;
       continue;
     }
-    lastFrom = from;
-    merged.moves.push_back(m);
+    if (!merged.moves.empty() && arcContinues(merged.moves.back(), moving[i], tol)) {
+      merged.moves.back().to = moving[i].to;
+    } else {
+      merged.moves.push_back(moving[i]);
+    }
+    ++i;
   }
   return merged;
 }

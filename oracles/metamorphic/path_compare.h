@@ -22,9 +22,11 @@ namespace cyclecert {
 std::optional<std::string> compareToolpaths(const Toolpath& expected, const Toolpath& actual, double tol);
 
 // The same geometry with fewer moves: consecutive moves of the same kind and feed are joined when
-// they continue one another — lines along one line in the same direction (the middle point within
-// tol of the joined line), arcs of the same direction around the same centre (within tol) — and,
-// as in compareToolpaths, moves that end within tol of where they start are dropped.
+// they continue one another — a run of lines going on forwards, each joint within tol of the line
+// from its neighbours, simplified by Douglas–Peucker within tol (the farthest corner kept first, so
+// that a run and the same run with points added on its lines keep the same corners), arcs of the
+// same direction around the same centre (within tol) — and, as in compareToolpaths, moves that end
+// within tol of where they start are dropped.
 Toolpath mergeContinuations(const Toolpath& path, double tol);
 
 // compareToolpaths after mergeContinuations of both paths: the relation that splits a block into
