@@ -58,6 +58,9 @@ Segment localSegment(const JudgeInput& in, const GrooveSpec& g, std::size_t i) {
   return local;
 }
 
+// A nose's centre path: R back along h from its lowest point, the point it is judged by (I26).
+Segment centrePath(const GrooveReplay& r, const Segment& move) { return move.shifted(grooveUW(0, -r.noseRadius)); }
+
 // A point's shadow runs along −u (behind the steps) for the pecks, and for a profile pass towards
 // the groove's inside: +u on the start side of the floor's middle, −u on the far side (the pass
 // removes the allowance layer between it and the pecks). +1 or −1 along u.
@@ -67,12 +70,33 @@ int shadowSide(const GrooveReplay& r, const Segment& move, bool profilePass) {
   return startSide ? 1 : -1;
 }
 
-// A nose's centre path: R back along h from its lowest point, the point it is judged by (I26).
-Segment centrePath(const GrooveReplay& r, const Segment& move) { return move.shifted(grooveUW(0, -r.noseRadius)); }
+// The region the tool sweeps along one move — the blade's rectangle, the nose's disc (a point sweeps
+// none) — computed when first asked: a blade's feed is crossed with the part and removed by the
+// same sweep.
+class MoveSweep {
+ public:
+  MoveSweep(const GrooveReplay& r, const Segment& move, double chordTolerance)
+      : r_(r), move_(move), chordTolerance_(chordTolerance) {}
+  const BgRegion& region() {
+    if (!swept_) swept_ = sweepOf(r_, move_, chordTolerance_);
+    return *swept_;
+  }
+
+ private:
+  static BgRegion sweepOf(const GrooveReplay& r, const Segment& move, double chordTolerance) {
+    if (r.noseRadius > 0) return noseSweptRegion(centrePath(r, move), r.noseRadius, {0, 0}, 0, chordTolerance);
+    return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+  }
+  const GrooveReplay& r_;
+  const Segment& move_;
+  double chordTolerance_;
+  std::optional<BgRegion> swept_;
+};
 
 // What a feed removes: the blade's sweep, a nose's sweep and shadow, or a point's shadow.
-BgRegion removedBy(const GrooveReplay& r, const Segment& move, int side, double shadow, double chordTolerance) {
-  if (!r.tool.isPoint()) return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+BgRegion removedBy(const GrooveReplay& r, const Segment& move, MoveSweep& sweep, int side, double shadow,
+                   double chordTolerance) {
+  if (!r.tool.isPoint()) return sweep.region();
   if (r.noseRadius > 0) {  // the disc about the centre, R back along h from the point judged (I26)
     return noseSweptRegion(centrePath(r, move), r.noseRadius, grooveUW(side, 0), shadow, chordTolerance);
   }
@@ -109,7 +133,7 @@ BgRegion materialNow(const BgRegion& withoutTheOthers, const ClearedStaircase& c
   if (cleared.empty()) return withoutTheOthers;
   BgRegion steps;
   for (const std::vector<Point>& ring : cleared.outlines(top)) {
-    const BgRegion one = regionFrom(ring);
+    const BgRegion one = regionFromSimpleOutline(ring);  // a histogram over u: simple by construction
     steps.insert(steps.end(), one.begin(), one.end());
   }
   return without(withoutTheOthers, steps);
@@ -132,10 +156,25 @@ ToolExtent extentOf(const GrooveReplay& r, const Segment& move, double chord) {
   return e;
 }
 
-ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, const Segment& move, double eps,
-                               double chord) {
-  if (r.noseRadius > 0) return noseCrossing(region, centrePath(r, move), r.noseRadius, eps, chord);
-  return toolCrossing(region, move, r.tool, r.blade, eps, chord);
+ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, const Segment& move, MoveSweep& sweep,
+                               double eps, double chord) {
+  if (r.tool.isPoint() && r.noseRadius <= 0) return toolCrossing(region, move, r.tool, r.blade, eps, chord);
+  if (region.empty()) return {};
+  return sweptCrossing(region, sweep.region(), eps);
+}
+
+using Box = bg::model::box<BgPoint>;
+
+// Whether `region` may meet the box: false when its envelope is disjoint from it (or it is empty).
+bool mayMeet(const BgRegion& region, const Box& box) {
+  return !region.empty() && !bg::disjoint(bg::return_envelope<Box>(region), box);
+}
+
+// A box around everything the tool sweeps along a move of extent e: a blade's shank reaches
+// blade.length back (−w) from its edge.
+Box sweptBoxOf(const GrooveReplay& r, const ToolExtent& e) {
+  const double shank = r.tool.isPoint() ? 0 : r.blade.length;
+  return {toBg(grooveUW(e.uFrom, e.wShallowest - shank)), toBg(grooveUW(e.uTo, e.wDeepest))};
 }
 
 }  // namespace
@@ -178,22 +217,26 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   ClearedStaircase cleared(band);
   const double aboveTheBand = box.min_corner().x() - 2 * kStockMargin;  // w above the band's top
   const double shadow = span + 2 * kStockMargin;
+  std::optional<BgRegion> standing;  // materialNow, once a rapid needs it, until the next feed
   for (std::size_t i = r.range.begin; i < r.range.end; ++i) {
     const Segment move = localSegment(in, *g, i);
     if (distance(move.from, move.to) <= kGeomEps && !move.isArc()) continue;
     const ToolExtent e = extentOf(r, move, chord);
+    MoveSweep sweep(r, move, chord);
     if (!partTop || e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack) {
-      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, eps, chord);
+      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
-      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest)) {
-        const BgRegion material = materialNow(withoutTheOthers, cleared, aboveTheBand);
-        r.rapidCrossings[i] = crossingOfTheTool(r, material, move, eps, chord);
+      // What stands lies within what the other removals left: a sweep clear of its envelope crosses none.
+      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest) && mayMeet(withoutTheOthers, sweptBoxOf(r, e))) {
+        if (!standing) standing = materialNow(withoutTheOthers, cleared, aboveTheBand);
+        r.rapidCrossings[i] = crossingOfTheTool(r, *standing, move, sweep, eps, chord);
       }
     } else {
+      standing.reset();
       const int side = shadowSide(r, move, moves && i >= moves->profileStart);
       if (!clearsAStep(cleared, r, move, side, shadow, e)) {
-        withoutTheOthers = without(withoutTheOthers, removedBy(r, move, side, shadow, chord));
+        withoutTheOthers = without(withoutTheOthers, removedBy(r, move, sweep, side, shadow, chord));
       }
     }
   }

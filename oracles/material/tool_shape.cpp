@@ -54,17 +54,8 @@ double thickestRing(const BgRegion& region) {
   return thickest;
 }
 
-ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
-                          double epsilon, double chordTolerance) {
+ToolCrossing sweptCrossing(const BgRegion& region, const BgRegion& swept, double epsilon) {
   ToolCrossing out;
-  if (region.empty()) return out;
-  if (tool.isPoint()) {
-    const Crossing c = crossingOf(region, move, epsilon, chordTolerance);
-    out.amount = out.thickness = c.length;
-    out.pieces = c.pieces;
-    return out;
-  }
-  const BgRegion swept = sweptRegion(move, blade.across, tool.width, blade.back, blade.length, chordTolerance);
   BgRegion crossed = checkedIntersection(swept, region);
   BgRegion thick;
   for (BgPolygon& p : crossed) {
@@ -76,6 +67,20 @@ ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const Too
   out.thickness = thickestRing(thick);
   out.crossed = std::move(thick);
   return out;
+}
+
+ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
+                          double epsilon, double chordTolerance) {
+  ToolCrossing out;
+  if (region.empty()) return out;
+  if (tool.isPoint()) {
+    const Crossing c = crossingOf(region, move, epsilon, chordTolerance);
+    out.amount = out.thickness = c.length;
+    out.pieces = c.pieces;
+    return out;
+  }
+  return sweptCrossing(region, sweptRegion(move, blade.across, tool.width, blade.back, blade.length, chordTolerance),
+                       epsilon);
 }
 
 }  // namespace cyclecert

@@ -48,9 +48,13 @@ struct ToolCrossing {
   bool any() const { return amount > 0; }
 };
 
-// A point: crossingOf (material_model.h) with epsilon. A blade: the swept region ∩ region, counted
-// where a ring of it is thicker (2·area/perimeter, about the depth it goes in for a long thin
-// sliver) than epsilon.
+// How far a tool whose move sweeps `swept` enters `region`: swept ∩ region, counted where a ring of
+// it is thicker (2·area/perimeter, about the depth it goes in for a long thin sliver) than epsilon;
+// amount its area.
+ToolCrossing sweptCrossing(const BgRegion& region, const BgRegion& swept, double epsilon);
+
+// A point: crossingOf (material_model.h) with epsilon. A blade: sweptCrossing of the region the
+// blade sweeps (sweptRegion with the blade's frame).
 ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
                           double epsilon, double chordTolerance);
 
