@@ -209,7 +209,8 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   // J2 finishes a groove roughed before (interpretation): its material is the allowance between the
   // rough and the finish profile.
   BgRegion withoutTheOthers = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
-  const std::optional<GrooveMoves> moves = grooveMoves(in);  // where the profile passes begin
+  if (std::optional<GrooveMoves> moves = grooveMoves(in)) r.moves.emplace(std::move(*moves));
+  const std::optional<GrooveMoves>& moves = r.moves;  // where the profile passes begin
   r.partCrossings.resize(in.path.moves.size());
   r.rapidCrossings.resize(in.path.moves.size());
   // The bounds (groove_bounds.h) answer most moves; the exact regions the rest.
