@@ -36,7 +36,9 @@ BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, 
 // The Minkowski sum of `move` (arcs as chords within chordTolerance) and the parallelogram spanned
 // from the origin by a·da and b·db: the union of the convex hulls of the parallelogram at each
 // chord's two ends. With a blade frame (a = width along `across`, b = length along `back`) it is the
-// region the blade sweeps; with b = 0 it is a point's shadow of length a along da.
+// region the blade sweeps; with b = 0 it is a point's shadow of length a along da. Along an arc,
+// each run of chords whose directions lie in one open cone between ±da and ±db is that union built
+// directly (its outline is the chain moved by the two side corners), without a boolean per chord.
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance);
 
 // How far a tool's move enters `region` beyond `epsilon`.
