@@ -1,6 +1,7 @@
 #include "oracles/groove/groove_bounds.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <limits>
 
@@ -16,15 +17,33 @@ double depthOn(Point p, Point q, double u) { return p.z + (q.z - p.z) * (u - p.x
 
 }  // namespace
 
+namespace {
+
+// The extent grown to hold the tool at p.
+void extendBy(ToolExtent& e, Point p, double width) {
+  e.uFrom = std::min(e.uFrom, p.x - width);
+  e.uTo = std::max(e.uTo, p.x);
+  e.wShallowest = std::min(e.wShallowest, p.z);
+  e.wDeepest = std::max(e.wDeepest, p.z);
+}
+
+bool isFinite(Point p) { return std::isfinite(p.z) && std::isfinite(p.x); }
+
+// A line flatten would take (finite, a valid chord tolerance): its points are its two ends.
+bool isPlainLine(const Segment& s, double chordTolerance) {
+  return !s.isArc() && isFinite(s.from) && isFinite(s.to) && chordTolerance > 0 && std::isfinite(chordTolerance);
+}
+
+}  // namespace
+
 ToolExtent toolExtent(const Segment& localMove, double width, double chordTolerance) {
-  const std::vector<Point> points = flatten(localMove, chordTolerance);
   ToolExtent e{kInf, -kInf, kInf, -kInf};
-  for (Point p : points) {
-    e.uFrom = std::min(e.uFrom, p.x - width);
-    e.uTo = std::max(e.uTo, p.x);
-    e.wShallowest = std::min(e.wShallowest, p.z);
-    e.wDeepest = std::max(e.wDeepest, p.z);
+  if (isPlainLine(localMove, chordTolerance)) {  // no vector per move
+    extendBy(e, localMove.from, width);
+    extendBy(e, localMove.to, width);
+    return e;
   }
+  for (Point p : flatten(localMove, chordTolerance)) extendBy(e, p, width);  // (throws for what it refuses)
   return e;
 }
 
