@@ -81,6 +81,24 @@ double PartTop::shallowestOver(double u0, double u1) const {
   return top;
 }
 
+bool PartTop::liesBelow(const std::vector<Point>& outline, double slack) const {
+  for (std::size_t k = 1; k < outline.size(); ++k) {
+    const Point p = outline[k - 1], q = outline[k];
+    if (!(p.x < q.x)) return false;  // no graph over u: not proven
+    const double a = std::max(p.x, band_.uLo), b = std::min(q.x, band_.uHi);
+    if (a > b) continue;  // beyond the band: no part
+    const auto below = [&](double u, double top) { return top >= depthOn(p, q, u) - slack; };
+    // The piece's ends: the part's side within the piece; an outline's inner vertex: both sides.
+    const bool innerStart = k > 1 && a == p.x, innerEnd = k + 1 < outline.size() && b == q.x;
+    if (!below(a, innerStart ? std::min(sideOf(a, -1), sideOf(a, +1)) : sideOf(a, +1))) return false;
+    if (!below(b, innerEnd ? std::min(sideOf(b, -1), sideOf(b, +1)) : sideOf(b, -1))) return false;
+    for (Point c : chain_) {
+      if (c.x > a && c.x < b && !below(c.x, std::min(sideOf(c.x, -1), sideOf(c.x, +1)))) return false;
+    }
+  }
+  return outline.size() >= 2;
+}
+
 double PartTop::sideOf(double u, int side) const {
   const double c0 = chain_.front().x, c1 = chain_.back().x;
   // Within a nanometre of a vertex, u is that vertex: the segment ending there is on its left,

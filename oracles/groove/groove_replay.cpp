@@ -165,6 +165,37 @@ ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, co
 
 using Box = bg::model::box<BgPoint>;
 
+// The deepest outline (greatest w over each u) of the blade's sweep along the chord from → to: the
+// upper hull in w of its bottom edge's corners at both ends, u strictly increasing.
+std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
+  std::vector<Point> corners{from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to};
+  std::sort(corners.begin(), corners.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.z > b.z); });
+  std::vector<Point> hull;
+  for (Point c : corners) {
+    if (!hull.empty() && hull.back().x == c.x) continue;  // the deeper one at this u came first
+    // Drop a corner that lies above (shallower than) the chord past it.
+    while (hull.size() >= 2) {
+      const Point a = hull[hull.size() - 2], b = hull.back();
+      if ((b.x - a.x) * (c.z - a.z) - (c.x - a.x) * (b.z - a.z) < 0) break;  // b deeper than chord a–c
+      hull.pop_back();
+    }
+    hull.push_back(c);
+  }
+  return hull;
+}
+
+// Whether the blade's sweep along the move stays above the part's top: every chord's deepest
+// outline at or above it (a bound finer than the move's box: a pass along a slanted flank or a
+// round follows the part's top).
+bool bladeStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double chord) {
+  if (r.tool.isPoint()) return false;
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!top.liesBelow(bladeBottomAlong(points[k], points[k + 1], r.tool.width), kBoundSlack)) return false;
+  }
+  return true;
+}
+
 // Whether `region` may meet the box: false when its envelope is disjoint from it (or it is empty).
 bool mayMeet(const BgRegion& region, const Box& box) {
   return !region.empty() && !bg::disjoint(bg::return_envelope<Box>(region), box);
@@ -224,7 +255,8 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
     if (distance(move.from, move.to) <= kGeomEps && !move.isArc()) continue;
     const ToolExtent e = extentOf(r, move, chord);
     MoveSweep sweep(r, move, chord);
-    if (!partTop || e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack) {
+    if (!partTop || (e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack &&
+                     !bladeStaysAbove(*partTop, r, move, chord))) {
       r.partCrossings[i] = crossingOfTheTool(r, r.part, move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
