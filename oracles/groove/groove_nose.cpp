@@ -40,12 +40,6 @@ BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, do
   return sweptConvexShape(move, shape, chordTolerance);
 }
 
-ToolCrossing noseCrossing(const BgRegion& region, const Segment& move, double radius, double epsilon,
-                          double chordTolerance) {
-  if (region.empty()) return {};
-  return sweptCrossing(region, noseSweptRegion(move, radius, {0, 0}, 0, chordTolerance), epsilon);
-}
-
 BgRegion openedBy(const BgRegion& region, double radius) {
   const BgRegion inner = eroded(region, radius);
   if (inner.empty()) return inner;
