@@ -100,5 +100,57 @@ TEST(PartTop, IsTheMouthBesideTheGrooveAndTheChainInIt) {
   EXPECT_EQ(top->shallowestOver(9, 10), std::numeric_limits<double>::infinity()) << "no part beyond the band";
 }
 
+// The groove of the test above, for the part's top against polylines (a blade's deepest outline).
+GrooveOutline slantedGroove() {
+  GrooveOutline o;
+  const auto line = [](Point a, Point b) { return Segment{SegmentKind::Line, a, b, {}, 0}; };
+  o.chain = {line(grooveUW(2, 0), grooveUW(3, 3)), line(grooveUW(3, 3), grooveUW(5, 3)), line(grooveUW(5, 3), grooveUW(6, 0))};
+  return o;
+}
+
+TEST(PartTop, APolylineAlongTheFlanksAndTheFloorLiesOnItsTop) {
+  const auto top = PartTop::of(slantedGroove(), BandFrame{0, 8, 0}, 0.001);
+  ASSERT_TRUE(top);
+  // On the near flank w = 3(u − 2): its box reaches 2.4 deep over a span where the flank is 0.6 deep,
+  // the polyline itself never goes below it.
+  EXPECT_LT(top->shallowestOver(2.2, 2.8), 2.4);
+  EXPECT_TRUE(top->liesBelow({grooveUW(2.2, 0.6), grooveUW(2.8, 2.4)}, 1e-9));
+  EXPECT_FALSE(top->liesBelow({grooveUW(2.2, 0.61), grooveUW(2.8, 2.41)}, 1e-9)) << "0.01 into the flank";
+  // Down the near flank, along the floor, up the far flank: the part's top itself.
+  EXPECT_TRUE(top->liesBelow({grooveUW(2.5, 1.5), grooveUW(3, 3), grooveUW(5, 3), grooveUW(5.5, 1.5)}, 1e-9));
+  EXPECT_FALSE(top->liesBelow({grooveUW(2.5, 1.5), grooveUW(3, 3.001), grooveUW(5, 3), grooveUW(5.5, 1.5)}, 1e-9))
+      << "a vertex 0.001 below the floor's corner";
+  // A straight cut across the floor's corner at (5, 3) stays inside; one across the mouth's corner at
+  // (6, 0) into the band beside the groove does not.
+  EXPECT_TRUE(top->liesBelow({grooveUW(4.5, 3), grooveUW(5.5, 1.5)}, 1e-9));
+  EXPECT_FALSE(top->liesBelow({grooveUW(5.5, 1.5), grooveUW(6.5, 0.5)}, 1e-9));
+  EXPECT_TRUE(top->liesBelow({grooveUW(9, 7), grooveUW(10, 7)}, 1e-9)) << "no part beyond the band";
+  EXPECT_FALSE(top->liesBelow({grooveUW(4, 1), grooveUW(4, 2)}, 1e-9)) << "no graph over u: not proven";
+}
+
+// Random polylines: where liesBelow proves nothing of the part lies above them, the region above
+// each holds none of the exact part (band without the groove's interior).
+TEST(PartTop, WhereAPolylineLiesAboveItTheExactPartHasNothingAboveIt) {
+  const BandFrame band{0, 8, 0};
+  const auto top = PartTop::of(slantedGroove(), band, 0.001);
+  ASSERT_TRUE(top);
+  const BgRegion part = without(rectangle(0, 8, 0, 5), regionFrom({grooveUW(2, 0), grooveUW(3, 3), grooveUW(5, 3),
+                                                                    grooveUW(6, 0), grooveUW(6, -1), grooveUW(2, -1)}));
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> u(-1, 9), step(0.05, 2), depth(-0.5, 4);
+  int proven = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<Point> outline{grooveUW(u(random), depth(random))};
+    for (int k = 0; k < 2; ++k) outline.push_back(grooveUW(outline.back().x + step(random), depth(random)));
+    if (!top->liesBelow(outline, 1e-9)) continue;
+    ++proven;
+    std::vector<Point> above = outline;
+    above.push_back(grooveUW(outline.back().x, -10));
+    above.push_back(grooveUW(outline.front().x, -10));
+    ASSERT_LT(bg::area(checkedIntersection(regionFrom(above), part)), 1e-9) << "trial " << trial;
+  }
+  EXPECT_GT(proven, 40) << "the trials must prove some";
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -1,6 +1,7 @@
 #include "oracles/groove/groove_bounds.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <limits>
 
@@ -16,15 +17,33 @@ double depthOn(Point p, Point q, double u) { return p.z + (q.z - p.z) * (u - p.x
 
 }  // namespace
 
+namespace {
+
+// The extent grown to hold the tool at p.
+void extendBy(ToolExtent& e, Point p, double width) {
+  e.uFrom = std::min(e.uFrom, p.x - width);
+  e.uTo = std::max(e.uTo, p.x);
+  e.wShallowest = std::min(e.wShallowest, p.z);
+  e.wDeepest = std::max(e.wDeepest, p.z);
+}
+
+bool isFinite(Point p) { return std::isfinite(p.z) && std::isfinite(p.x); }
+
+// A line flatten would take (finite, a valid chord tolerance): its points are its two ends.
+bool isPlainLine(const Segment& s, double chordTolerance) {
+  return !s.isArc() && isFinite(s.from) && isFinite(s.to) && chordTolerance > 0 && std::isfinite(chordTolerance);
+}
+
+}  // namespace
+
 ToolExtent toolExtent(const Segment& localMove, double width, double chordTolerance) {
-  const std::vector<Point> points = flatten(localMove, chordTolerance);
   ToolExtent e{kInf, -kInf, kInf, -kInf};
-  for (Point p : points) {
-    e.uFrom = std::min(e.uFrom, p.x - width);
-    e.uTo = std::max(e.uTo, p.x);
-    e.wShallowest = std::min(e.wShallowest, p.z);
-    e.wDeepest = std::max(e.wDeepest, p.z);
+  if (isPlainLine(localMove, chordTolerance)) {  // no vector per move
+    extendBy(e, localMove.from, width);
+    extendBy(e, localMove.to, width);
+    return e;
   }
+  for (Point p : flatten(localMove, chordTolerance)) extendBy(e, p, width);  // (throws for what it refuses)
   return e;
 }
 
@@ -60,6 +79,24 @@ double PartTop::shallowestOver(double u0, double u1) const {
     top = std::min({top, depthOn(p, q, std::max(a, lo)), depthOn(p, q, std::min(b, hi))});
   }
   return top;
+}
+
+bool PartTop::liesBelow(const std::vector<Point>& outline, double slack) const {
+  for (std::size_t k = 1; k < outline.size(); ++k) {
+    const Point p = outline[k - 1], q = outline[k];
+    if (!(p.x < q.x)) return false;  // no graph over u: not proven
+    const double a = std::max(p.x, band_.uLo), b = std::min(q.x, band_.uHi);
+    if (a > b) continue;  // beyond the band: no part
+    const auto below = [&](double u, double top) { return top >= depthOn(p, q, u) - slack; };
+    // The piece's ends: the part's side within the piece; an outline's inner vertex: both sides.
+    const bool innerStart = k > 1 && a == p.x, innerEnd = k + 1 < outline.size() && b == q.x;
+    if (!below(a, innerStart ? std::min(sideOf(a, -1), sideOf(a, +1)) : sideOf(a, +1))) return false;
+    if (!below(b, innerEnd ? std::min(sideOf(b, -1), sideOf(b, +1)) : sideOf(b, -1))) return false;
+    for (Point c : chain_) {
+      if (c.x > a && c.x < b && !below(c.x, std::min(sideOf(c.x, -1), sideOf(c.x, +1)))) return false;
+    }
+  }
+  return outline.size() >= 2;
 }
 
 double PartTop::sideOf(double u, int side) const {

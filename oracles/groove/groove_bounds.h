@@ -46,6 +46,11 @@ class PartTop {
   // (u0 = u1) is judged by the deeper of its two sides: on a wall or an edge, it touches the part
   // only when both sides do (the point crossings count what lies deeper than ε inside).
   double shallowestOver(double u0, double u1) const;
+  // Whether the part begins at or below the polyline `outline` (local points, u strictly
+  // increasing) within `slack` at every u of its span: a tool whose deepest outline that is
+  // touches no part. Both are linear between their vertices, so they are compared there (at the
+  // span's ends, the part's side within the span).
+  bool liesBelow(const std::vector<Point>& outline, double slack) const;
 
  private:
   double sideOf(double u, int side) const;  // where the part begins just left (−1) or right (+1) of u

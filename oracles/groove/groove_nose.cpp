@@ -40,22 +40,6 @@ BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, do
   return sweptConvexShape(move, shape, chordTolerance);
 }
 
-ToolCrossing noseCrossing(const BgRegion& region, const Segment& move, double radius, double epsilon,
-                          double chordTolerance) {
-  ToolCrossing out;
-  if (region.empty()) return out;
-  BgRegion crossed = checkedIntersection(noseSweptRegion(move, radius, {0, 0}, 0, chordTolerance), region);
-  BgRegion thick;
-  for (BgPolygon& p : crossed) {
-    if (thickestRing(BgRegion{p}) > epsilon) thick.push_back(std::move(p));
-  }
-  if (thick.empty()) return out;
-  out.amount = bg::area(thick);
-  out.thickness = thickestRing(thick);
-  out.crossed = std::move(thick);
-  return out;
-}
-
 BgRegion openedBy(const BgRegion& region, double radius) {
   const BgRegion inner = eroded(region, radius);
   if (inner.empty()) return inner;

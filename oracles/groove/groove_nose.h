@@ -17,11 +17,6 @@ namespace cyclecert {
 // the polygon inscribed within chordTolerance.
 BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength, double chordTolerance);
 
-// How far the nose's sweep along `move` enters `region`: the crossed region where a ring of it is
-// thicker (2·area/perimeter) than epsilon; amount its area, as a blade's (tool_shape.h).
-ToolCrossing noseCrossing(const BgRegion& region, const Segment& move, double radius, double epsilon,
-                          double chordTolerance);
-
 // `region` opened by a disc of radius R: the union of the discs inside it.
 BgRegion openedBy(const BgRegion& region, double radius);
 

@@ -58,6 +58,9 @@ Segment localSegment(const JudgeInput& in, const GrooveSpec& g, std::size_t i) {
   return local;
 }
 
+// A nose's centre path: R back along h from its lowest point, the point it is judged by (I26).
+Segment centrePath(const GrooveReplay& r, const Segment& move) { return move.shifted(grooveUW(0, -r.noseRadius)); }
+
 // A point's shadow runs along −u (behind the steps) for the pecks, and for a profile pass towards
 // the groove's inside: +u on the start side of the floor's middle, −u on the far side (the pass
 // removes the allowance layer between it and the pecks). +1 or −1 along u.
@@ -67,12 +70,33 @@ int shadowSide(const GrooveReplay& r, const Segment& move, bool profilePass) {
   return startSide ? 1 : -1;
 }
 
-// A nose's centre path: R back along h from its lowest point, the point it is judged by (I26).
-Segment centrePath(const GrooveReplay& r, const Segment& move) { return move.shifted(grooveUW(0, -r.noseRadius)); }
+// The region the tool sweeps along one move — the blade's rectangle, the nose's disc (a point sweeps
+// none) — computed when first asked: a blade's feed is crossed with the part and removed by the
+// same sweep.
+class MoveSweep {
+ public:
+  MoveSweep(const GrooveReplay& r, const Segment& move, double chordTolerance)
+      : r_(r), move_(move), chordTolerance_(chordTolerance) {}
+  const BgRegion& region() {
+    if (!swept_) swept_ = sweepOf(r_, move_, chordTolerance_);
+    return *swept_;
+  }
+
+ private:
+  static BgRegion sweepOf(const GrooveReplay& r, const Segment& move, double chordTolerance) {
+    if (r.noseRadius > 0) return noseSweptRegion(centrePath(r, move), r.noseRadius, {0, 0}, 0, chordTolerance);
+    return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+  }
+  const GrooveReplay& r_;
+  const Segment& move_;
+  double chordTolerance_;
+  std::optional<BgRegion> swept_;
+};
 
 // What a feed removes: the blade's sweep, a nose's sweep and shadow, or a point's shadow.
-BgRegion removedBy(const GrooveReplay& r, const Segment& move, int side, double shadow, double chordTolerance) {
-  if (!r.tool.isPoint()) return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
+BgRegion removedBy(const GrooveReplay& r, const Segment& move, MoveSweep& sweep, int side, double shadow,
+                   double chordTolerance) {
+  if (!r.tool.isPoint()) return sweep.region();
   if (r.noseRadius > 0) {  // the disc about the centre, R back along h from the point judged (I26)
     return noseSweptRegion(centrePath(r, move), r.noseRadius, grooveUW(side, 0), shadow, chordTolerance);
   }
@@ -109,7 +133,7 @@ BgRegion materialNow(const BgRegion& withoutTheOthers, const ClearedStaircase& c
   if (cleared.empty()) return withoutTheOthers;
   BgRegion steps;
   for (const std::vector<Point>& ring : cleared.outlines(top)) {
-    const BgRegion one = regionFrom(ring);
+    const BgRegion one = regionFromSimpleOutline(ring);  // a histogram over u: simple by construction
     steps.insert(steps.end(), one.begin(), one.end());
   }
   return without(withoutTheOthers, steps);
@@ -132,10 +156,56 @@ ToolExtent extentOf(const GrooveReplay& r, const Segment& move, double chord) {
   return e;
 }
 
-ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, const Segment& move, double eps,
-                               double chord) {
-  if (r.noseRadius > 0) return noseCrossing(region, centrePath(r, move), r.noseRadius, eps, chord);
-  return toolCrossing(region, move, r.tool, r.blade, eps, chord);
+ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, const Segment& move, MoveSweep& sweep,
+                               double eps, double chord) {
+  if (r.tool.isPoint() && r.noseRadius <= 0) return toolCrossing(region, move, r.tool, r.blade, eps, chord);
+  if (region.empty()) return {};
+  return sweptCrossing(region, sweep.region(), eps);
+}
+
+using Box = bg::model::box<BgPoint>;
+
+// The deepest outline (greatest w over each u) of the blade's sweep along the chord from → to: the
+// upper hull in w of its bottom edge's corners at both ends, u strictly increasing.
+std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
+  std::vector<Point> corners{from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to};
+  std::sort(corners.begin(), corners.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.z > b.z); });
+  std::vector<Point> hull;
+  for (Point c : corners) {
+    if (!hull.empty() && hull.back().x == c.x) continue;  // the deeper one at this u came first
+    // Drop a corner that lies above (shallower than) the chord past it.
+    while (hull.size() >= 2) {
+      const Point a = hull[hull.size() - 2], b = hull.back();
+      if ((b.x - a.x) * (c.z - a.z) - (c.x - a.x) * (b.z - a.z) < 0) break;  // b deeper than chord a–c
+      hull.pop_back();
+    }
+    hull.push_back(c);
+  }
+  return hull;
+}
+
+// Whether the blade's sweep along the move stays above the part's top: every chord's deepest
+// outline at or above it (a bound finer than the move's box: a pass along a slanted flank or a
+// round follows the part's top).
+bool bladeStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double chord) {
+  if (r.tool.isPoint()) return false;
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!top.liesBelow(bladeBottomAlong(points[k], points[k + 1], r.tool.width), kBoundSlack)) return false;
+  }
+  return true;
+}
+
+// Whether `region` may meet the box: false when its envelope is disjoint from it (or it is empty).
+bool mayMeet(const BgRegion& region, const Box& box) {
+  return !region.empty() && !bg::disjoint(bg::return_envelope<Box>(region), box);
+}
+
+// A box around everything the tool sweeps along a move of extent e: a blade's shank reaches
+// blade.length back (−w) from its edge.
+Box sweptBoxOf(const GrooveReplay& r, const ToolExtent& e) {
+  const double shank = r.tool.isPoint() ? 0 : r.blade.length;
+  return {toBg(grooveUW(e.uFrom, e.wShallowest - shank)), toBg(grooveUW(e.uTo, e.wDeepest))};
 }
 
 }  // namespace
@@ -170,7 +240,8 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   // J2 finishes a groove roughed before (interpretation): its material is the allowance between the
   // rough and the finish profile.
   BgRegion withoutTheOthers = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
-  const std::optional<GrooveMoves> moves = grooveMoves(in);  // where the profile passes begin
+  if (std::optional<GrooveMoves> moves = grooveMoves(in)) r.moves.emplace(std::move(*moves));
+  const std::optional<GrooveMoves>& moves = r.moves;  // where the profile passes begin
   r.partCrossings.resize(in.path.moves.size());
   r.rapidCrossings.resize(in.path.moves.size());
   // The bounds (groove_bounds.h) answer most moves; the exact regions the rest.
@@ -178,22 +249,27 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   ClearedStaircase cleared(band);
   const double aboveTheBand = box.min_corner().x() - 2 * kStockMargin;  // w above the band's top
   const double shadow = span + 2 * kStockMargin;
+  std::optional<BgRegion> standing;  // materialNow, once a rapid needs it, until the next feed
   for (std::size_t i = r.range.begin; i < r.range.end; ++i) {
     const Segment move = localSegment(in, *g, i);
     if (distance(move.from, move.to) <= kGeomEps && !move.isArc()) continue;
     const ToolExtent e = extentOf(r, move, chord);
-    if (!partTop || e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack) {
-      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, eps, chord);
+    MoveSweep sweep(r, move, chord);
+    if (!partTop || (e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack &&
+                     !bladeStaysAbove(*partTop, r, move, chord))) {
+      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
-      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest)) {
-        const BgRegion material = materialNow(withoutTheOthers, cleared, aboveTheBand);
-        r.rapidCrossings[i] = crossingOfTheTool(r, material, move, eps, chord);
+      // What stands lies within what the other removals left: a sweep clear of its envelope crosses none.
+      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest) && mayMeet(withoutTheOthers, sweptBoxOf(r, e))) {
+        if (!standing) standing = materialNow(withoutTheOthers, cleared, aboveTheBand);
+        r.rapidCrossings[i] = crossingOfTheTool(r, *standing, move, sweep, eps, chord);
       }
     } else {
+      standing.reset();
       const int side = shadowSide(r, move, moves && i >= moves->profileStart);
       if (!clearsAStep(cleared, r, move, side, shadow, e)) {
-        withoutTheOthers = without(withoutTheOthers, removedBy(r, move, side, shadow, chord));
+        withoutTheOthers = without(withoutTheOthers, removedBy(r, move, sweep, side, shadow, chord));
       }
     }
   }

@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "oracles/groove/groove_moves.h"
 #include "oracles/groove/groove_spec.h"
 #include "oracles/judgement.h"
 #include "oracles/material/tool_shape.h"
@@ -34,6 +35,7 @@ struct GrooveReplay {
   double noseRadius = 0;     // a pointed tool's nose under G41/G42 (groove_nose.h); 0: none
   BladeFrame blade;          // the blade's rectangle in the groove's frame
   MoveRange range;           // the cycle's moves
+  std::optional<GrooveMoves> moves;  // the cycle's moves as the step oracles see them, found once
   BgRegion stock;            // local frame
   BgRegion target;           // the groove's interior the cycle must empty (local)
   BgRegion reachable;        // the part of target the tool can reach: target, or opened by a nose

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "oracles/groove/groove_moves.h"
+#include "oracles/groove/groove_replay.h"
 #include "oracles/oracles.h"
 
 namespace cyclecert {
@@ -22,13 +23,18 @@ namespace {
 
 bool isGroove(CycleFamily f) { return f == CycleFamily::G74_1; }
 
+// The cycle's moves, found once by the replay (JudgeContext::groove), or nullptr.
+const GrooveMoves* movesOf(const JudgeContext& ctx) {
+  return ctx.groove && ctx.groove->moves ? &*ctx.groove->moves : nullptr;
+}
+
 class GroovePeckOracle : public Oracle {
  public:
   std::string id() const override { return "groove-peck"; }
   std::vector<std::string> rules() const override { return {"G74_1.STEP3", "G74_1.STEP5"}; }
   bool judges(CycleFamily f) const override { return isGroove(f); }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<GrooveMoves> m = grooveMoves(ctx.in);
+    const GrooveMoves* m = movesOf(ctx);
     if (!m) return;
     for (const AxialCycle& c : m->cycles) {
       double reached = c.top;
@@ -52,7 +58,7 @@ class GrooveRetractOracle : public Oracle {
   std::vector<std::string> rules() const override { return {"G74_1.STEP4", "G74_1.STEP5", "G74_1.STEP6"}; }
   bool judges(CycleFamily f) const override { return isGroove(f); }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<GrooveMoves> m = grooveMoves(ctx.in);
+    const GrooveMoves* m = movesOf(ctx);
     if (!m) return;
     for (const AxialCycle& c : m->cycles) {
       for (std::size_t k = 0; k + 1 < c.pecks.size(); ++k) judgeRetract(*m, c.pecks[k], c.pecks[k + 1], out);
@@ -108,7 +114,7 @@ class GrooveRadialStepOracle : public Oracle {
   std::vector<std::string> rules() const override { return {"G74_1.STEP7"}; }
   bool judges(CycleFamily f) const override { return isGroove(f); }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<GrooveMoves> m = grooveMoves(ctx.in);
+    const GrooveMoves* m = movesOf(ctx);
     if (!m) return;
     // ① (the first move) may run along u; STEP8's moves back to a layer's start run against d.
     for (std::size_t i = m->range.begin + 1; i < m->profileStart; ++i) {
@@ -128,7 +134,7 @@ class GrooveLayerOracle : public Oracle {
   std::vector<std::string> rules() const override { return {"G74_1.STEP2", "G74_1.STEP8"}; }
   bool judges(CycleFamily f) const override { return isGroove(f); }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<GrooveMoves> m = grooveMoves(ctx.in);
+    const GrooveMoves* m = movesOf(ctx);
     if (!m || !m->g.layerDepth) return;  // no V: one layer, as deep as the groove
     const double dv = *m->g.layerDepth;
     for (const AxialCycle& c : m->cycles) {
@@ -157,7 +163,7 @@ class GrooveReturnsOracle : public Oracle {
   std::vector<std::string> rules() const override { return {"G74_1.STEP1", "G74_1.STEP10"}; }
   bool judges(CycleFamily f) const override { return isGroove(f); }
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    const std::optional<GrooveMoves> m = grooveMoves(ctx.in);
+    const GrooveMoves* m = movesOf(ctx);
     if (!m) return;
     judgeApproach(*m, out);
     judgeReturn(*m, out);

@@ -20,30 +20,102 @@ BgRegion convexHullOf(const std::vector<Point>& points) {
   return out;
 }
 
-BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
-  const std::vector<Point> chords = flatten(move, chordTolerance);
-  BgRegion swept;
-  for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
-    std::vector<Point> points;
-    for (Point c : shape) {
-      points.push_back(chords[k] + c);
-      points.push_back(chords[k + 1] + c);
-    }
-    BgRegion hull = convexHullOf(points);
-    if (swept.empty()) {
-      swept = std::move(hull);
-    } else if (!hull.empty()) {
-      BgRegion merged;
-      bg::union_(swept, hull, merged);
-      swept = std::move(merged);
-    }
+namespace {
+
+// `swept` := swept ∪ piece (the pieces of a sweep, in order along the move).
+void uniteWith(BgRegion& swept, BgRegion piece) {
+  if (swept.empty()) {
+    swept = std::move(piece);
+  } else if (!piece.empty()) {
+    BgRegion merged;
+    bg::union_(swept, piece, merged);
+    swept = std::move(merged);
   }
+}
+
+// The convex shape swept along the chord from → to: the hull of the shape at both ends.
+BgRegion hullAlongChord(Point from, Point to, const std::vector<Point>& shape) {
+  std::vector<Point> points;
+  points.reserve(2 * shape.size());
+  for (Point c : shape) {
+    points.push_back(from + c);
+    points.push_back(to + c);
+  }
+  return convexHullOf(points);
+}
+
+double cross(Point a, Point b) { return a.z * b.x - a.x * b.z; }
+int signOf(double v) { return (v > 0) - (v < 0); }
+
+// Where a direction d lies against the parallelogram spanned by A and B: the signs of α and β in
+// d = α·A + β·B. Both non-zero: d lies in one of the four open cones between ±A and ±B.
+struct Cone {
+  int alpha = 0, beta = 0;
+  bool open() const { return alpha != 0 && beta != 0; }
+  friend bool operator==(const Cone&, const Cone&) = default;
+};
+
+Cone coneOf(Point d, Point a, Point b) {
+  const int det = signOf(cross(a, b));
+  return {signOf(cross(d, b)) * det, signOf(cross(a, d)) * det};
+}
+
+// The parallelogram spanned by A and B swept along chords[first] … chords[last], every chord's
+// direction in the open cone c: along such a run no side's extreme corner changes, so the union of
+// the chords' hulls is the chain moved by one side corner, the parallelogram at the run's end, the
+// chain moved back by the other side corner and the parallelogram at its start — a simple polygon
+// (in the frame of A and B the chain is monotone in both coordinates and the two sides are graphs
+// over it), with no boolean.
+BgRegion parallelogramAlongRun(const std::vector<Point>& chords, std::size_t first, std::size_t last, Point a, Point b,
+                               Cone c) {
+  const auto corner = [&](int i, int j) { return static_cast<double>(i) * a + static_cast<double>(j) * b; };
+  const int i0 = c.alpha < 0 ? 1 : 0, j0 = c.beta < 0 ? 1 : 0;  // the corner that leads backwards
+  const Point start = corner(i0, j0), end = corner(1 - i0, 1 - j0);
+  const Point side = corner(1 - i0, j0), otherSide = corner(i0, 1 - j0);
+  std::vector<Point> outline;
+  outline.reserve(2 * (last - first + 1) + 2);
+  outline.push_back(chords[first] + start);
+  for (std::size_t k = first; k <= last; ++k) outline.push_back(chords[k] + side);
+  outline.push_back(chords[last] + end);
+  for (std::size_t k = last + 1; k-- > first;) outline.push_back(chords[k] + otherSide);
+  return regionFromSimpleOutline(outline);
+}
+
+// The convex shape swept along the chain of chords: the union of its hulls along each chord.
+BgRegion sweptAlongChords(const std::vector<Point>& chords, const std::vector<Point>& shape) {
+  BgRegion swept;
+  for (std::size_t k = 0; k + 1 < chords.size(); ++k) uniteWith(swept, hullAlongChord(chords[k], chords[k + 1], shape));
   tidy(swept);
   return swept;
 }
 
+}  // namespace
+
+BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
+  return sweptAlongChords(flatten(move, chordTolerance), shape);
+}
+
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
-  return sweptConvexShape(move, {{0, 0}, a * da, a * da + b * db, b * db}, chordTolerance);
+  const Point sideA = a * da, sideB = b * db;
+  const std::vector<Point> shape{{0, 0}, sideA, sideA + sideB, sideB};
+  const std::vector<Point> chords = flatten(move, chordTolerance);
+  // One chord (a line): its hull, no union to spare. A segment (a or b zero) has no open cones.
+  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, shape);
+  // An arc's chords: each run in one open cone swept at once; a chord along a side, by its hull.
+  BgRegion swept;
+  for (std::size_t k = 0; k + 1 < chords.size();) {
+    const Cone c = coneOf(chords[k + 1] - chords[k], sideA, sideB);
+    std::size_t last = k + 1;
+    if (!c.open()) {
+      uniteWith(swept, hullAlongChord(chords[k], chords[last], shape));
+    } else {
+      while (last + 1 < chords.size() && coneOf(chords[last + 1] - chords[last], sideA, sideB) == c) ++last;
+      uniteWith(swept, parallelogramAlongRun(chords, k, last, sideA, sideB, c));
+    }
+    k = last;
+  }
+  tidy(swept);
+  return swept;
 }
 
 namespace {
@@ -104,17 +176,8 @@ double thickestRing(const BgRegion& region) {
   return thickest;
 }
 
-ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
-                          double epsilon, double chordTolerance) {
+ToolCrossing sweptCrossing(const BgRegion& region, const BgRegion& swept, double epsilon) {
   ToolCrossing out;
-  if (region.empty()) return out;
-  if (tool.isPoint()) {
-    const Crossing c = crossingOf(region, move, epsilon, chordTolerance);
-    out.amount = out.thickness = c.length;
-    out.pieces = c.pieces;
-    return out;
-  }
-  const BgRegion swept = sweptRegion(move, blade.across, tool.width, blade.back, blade.length, chordTolerance);
   BgRegion crossed = consistentIntersection(swept, region);
   BgRegion thick;
   for (BgPolygon& p : crossed) {
@@ -126,6 +189,20 @@ ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const Too
   out.thickness = thickestRing(thick);
   out.crossed = std::move(thick);
   return out;
+}
+
+ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
+                          double epsilon, double chordTolerance) {
+  ToolCrossing out;
+  if (region.empty()) return out;
+  if (tool.isPoint()) {
+    const Crossing c = crossingOf(region, move, epsilon, chordTolerance);
+    out.amount = out.thickness = c.length;
+    out.pieces = c.pieces;
+    return out;
+  }
+  return sweptCrossing(region, sweptRegion(move, blade.across, tool.width, blade.back, blade.length, chordTolerance),
+                       epsilon);
 }
 
 }  // namespace cyclecert

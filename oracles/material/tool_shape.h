@@ -36,7 +36,9 @@ BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, 
 // The Minkowski sum of `move` (arcs as chords within chordTolerance) and the parallelogram spanned
 // from the origin by a·da and b·db: the union of the convex hulls of the parallelogram at each
 // chord's two ends. With a blade frame (a = width along `across`, b = length along `back`) it is the
-// region the blade sweeps; with b = 0 it is a point's shadow of length a along da.
+// region the blade sweeps; with b = 0 it is a point's shadow of length a along da. Along an arc,
+// each run of chords whose directions lie in one open cone between ±da and ±db is that union built
+// directly (its outline is the chain moved by the two side corners), without a boolean per chord.
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance);
 
 // a ∩ b (checkedIntersection, region.h), checked against both operands. Boost's overlay can take a
@@ -56,9 +58,13 @@ struct ToolCrossing {
   bool any() const { return amount > 0; }
 };
 
-// A point: crossingOf (material_model.h) with epsilon. A blade: the swept region ∩ region, counted
-// where a ring of it is thicker (2·area/perimeter, about the depth it goes in for a long thin
-// sliver) than epsilon.
+// How far a tool whose move sweeps `swept` enters `region`: swept ∩ region, counted where a ring of
+// it is thicker (2·area/perimeter, about the depth it goes in for a long thin sliver) than epsilon;
+// amount its area.
+ToolCrossing sweptCrossing(const BgRegion& region, const BgRegion& swept, double epsilon);
+
+// A point: crossingOf (material_model.h) with epsilon. A blade: sweptCrossing of the region the
+// blade sweeps (sweptRegion with the blade's frame).
 ToolCrossing toolCrossing(const BgRegion& region, const Segment& move, const ToolShape& tool, const BladeFrame& blade,
                           double epsilon, double chordTolerance);
 
