@@ -178,6 +178,8 @@ void fitTheWork(G74_1FuzzCase& g) {
   }
 }
 
+constexpr double kDegree = 3.14159265358979323846 / 180;
+
 // S and the tool's place before the cycle: every radius at least 1 mm (x = X/2 + sd·u over the
 // groove's u, from the mouth corner r1 behind S to the far end of the mouth), the tool on the air
 // side of the start level over the mouth (docs/g74_1.md I7: the start level is in air over the
@@ -194,7 +196,13 @@ void placeTheGroove(G74_1FuzzCase& g, const Placing& place, int noseRadius) {
   const int margin = 3 * noseRadius;
   const int across = std::clamp(std::min(place.along, farEnd * 9 / 10), margin, std::max(margin, farEnd * 9 / 10 - margin));
   g.beforeX = 2 * (radius + sd * across);
-  g.beforeZ = place.z - sh * (place.clear + margin);
+  // A grooving tool's blade reaches up to its width beyond that point across the mouth, which rises
+  // behind S at ∠p: the tool stands that much further on the air side, or its blade would stand in
+  // the part before the cycle (no-gouge on move 0, fuzz seeds 5 and 8 × 20,000).
+  const int bladeRise = g.toolWidth > 0 && g.slope > 0
+                            ? static_cast<int>(std::ceil((across + g.toolWidth) * std::tan(g.slope * kDegree)))
+                            : 0;
+  g.beforeZ = place.z - sh * (place.clear + margin + bladeRise);
 }
 
 constexpr G74_1Fault kFaults[] = {
@@ -211,7 +219,6 @@ constexpr int kFaultCount = static_cast<int>(sizeof kFaults / sizeof kFaults[0])
 // raised by Δw and so widened along sloping flanks by Δw·(cot ∠a + cot ∠b) (less Δu, which moves
 // the flanks in). A blade wider than both does not fit whichever the cycle cuts (I12, I24).
 int widestFloor(const G74_1FuzzCase& g) {
-  constexpr double kDegree = 3.14159265358979323846 / 180;
   const auto cot = [&](int degrees) { return degrees == 90 ? 0.0 : 1 / std::tan(degrees * kDegree); };
   const double widening = std::abs(g.allowanceZ) * (cot(g.angleA) + cot(g.angleB));
   return std::abs(g.width) / 2 + static_cast<int>(std::ceil(widening));
