@@ -542,16 +542,18 @@ TEST(MetamorphicRelations, OneBlockFormatsCatchAnEngineThatMisreadsThem) {
   }
 }
 
+// A line in feed at F0.2 to `to`.
+Move feed(Point to) {
+  Move m;
+  m.kind = MoveKind::Feed;
+  m.to = to;
+  m.feed = 0.2;
+  return m;
+}
+
 TEST(MetamorphicRelations, MergeContinuationsJoinsOnlyWhatContinues) {
   Toolpath t;
   t.start = {0, 10};
-  const auto feed = [](Point to) {
-    Move m;
-    m.kind = MoveKind::Feed;
-    m.to = to;
-    m.feed = 0.2;
-    return m;
-  };
   t.moves = {feed({-1, 10}), feed({-3, 10}), feed({-2, 10}), feed({-2, 12}), feed({-2, 12 + kTol / 2})};
   Move arc1 = feed({0, 14}), arc2 = feed({2, 12});
   arc1.shape = arc2.shape = SegmentKind::ArcCW;
@@ -577,13 +579,6 @@ TEST(MetamorphicRelations, MergeContinuationsJoinsOnlyWhatContinues) {
 // run keeps it in both (the farthest point first), and the split point goes.
 TEST(MetamorphicRelations, MergeContinuationsKeepsTheSameCornersWhenALineIsSplit) {
   constexpr double kTight = 1e-4;
-  const auto feed = [](Point to) {
-    Move m;
-    m.kind = MoveKind::Feed;
-    m.to = to;
-    m.feed = 0.2;
-    return m;
-  };
   Toolpath whole, split;
   whole.start = split.start = {0, 0};
   whole.moves = {feed({-0.3, 0.29}), feed({-1.18, 1.14})};

@@ -26,25 +26,32 @@ std::vector<Finding> judgeProgramPath(const Toolpath& path) {
   return judge(judgeInputFor(request, path));
 }
 
-// The reference's own plan of kProgram, with `arcs` full circles of `radius` mm inserted as feeds
-// after its first move (the circle starts and ends where that move ends, its centre `radius` above).
-Toolpath planWithCircles(int arcs, double radius) {
+// A feed of pass 1 to `to` at `feed`.
+Move passFeed(Point to, double feed) {
+  Move m;
+  m.kind = MoveKind::Feed;
+  m.to = to;
+  m.feed = feed;
+  m.phase = MovePhase::Pass;
+  m.pass = 1;
+  return m;
+}
+
+// The reference's own plan of kProgram with `extra` inserted after its first move.
+Toolpath planWith(const std::vector<Move>& extra) {
   Toolpath path = planFanucProgram(kProgram);
-  const Point at = path.moves.front().to;
-  std::vector<Move> circles;
-  for (int i = 0; i < arcs; ++i) {
-    Move m;
-    m.kind = MoveKind::Feed;
-    m.shape = SegmentKind::ArcCW;
-    m.to = at;
-    m.center = Point{at.z, at.x + radius};
-    m.feed = 0.2;
-    m.phase = MovePhase::Pass;
-    m.pass = 1;
-    circles.push_back(m);
-  }
-  path.moves.insert(path.moves.begin() + 1, circles.begin(), circles.end());
+  path.moves.insert(path.moves.begin() + 1, extra.begin(), extra.end());
   return path;
+}
+
+// … with `arcs` full circles of `radius` mm as feeds at F0.2 (each starts and ends where the first
+// move ends, its centre `radius` above).
+Toolpath planWithCircles(int arcs, double radius) {
+  const Point at = planFanucProgram(kProgram).moves.front().to;
+  Move circle = passFeed(at, 0.2);
+  circle.shape = SegmentKind::ArcCW;
+  circle.center = Point{at.z, at.x + radius};
+  return planWith(std::vector<Move>(static_cast<std::size_t>(arcs), circle));
 }
 
 TEST(JudgeBounds, TheReferencesPlanIsJudgedWithoutTheMeasurableFinding) {
@@ -81,20 +88,10 @@ TEST(JudgeBounds, ArcsTakingTooManyChordsInAllAreOneFindingAtTheMoveThatCrossesT
 TEST(JudgeBounds, AnOracleListsAtMostAHundredFindingsAndSaysHowManyMore) {
   // 150 feeds at F0.3 while the cycle's F is 0.2: the feeds oracle finds each one (G71.FST); the
   // list keeps 100, the 100th saying "and 50 more".
-  Toolpath path = planFanucProgram(kProgram);
-  const Point at = path.moves.front().to;
+  const Point at = planFanucProgram(kProgram).moves.front().to;
   std::vector<Move> feeds;
-  for (int i = 0; i < 150; ++i) {
-    Move m;
-    m.kind = MoveKind::Feed;
-    m.to = Point{at.z, at.x + (i % 2 ? 0.0 : 0.01)};  // up and down in air above the start
-    m.feed = 0.3;
-    m.phase = MovePhase::Pass;
-    m.pass = 1;
-    feeds.push_back(m);
-  }
-  if (feeds.size() % 2 == 1) feeds.pop_back();
-  path.moves.insert(path.moves.begin() + 1, feeds.begin(), feeds.end());
+  for (int i = 0; i < 150; ++i) feeds.push_back(passFeed({at.z, at.x + (i % 2 ? 0.0 : 0.01)}, 0.3));  // up and down in air
+  const Toolpath path = planWith(feeds);
   std::size_t ofFeeds = 0;
   std::string last;
   for (const Finding& f : judgeProgramPath(path)) {
