@@ -8,6 +8,7 @@
 
 #include "harness/engines/reference_plan.h"
 #include "reference/model/alarms.h"
+#include "reference/model/program.h"
 
 namespace cyclecert {
 namespace {
@@ -66,6 +67,38 @@ TEST(SiemensParameterRanges, AFinishingCallNeedsNoRoughingFeed) {
       EXPECT_DOUBLE_EQ(m.feed.value_or(0), 0.1);
     }
   }
+}
+
+// SIEMENS.LEX (interpretation): a value word, an R value and a cycle argument beyond the bound is
+// refused where it is written — file, line, column, the bound. Before, X99999999999 was planned.
+struct Refused {
+  std::string block;
+  int column;
+  std::string expected;
+};
+
+TEST(SiemensParameterRanges, ValuesBeyondTheBoundAreRefusedWhereTheyAreWritten) {
+  const Refused cases[] = {
+      {"G1 X99999999999 Z-5 F0.2", 5, "a value of X within -999999.999…999999.999"},
+      {"G1 X20 Z-5 F0.2 CR=1234567", 20, "a value of CR= within -999999.999…999999.999"},
+      {"R105=123456789", 6, "a value of R105 within -99999999…99999999"},
+      {"CYCLE95(\"L1\", 9999999, 0, 0, 0, 0.3, 0.15, 0.1, 1, 0, 0, 1)", 15,
+       "argument 2 of CYCLE95 within -999999.999…999999.999"},
+  };
+  for (const Refused& c : cases) {
+    PlanRequest request{"G0 X50 Z2\n" + c.block + "\nM02\n", "big.mpf", "sinumerik-802d", {}, {}};
+    try {
+      planWithReference(request);
+      ADD_FAILURE() << c.block << ": planned";
+    } catch (const ParseError& e) {
+      EXPECT_EQ(e.loc().line, 2) << c.block;
+      EXPECT_EQ(e.loc().column, c.column) << c.block;
+      EXPECT_EQ(e.expected(), c.expected) << c.block;
+    }
+  }
+  // The bound itself is read.
+  PlanRequest edge{"G0 X50 Z2\nG1 X999999.999 Z-5 F0.2\nM02\n", "edge.mpf", "sinumerik-802d", {}, {}};
+  EXPECT_NO_THROW(planWithReference(edge));
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "reference/siemens/siemens_parser.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -17,6 +20,13 @@ namespace {
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 constexpr double kLargestSequenceNumber = 9999;  // 802S/D: N0…N9999 (interpretation, SIEMENS.LEX)
 constexpr const char* kAddressesWithNumbers = "G X Z I K F S T D M N L";
+// SIEMENS.LEX (interpretation, issue 19): the values cyclecert reads — positions, centres, radii,
+// corner sizes, feeds and cycle arguments — lie within ±999,999.999 (mm or mm/rev; the same bound
+// as the FANUC profiles' IS-B words), an R parameter's value within ±99,999,999 (the 802's eight
+// digits); a larger number is refused where it is written rather than planned.
+constexpr double kLargestValue = 999'999.999;
+constexpr double kLargestRValue = 99'999'999;
+constexpr std::string_view kValueAddresses[] = {"X", "Z", "I", "K", "F", "CR", "CHF", "CHR", "RND"};
 constexpr const char* kEverythingAccepted =
     "an address (G X Z I K F S T D M N L), R<n>=, CR=, CHF=, CHR=, RND=, _CNAME=, a cycle (LCYC95, CYCLE95(…)), "
     "RET, DIAMON, DIAMOF or a ';' comment";
@@ -135,10 +145,26 @@ class BlockParser {
       fail(current_, "a number right after address " + address + " (" + address + "=… is not in the 802's language)");
     }
     const SiemensToken number = expect(SiemensTokenKind::Number, "a number after address " + address);
+    if (isValueAddress(address)) requireWithin(number, kLargestValue, "a value of " + address);
     SiemensWord word = wordFrom(name, address, number, "");
     if (address == "N") return sequence(number, word);
     if (address == "L") return subprogramCall(number, std::move(word));
     keepWord(name, std::move(word));
+  }
+
+  // A number outside ±largest, refused at its token naming the bound and what it is for.
+  void requireWithin(const SiemensToken& number, double largest, const std::string& what) const {
+    if (std::abs(number.number) <= largest) return;
+    char bound[32];
+    std::snprintf(bound, sizeof bound, "%.3f", largest);
+    std::string text = bound;
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+    fail(number, what + " within -" + text + "…" + text);
+  }
+
+  static bool isValueAddress(const std::string& address) {
+    return std::find(std::begin(kValueAddresses), std::end(kValueAddresses), address) != std::end(kValueAddresses);
   }
 
   // One word of an address per block (G and M may repeat: codes of different groups); a second
@@ -181,12 +207,14 @@ class BlockParser {
     expect(SiemensTokenKind::Equals, "'=' after R" + std::string(number.text) + " (R" + std::string(number.text) + "=value)");
     const SiemensToken value = expect(SiemensTokenKind::Number, "a number after R" + std::string(number.text) +
                                                                    "= (expressions and other parameters are not read)");
+    requireWithin(value, kLargestRValue, "a value of R" + std::string(number.text));
     block_.rAssignments.push_back({static_cast<int>(number.number), value.number, lexer_.lineNumber(), name.column});
   }
 
   void namedValue(const SiemensToken& name, const std::string& address) {
     const SiemensToken equals = expect(SiemensTokenKind::Equals, "'=' after " + address + " (" + address + "=value)");
     const SiemensToken number = expect(SiemensTokenKind::Number, "a number after " + address + "=");
+    requireWithin(number, kLargestValue, "a value of " + address + "=");
     keepWord(name, wordFrom(name, address, number, equals.text));
   }
 
@@ -218,6 +246,7 @@ class BlockParser {
       arg.line = lexer_.lineNumber();
       arg.column = current_.column;
       if (current_.kind == SiemensTokenKind::Number) {
+        requireWithin(current_, kLargestValue, "argument " + std::to_string(call.arguments.size() + 1) + " of " + call.name);
         arg.number = advance().number;
       } else if (current_.kind == SiemensTokenKind::String) {
         arg.text = std::string(advance().stringBody());
