@@ -3,6 +3,7 @@
 // minutes-long judgement, a silent pass or a line no reader takes.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,6 +55,16 @@ Toolpath planWithCircles(int arcs, double radius) {
   return planWith(std::vector<Move>(static_cast<std::size_t>(arcs), circle));
 }
 
+// The findings are the one `measurable` finding (PROG.CAP) at `move`, saying `says` and that the
+// path is not judged.
+void expectOneMeasurableFinding(const std::vector<Finding>& findings, std::size_t move, const std::string& says) {
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].oracle, "measurable");
+  EXPECT_EQ(findings[0].move, std::optional<std::size_t>(move));
+  EXPECT_NE(findings[0].message.find(says), std::string::npos) << findings[0].message;
+  EXPECT_NE(findings[0].message.find("not judged"), std::string::npos) << findings[0].message;
+}
+
 TEST(JudgeBounds, TheReferencesPlanIsJudgedWithoutTheMeasurableFinding) {
   // The control for the cases below: the same program, its own plan, no finding at all.
   EXPECT_TRUE(judgeProgramPath(planFanucProgram(kProgram)).empty());
@@ -64,25 +75,14 @@ TEST(JudgeBounds, AnArcTooLargeToMeasureIsOneFindingNamingItsMove) {
   // 4·asin(√(1e-6 / 1,998,000)) ≈ 2.83e-6 rad, so the circle takes ≈ 2.2 million chords, more than
   // the 1,000,000 an arc may take. Before the bound the oracles threw, and `check` counted the
   // case as passed with a note in its detail.
-  const std::vector<Finding> findings = judgeProgramPath(planWithCircles(1, 999'000));
-  ASSERT_EQ(findings.size(), 1u);
-  EXPECT_EQ(findings[0].oracle, "measurable");
-  ASSERT_TRUE(findings[0].move.has_value());
-  EXPECT_EQ(*findings[0].move, 1u);
-  EXPECT_NE(findings[0].message.find("radius 999000"), std::string::npos) << findings[0].message;
-  EXPECT_NE(findings[0].message.find("not judged"), std::string::npos) << findings[0].message;
+  expectOneMeasurableFinding(judgeProgramPath(planWithCircles(1, 999'000)), 1, "radius 999000");
 }
 
 TEST(JudgeBounds, ArcsTakingTooManyChordsInAllAreOneFindingAtTheMoveThatCrossesTheBudget) {
   // Full circles of radius 100,000 mm: ≈ 2π / (4·asin(√(1e-6 / 200,000))) ≈ 702,500 chords each,
   // within the per-arc bound; 10,000,000 in all are passed during the 15th (14 × 702,500 =
   // 9,835,000), which is move 15 (the circles are moves 1 to 20). Measuring them took seconds each.
-  const std::vector<Finding> findings = judgeProgramPath(planWithCircles(20, 100'000));
-  ASSERT_EQ(findings.size(), 1u);
-  EXPECT_EQ(findings[0].oracle, "measurable");
-  ASSERT_TRUE(findings[0].move.has_value());
-  EXPECT_EQ(*findings[0].move, 15u);
-  EXPECT_NE(findings[0].message.find("10,000,000"), std::string::npos) << findings[0].message;
+  expectOneMeasurableFinding(judgeProgramPath(planWithCircles(20, 100'000)), 15, "10,000,000");
 }
 
 TEST(JudgeBounds, AnOracleListsAtMostAHundredFindingsAndSaysHowManyMore) {
