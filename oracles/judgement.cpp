@@ -8,6 +8,7 @@
 #include "oracles/material/region.h"
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
+#include "reference/gcode/program_limits.h"
 
 namespace cyclecert {
 
@@ -17,12 +18,6 @@ const std::vector<std::unique_ptr<Oracle>>& allOracles() {
 }
 
 namespace {
-
-std::string withThousands(double count) {
-  std::string digits = std::to_string(static_cast<long long>(count));
-  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<std::size_t>(i), ",");
-  return digits;
-}
 
 Finding unmeasurable(std::optional<std::size_t> move, std::string message) {
   return Finding{kMeasurableOracle, {"PROG.CAP"}, move, std::move(message) + "; the path is not judged", {}};
@@ -42,14 +37,14 @@ std::optional<Finding> pathTooLargeToMeasure(const Toolpath& path, const JudgeSe
     total += chords;
     if (chords > kMostChordsPerArc) {
       return unmeasurable(i, "an arc of radius " + std::to_string(arc.radius()) + " mm would take " +
-                                 withThousands(chords) + " chords of " + std::to_string(finest) +
+                                 countText(chords) + " chords of " + std::to_string(finest) +
                                  " mm to measure; the oracles measure arcs of at most " +
-                                 withThousands(kMostChordsPerArc) + " chords");
+                                 countText(kMostChordsPerArc) + " chords");
     }
     if (total > kMostChordsPerPath) {
-      return unmeasurable(i, "the path's arcs up to this move would take " + withThousands(total) + " chords of " +
+      return unmeasurable(i, "the path's arcs up to this move would take " + countText(total) + " chords of " +
                                  std::to_string(finest) + " mm to measure; the oracles measure at most " +
-                                 withThousands(kMostChordsPerPath) + " in a path");
+                                 countText(kMostChordsPerPath) + " in a path");
     }
   }
   return std::nullopt;
@@ -66,7 +61,7 @@ void boundFindingsPerOracle(std::vector<Finding>& findings) {
     const std::size_t k = ++kept[f.oracle];
     if (k > kMostFindingsPerOracle) continue;
     if (k == kMostFindingsPerOracle && count[f.oracle] > k) {
-      f.message += " (and " + withThousands(static_cast<double>(count[f.oracle] - k)) + " more " + f.oracle +
+      f.message += " (and " + groupedCount(count[f.oracle] - k) + " more " + f.oracle +
                    " findings, not listed: cyclecert lists " + std::to_string(kMostFindingsPerOracle) +
                    " per oracle)";
     }

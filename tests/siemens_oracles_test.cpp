@@ -519,6 +519,11 @@ Toolpath referencePath(const std::string& program, const std::string& profile, c
   return planWithReference(request);
 }
 
+// Every oracle's findings on the reference's path of the program.
+std::vector<Finding> referenceFindings(const std::string& program, const std::string& profile, const std::string& contour) {
+  return judged(program, profile, referencePath(program, profile, contour), contour);
+}
+
 // A pocket narrower than _VRT (issue 16, fuzz seed 7566792160692496541): L1 (radius) rounds from
 // (0, 2.01) to (−0.5, 2.51), falls down the wall at z −0.5 to 1, runs to −1.5 and rises to 2.51;
 // _VRT 1.01 is wider than the pocket (1). The last pocket pass ends on the rising wall at the level
@@ -566,7 +571,7 @@ TEST(SiemensOracles, ARoundingClosingAPocketAtItsTopIsThePockets) {
   const std::string contour =
       "G1X7.3Z-1\nG1X7.3Z-1.53\nG1X5.18Z-1.53\nG1X5.18Z-1\nG1X4.42Z-0.62\nG1X3.66Z-0.24\nG1X2.58Z-0.45\n"
       "G2X1.68Z0CR=0.9\nG1X0.74Z0\nRET\n";
-  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  const std::vector<Finding> all = referenceFindings(program, "sinumerik-802d", contour);
   EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
 }
 
@@ -581,7 +586,7 @@ TEST(SiemensOracles, AFlatInsideAPocketJustBelowItsTopIsThePockets) {
   const std::string contour =
       "G1X20.56Z-7.25\nG1X20.56Z-6.22\nG1X17.18Z-4.53\nG2X12.08Z-1.98CR=5.1\nG1X12.08Z-2.71\nG1X9.16Z-2.71\n"
       "G1X9.16Z-1.98\nG1X9.16Z-2.78\nG1X5.32Z-2.78\nG1X5.32Z-1.98\nG1X4.42Z-1.53\nG1X1.36Z0\nRET\n";
-  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  const std::vector<Finding> all = referenceFindings(program, "sinumerik-802d", contour);
   EXPECT_TRUE(of(all, "siemens-feeds").empty()) << findingsText(all);
 }
 
@@ -593,7 +598,7 @@ TEST(SiemensOracles, ARetractEndingAtTheStartNeedsNoReturn) {
   const std::string program =
       "T1 D1\nG0 X3.4 Z0.6\n_CNAME=\"L1\"\nR105=1 R106=0 R108=0.5 R109=0\nR110=0.1 R111=0.1 R112=0.05\nLCYC95\nM02\n";
   const std::string contour = "G1X2Z0\nG1X2.2Z0\nG1X2.2Z-0.1\nRET\n";
-  const std::vector<Finding> all = judged(program, "sinumerik-802s", referencePath(program, "sinumerik-802s", contour), contour);
+  const std::vector<Finding> all = referenceFindings(program, "sinumerik-802s", contour);
   EXPECT_TRUE(of(all, "siemens-returns").empty()) << findingsText(all);
 }
 
@@ -606,7 +611,7 @@ TEST(SiemensOracles, TheMoveAcrossTheAllowanceAtTheFaceIsNoLevelsCut) {
   const std::string program =
       "T1 D1\nG0 X5.28 Z1.32\nCYCLE95(\"L1\", 1.61, 0, 0, 0.01, 0.26, 0.26, 0.09, 1, 0, 0, 0.35)\nM02\n";
   const std::string contour = "G1X2.64Z0\nG1X2Z-0.1\nG3X2.64Z-0.42CR=0.64\nRET\n";
-  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  const std::vector<Finding> all = referenceFindings(program, "sinumerik-802d", contour);
   EXPECT_TRUE(of(all, "siemens-infeed-steps").empty()) << findingsText(all);
 }
 
@@ -619,7 +624,7 @@ TEST(SiemensOracles, TheDocumentedFinishingReturnIsNoRapidThroughMaterial) {
   const std::string program =
       "T1 D1\nG0 X3.74 Z0.61\nCYCLE95(\"L1\", 0.5, 0, 0, 0.01, 0.1, 0.1, 0.05, 5, 0, 0, 0.1)\nM02\n";
   const std::string contour = "G1X2Z0\nG1X2.52Z0\nG1X2Z-0.26\nRET\n";
-  const std::vector<Finding> all = judged(program, "sinumerik-802d", referencePath(program, "sinumerik-802d", contour), contour);
+  const std::vector<Finding> all = referenceFindings(program, "sinumerik-802d", contour);
   EXPECT_TRUE(of(all, "rapids-in-air").empty()) << findingsText(all);
 }
 
