@@ -11,11 +11,6 @@ namespace cyclecert {
 
 namespace {
 
-// The names the alarms give the parameters of each cycle.
-struct CycleParameterNames {
-  std::string_view depth, roughingFeed, finishingFeed;
-};
-
 SiemensCycleSpec callSpec(CycleFamily family, const SiemensCycleCall& call, const MachiningType& type) {
   SiemensCycleSpec c;
   c.family = family;
@@ -63,7 +58,7 @@ SiemensCycleSpec cycle95Spec(const SiemensCycleCall& call, const Cycle95Paramete
 // (10931: empty, an arc over a quarter circle, against the finishing direction), then the allowance
 // and the nose radius (10931, from the oracles' own profile); FF2 where CYCLE95 roughs one of the
 // undercuts of that profile (10860).
-void checkAndDescribe(SiemensCycleSpec& c, const SiemensCycleCall& call, const CycleParameterNames& names) {
+void checkAndDescribe(SiemensCycleSpec& c, const SiemensCycleCall& call, const StockRemovalParameterNames& names) {
   requireInfeedDepth(c.maxInfeed, c.type, names.depth, c.line);
   requireFeedsInUse(c.type, {c.roughingFeed, names.roughingFeed}, {c.finishingFeed, names.finishingFeed}, c.line);
   requirePlannableInfeedAngle(c.infeedAngle, c.line);
@@ -76,7 +71,7 @@ void checkAndDescribe(SiemensCycleSpec& c, const SiemensCycleCall& call, const C
 // The call read: no moves, and the tool left at the computed start, where the cycle ends
 // (LCYC95.FINISH, LCYC95.ROUGH: the last move returns there).
 SiemensCycleOutcome recorded(ProgramSpec& spec, SiemensCycleSpec c, const SiemensCycleCall& call,
-                             const CycleParameterNames& names) {
+                             const StockRemovalParameterNames& names) {
   spec.siemensCycles.push_back(std::move(c));
   SiemensCycleSpec& kept = spec.siemensCycles.back();
   checkAndDescribe(kept, call, names);
@@ -116,10 +111,10 @@ ProgramSpec readSiemensProgramSpec(const PlanRequest& request, const Profile& pr
   spec.siemensFamily = is802S ? CycleFamily::Lcyc95 : CycleFamily::Cycle95;
   SiemensPlanners planners;
   planners.lcyc95 = [&spec](const SiemensCycleCall& call, const Lcyc95Parameters& p) {
-    return recorded(spec, lcyc95Spec(call, p), call, {"R108", "R111", "R112"});
+    return recorded(spec, lcyc95Spec(call, p), call, kLcyc95ParameterNames);
   };
   planners.cycle95 = [&spec](const SiemensCycleCall& call, const Cycle95Parameters& p) {
-    return recorded(spec, cycle95Spec(call, p), call, {"MID", "FF1", "FF3"});
+    return recorded(spec, cycle95Spec(call, p), call, kCycle95ParameterNames);
   };
   const Toolpath run = planSiemensProgram(siemensRunInputFor(request), profile, planners);
   spec.siemensAlarm = run.alarm;

@@ -11,9 +11,7 @@ StockRemovalSettings cycle95Settings(const Cycle95Parameters& p) {
   s.allowance = {p.allowance, p.allowanceZ, p.allowanceX};
   s.clearance = p.retract;
   s.maxInfeed = p.infeed;
-  s.infeedParameter = "MID";
-  s.roughingFeedParameter = "FF1";
-  s.finishingFeedParameter = "FF3";
+  s.names = kCycle95ParameterNames;
   s.infeedAngle = 0;
   s.infeedKind = MoveKind::Rapid;  // CYCLE95.ROUGH: "the infeed to the current depth ... with G0"
   s.roughingFeed = p.roughingFeed;

@@ -24,7 +24,7 @@ StockRemovalSettings lcyc95Settings(const Lcyc95Parameters& p) {
   s.allowance.alongContour = p.allowance;
   s.clearance = p.retract;
   s.maxInfeed = p.maxInfeed;
-  s.infeedParameter = "R108";
+  s.names = kLcyc95ParameterNames;
   s.infeedAngle = p.infeedAngle;
   s.infeedKind = MoveKind::Feed;  // "depth infeed at R109" (interpretation: at R111)
   s.roughingFeed = p.roughingFeed;

@@ -28,6 +28,14 @@ inline constexpr std::string_view kNoFeedrate = "10860";    // a cutting feed th
 // R108 / MID must be positive when the type roughs (roughing or complete): else alarm 61610.
 void requireInfeedDepth(double depth, const MachiningType& type, std::string_view parameter, int line);
 
+// The names each cycle gives its infeed depth and its feeds, for the alarms (the planner and the
+// oracles' reading use the same).
+struct StockRemovalParameterNames {
+  std::string_view depth, roughingFeed, finishingFeed;
+};
+inline constexpr StockRemovalParameterNames kLcyc95ParameterNames{"R108", "R111", "R112"};
+inline constexpr StockRemovalParameterNames kCycle95ParameterNames{"MID", "FF1", "FF3"};
+
 // A cycle parameter's value and its name in the call (R111, FF1, …), for the alarms.
 struct NamedParameter {
   double value = 0;

@@ -97,10 +97,10 @@ std::vector<Warning> undercutsLeftToFinishing(const std::vector<Segment>& profil
 }  // namespace
 
 SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const StockRemovalSettings& settings) {
-  requireInfeedDepth(settings.maxInfeed, settings.type, settings.infeedParameter, call.line);
+  requireInfeedDepth(settings.maxInfeed, settings.type, settings.names.depth, call.line);
   requirePlannableValues(call, settings);
-  requireFeedsInUse(settings.type, {settings.roughingFeed, settings.roughingFeedParameter},
-                    {settings.finishingFeed, settings.finishingFeedParameter}, call.line);
+  requireFeedsInUse(settings.type, {settings.roughingFeed, settings.names.roughingFeed},
+                    {settings.finishingFeed, settings.names.finishingFeed}, call.line);
   requirePlannableInfeedAngle(settings.infeedAngle, call.line);
   const StockRemovalSettings s = withUnsignedSizes(settings);
   const SiemensContour& contour = requireContour(call);

@@ -17,9 +17,7 @@ struct StockRemovalSettings {
   FinishingAllowance allowance;
   double clearance = 0;       // R110 / _VRT, in each axis
   double maxInfeed = 0;       // R108 / MID
-  const char* infeedParameter = "R108";  // its name, for the alarm when roughing has none
-  const char* roughingFeedParameter = "R111";   // the feeds' names, for SIEMENS.FEED's alarm
-  const char* finishingFeedParameter = "R112";
+  StockRemovalParameterNames names = kLcyc95ParameterNames;  // R108 / MID, the feeds: for the alarms
   RoughingLevelsRule mainLevels = equalInfeedLevels;  // LCYC95.DEPTH
   double infeedAngle = 0;     // R109 (degrees from the infeed axis); CYCLE95: 0
   MoveKind infeedKind = MoveKind::Feed;
