@@ -159,6 +159,31 @@ TEST(BoundedLine, ALineOfExactlyTheBoundIsKept) {
   EXPECT_EQ(readBoundedLine(in, line, 10), BoundedLine::End);
 }
 
+TEST(BoundedLine, LinesLongerThanOneReadChunkAreJoinedOrSkippedWhole) {
+  // The reader takes 64 KiB at a time: a line of several chunks is one line, kept or skipped whole.
+  const std::string longLine(200000, 'a'), longer(300000, 'b');
+  std::istringstream in(longLine + "\n" + longer + "\nnext\n" + longLine);
+  std::string line;
+  EXPECT_EQ(readBoundedLine(in, line, 250000), BoundedLine::Line);
+  EXPECT_EQ(line, longLine);
+  EXPECT_EQ(readBoundedLine(in, line, 250000), BoundedLine::TooLong);
+  EXPECT_TRUE(line.empty());
+  EXPECT_EQ(readBoundedLine(in, line, 250000), BoundedLine::Line);
+  EXPECT_EQ(line, "next");
+  EXPECT_EQ(readBoundedLine(in, line, 250000), BoundedLine::Line);  // the last, without a newline
+  EXPECT_EQ(line, longLine);
+  EXPECT_EQ(readBoundedLine(in, line, 250000), BoundedLine::End);
+  // Lines ending at a chunk's edge: one character short of it, on it, one past it.
+  for (std::size_t n : {65535, 65536, 65537}) {
+    std::istringstream edge(std::string(n, 'c') + "\nx\n");
+    EXPECT_EQ(readBoundedLine(edge, line, 250000), BoundedLine::Line);
+    EXPECT_EQ(line.size(), n);
+    EXPECT_EQ(readBoundedLine(edge, line, 250000), BoundedLine::Line);
+    EXPECT_EQ(line, "x");
+    EXPECT_EQ(readBoundedLine(edge, line, 250000), BoundedLine::End);
+  }
+}
+
 TEST(NegativeSign, AMinusSignAfterFInACycleBlockIsPS0006NotFeedZero) {
   // PROG.SIGN: F-0.2 in the G71 block. Before, the cycle read the negative F as no feed and said
   // PS0011 FEED ZERO.
