@@ -9,13 +9,74 @@ namespace cyclecert {
 
 namespace bg = boost::geometry;
 
+namespace {
+
+// Boost's convex hull (graham_andrew, 1.74) step by step on buffers kept between calls, with its own
+// predicates (geometry::less and greater, side_by_triangle): the same hull, point for point, as
+// bg::convex_hull — the unions after it see the same rings — without its containers' allocations
+// per chord (a sweep takes one hull per chord).
+struct HullBuffers {
+  std::vector<BgPoint> lower, upper, lowerHull, upperHull;
+};
+
+using Side = bg::strategy::side::side_by_triangle<>;
+
+// Graham–Andrew's half hull from `left` through `points` (sorted) to `right`: a point turning
+// the wrong way (factor·side ≤ 0) drops the one before it.
+void buildHalfHull(int factor, const std::vector<BgPoint>& points, std::vector<BgPoint>& hull, const BgPoint& left,
+                   const BgPoint& right) {
+  hull.clear();
+  hull.push_back(left);
+  const auto add = [&](const BgPoint& p) {
+    hull.push_back(p);
+    while (hull.size() >= 3) {
+      const std::size_t n = hull.size();
+      if (factor * Side::apply(hull[n - 3], hull[n - 1], hull[n - 2]) > 0) return;
+      hull[n - 2] = hull[n - 1];
+      hull.pop_back();
+    }
+  };
+  for (const BgPoint& p : points) add(p);
+  add(right);
+}
+
+}  // namespace
+
 BgRegion convexHullOf(const std::vector<Point>& points) {
-  bg::model::multi_point<BgPoint> cloud;
-  for (Point p : points) cloud.push_back(toBg(p));
-  BgPolygon hull;
-  bg::convex_hull(cloud, hull);
+  thread_local HullBuffers b;
   BgRegion out;
-  if (bg::area(hull) != 0) out.push_back(hull);
+  if (points.empty()) return out;
+  // The extremes: the first least and the first greatest point (x, then y).
+  const bg::less<BgPoint> less;
+  const bg::greater<BgPoint> greater;
+  BgPoint left = toBg(points.front()), right = left;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const BgPoint p = toBg(points[k]);
+    if (less(p, left)) left = p;
+    if (greater(p, right)) right = p;
+  }
+  // The points left of the line left → right make the upper half, those right of it the lower;
+  // those on it are on no hull.
+  b.lower.clear();
+  b.upper.clear();
+  for (Point q : points) {
+    const BgPoint p = toBg(q);
+    const int side = Side::apply(left, right, p);
+    if (side == 1) b.upper.push_back(p);
+    if (side == -1) b.lower.push_back(p);
+  }
+  std::sort(b.lower.begin(), b.lower.end(), less);
+  std::sort(b.upper.begin(), b.upper.end(), less);
+  buildHalfHull(-1, b.lower, b.lowerHull, left, right);
+  buildHalfHull(1, b.upper, b.upperHull, left, right);
+  // Clockwise and closed: the upper half from left to right, then the lower back to left.
+  BgPolygon hull;
+  auto& ring = hull.outer();
+  ring.reserve(b.upperHull.size() + b.lowerHull.size());
+  ring.assign(b.upperHull.begin(), b.upperHull.end());
+  ring.insert(ring.end(), std::next(b.lowerHull.rbegin()), b.lowerHull.rend());
+  if (b.upperHull.size() + b.lowerHull.size() - 1 < 4) ring.push_back(ring.front());
+  if (bg::area(hull) != 0) out.push_back(std::move(hull));
   bg::correct(out);
   return out;
 }
