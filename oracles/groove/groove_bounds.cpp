@@ -56,6 +56,11 @@ std::optional<PartTop> PartTop::of(const GrooveOutline& target, const BandFrame&
   for (std::size_t k = 1; k < top.chain_.size(); ++k) {
     if (top.chain_[k].x < top.chain_[k - 1].x - kSlack) return std::nullopt;
   }
+  const std::size_t n = top.chain_.size();
+  top.maxUpTo_.resize(n);
+  top.minFrom_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) top.maxUpTo_[k] = std::max(k ? top.maxUpTo_[k - 1] : -kInf, top.chain_[k].x);
+  for (std::size_t k = n; k-- > 0;) top.minFrom_[k] = std::min(k + 1 < n ? top.minFrom_[k + 1] : kInf, top.chain_[k].x);
   return top;
 }
 
@@ -69,7 +74,8 @@ double PartTop::shallowestOver(double u0, double u1) const {
   // Ends within a nanometre of the span's are beside it (coordinates computed two ways).
   if (a < c0 - kSlack) top = std::min(top, band_.shallowestMouth(a, std::min(b, c0)));
   if (b > c1 + kSlack) top = std::min(top, band_.shallowestMouth(std::max(a, c1), b));
-  for (std::size_t k = 1; k < chain_.size(); ++k) {
+  const auto [first, end] = segmentsWithin(a, b);
+  for (std::size_t k = first; k < end; ++k) {
     const Point p = chain_[k - 1], q = chain_[k];
     const double lo = std::min(p.x, q.x), hi = std::max(p.x, q.x);
     if (hi <= a + kSlack || lo >= b - kSlack) continue;  // a wall at an end of the span stands beside it
@@ -93,11 +99,26 @@ bool PartTop::liesBelow(const std::vector<Point>& outline, double slack) const {
     const bool innerStart = k > 1 && a == p.x, innerEnd = k + 1 < outline.size() && b == q.x;
     if (!below(a, innerStart ? std::min(sideOf(a, -1), sideOf(a, +1)) : sideOf(a, +1))) return false;
     if (!below(b, innerEnd ? std::min(sideOf(b, -1), sideOf(b, +1)) : sideOf(b, -1))) return false;
-    for (Point c : chain_) {
+    // The chain's vertices strictly inside (a, b): none before the first whose running maximum
+    // passes a, none from the first whose running minimum onwards reaches b.
+    const std::size_t from = static_cast<std::size_t>(
+        std::upper_bound(maxUpTo_.begin(), maxUpTo_.end(), a) - maxUpTo_.begin());
+    const std::size_t to = static_cast<std::size_t>(
+        std::lower_bound(minFrom_.begin() + static_cast<long>(from), minFrom_.end(), b) - minFrom_.begin());
+    for (std::size_t j = from; j < to; ++j) {
+      const Point c = chain_[j];
       if (c.x > a && c.x < b && !below(c.x, std::min(sideOf(c.x, -1), sideOf(c.x, +1)))) return false;
     }
   }
   return outline.size() >= 2;
+}
+
+std::pair<std::size_t, std::size_t> PartTop::segmentsWithin(double lo, double hi) const {
+  // Segment k (chain_[k − 1] → chain_[k]) reaches no further along u than maxUpTo_[k] and starts
+  // no sooner than minFrom_[k − 1]; both are sorted.
+  const auto first = std::lower_bound(maxUpTo_.begin() + 1, maxUpTo_.end(), lo);
+  const auto end = std::upper_bound(minFrom_.begin() + (first - maxUpTo_.begin()) - 1, minFrom_.end() - 1, hi);
+  return {static_cast<std::size_t>(first - maxUpTo_.begin()), static_cast<std::size_t>(end - minFrom_.begin()) + 1};
 }
 
 double PartTop::sideOf(double u, int side) const {
@@ -108,7 +129,8 @@ double PartTop::sideOf(double u, int side) const {
   double top = kInf;
   if (left ? u <= c0 + kSlack : u < c0 - kSlack) top = band_.mouthAt(u);
   if (left ? u > c1 + kSlack : u >= c1 - kSlack) top = band_.mouthAt(u);
-  for (std::size_t k = 1; k < chain_.size(); ++k) {
+  const auto [first, end] = segmentsWithin(u - kSlack, u + kSlack);
+  for (std::size_t k = first; k < end; ++k) {
     const Point p = chain_[k - 1], q = chain_[k];
     const double lo = std::min(p.x, q.x), hi = std::max(p.x, q.x);
     if (hi - lo <= kSlack) continue;  // a wall: between the sides
@@ -204,7 +226,7 @@ std::vector<std::vector<Point>> ClearedStaircase::outlines(double top) const {
   return rings;
 }
 
-// Adds a piece after the last one, merged with it when both are one flat step (pecks side by side).
+// Adds a piece after the last one, merged with it when both are one flat step.
 void PiecewiseMax::append(std::vector<Piece>& out, Piece piece) {
   if (!(piece.x0 < piece.x1)) return;
   if (!out.empty()) {
@@ -221,12 +243,12 @@ void PiecewiseMax::raise(Point p, Point q) {
   const double a = p.x, b = q.x;
   if (!(a < b)) return;
   const Piece line{a, p.z, b, q.z};
-  std::vector<Piece>& out = scratch_;
-  out.clear();
-  // The pieces before the line's span, the ones it overlaps (cut at its ends), the ones after.
+  // The pieces the line overlaps are replaced by the new ones over their span (cut at its ends);
+  // the pieces before and after it stay.
   const auto first = std::partition_point(pieces_.begin(), pieces_.end(), [&](const Piece& d) { return d.x1 <= a; });
   const auto last = std::partition_point(first, pieces_.end(), [&](const Piece& d) { return d.x0 < b; });
-  for (auto it = pieces_.begin(); it != first; ++it) append(out, *it);
+  std::vector<Piece>& out = scratch_;
+  out.clear();
   if (first != last && first->x0 < a) append(out, {first->x0, first->m0, a, first->at(a)});
   // The line over [x0, x1] against the piece d there (nullptr: no line reaches): the greater of
   // the two, split where they cross.
@@ -261,8 +283,8 @@ void PiecewiseMax::raise(Point p, Point q) {
     const Piece& d = *std::prev(last);
     append(out, {b, d.at(b), d.x1, d.m1});
   }
-  for (auto it = last; it != pieces_.end(); ++it) append(out, *it);
-  std::swap(pieces_, scratch_);
+  const auto at = pieces_.erase(first, last);
+  pieces_.insert(at, out.begin(), out.end());
 }
 
 std::optional<std::pair<double, double>> PiecewiseMax::over(double x0, double x1) const {

@@ -61,7 +61,11 @@ class PartTop {
 
  private:
   double sideOf(double u, int side) const;  // where the part begins just left (−1) or right (+1) of u
-  std::vector<Point> chain_;  // flattened, u non-decreasing
+  // The chain's segments k (from chain_[k − 1] to chain_[k]) that may reach into [lo, hi]: [first, end).
+  std::pair<std::size_t, std::size_t> segmentsWithin(double lo, double hi) const;
+  std::vector<Point> chain_;  // flattened, u non-decreasing (within a nanometre)
+  std::vector<double> maxUpTo_;  // the greatest u of chain_[0..k]
+  std::vector<double> minFrom_;  // the least u of chain_[k..]
   BandFrame band_;
 };
 

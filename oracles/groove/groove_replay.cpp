@@ -298,9 +298,19 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   const double span = std::max(box.max_corner().x() - box.min_corner().x(), box.max_corner().y() - box.min_corner().y());
   // The shank reaches from the deepest point of the band back out of it; a point's shadow across it.
   r.blade = {grooveUW(-1, 0), grooveUW(0, -1), span + 2 * kStockMargin};
-  r.target = interiorOf(g->target(), r.blade.length, chord);
-  r.part = without(r.stock, r.target);
-  r.reachable = r.noseRadius > 0 ? openedBy(r.target, r.noseRadius) : r.target;
+  // The target and the part, made when first needed: a part crossing the bounds cannot rule out, or
+  // the leftover (most cases need neither).
+  bool targetMade = false, partMade = false;
+  const auto makeTarget = [&] {
+    if (!targetMade) r.target = interiorOf(g->target(), r.blade.length, chord);
+    targetMade = true;
+  };
+  const auto partRegion = [&]() -> const BgRegion& {
+    makeTarget();
+    if (!partMade) r.part = without(r.stock, r.target);
+    partMade = true;
+    return r.part;
+  };
   // J2 finishes a groove roughed before (interpretation): its material is the allowance between the
   // rough and the finish profile.
   BgRegion withoutTheOthers = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
@@ -332,7 +342,7 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
     MoveSweep sweep(r, move, chord);
     if (!partTop || (e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack &&
                      !bladeStaysAbove(*partTop, r, move, chord))) {
-      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, sweep, eps, chord);
+      r.partCrossings[i] = crossingOfTheTool(r, partRegion(), move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       // What stands lies within what the other removals left: a sweep clear of its envelope crosses none.
@@ -362,6 +372,8 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   if (!emptied) {
     applyPending(withoutTheOthers, pending, r, shadow, chord);
     r.remaining = materialNow(withoutTheOthers, cleared, aboveTheBand);
+    makeTarget();
+    r.reachable = r.noseRadius > 0 ? openedBy(r.target, r.noseRadius) : r.target;
   }
   return r;
 }

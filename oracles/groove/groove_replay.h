@@ -37,6 +37,8 @@ struct GrooveReplay {
   MoveRange range;           // the cycle's moves
   std::optional<GrooveMoves> moves;  // the cycle's moves as the step oracles see them, found once
   BgRegion stock;            // local frame
+  // Made only when needed (empty otherwise): target for either, part for a crossing the bounds
+  // (groove_bounds.h) cannot rule out, reachable with remaining.
   BgRegion target;           // the groove's interior the cycle must empty (local)
   BgRegion reachable;        // the part of target the tool can reach: target, or opened by a nose
   BgRegion part;             // the stock without the target: no move may enter it (local)
