@@ -236,5 +236,26 @@ TEST(ShadowedRows, ShadowsFromBothSidesMeet) {
   EXPECT_FALSE(shortShadow.coversTarget(slantedChain(), 1e-9)) << "a shadow short of the band's side: no bound";
 }
 
+TEST(ShadowedRows, RowsAboveASlantedMouthAreAir) {
+  // The mouth w = 0.1u: the chain from (2, 0.2) on it down to the floor 3 deep and up to (6, 0.6).
+  const std::vector<Point> chain{grooveUW(2, 0.2), grooveUW(3, 3), grooveUW(5, 3), grooveUW(6, 0.6)};
+  ShadowedRows rows(BandFrame{0, 8, 0.1});
+  rows.clearBehind(grooveUW(6, 0.6), grooveUW(5, 3), -1, 20);  // down the far flank, towards −u
+  EXPECT_FALSE(rows.coversTarget(chain, 1e-9)) << "the rows from 0.2 to 0.6 hold material up to u = 10w";
+  rows.clearBehind(grooveUW(6, 0.2), grooveUW(6, 0.6), -1, 20);
+  EXPECT_TRUE(rows.coversTarget(chain, 1e-9)) << "above 0.2 the target's rows are air";
+}
+
+TEST(ShadowedRows, ARapidAlongThePecksBottomsOrBackUpAPeckCrossesNothing) {
+  ShadowedRows rows(BandFrame{0, 8, 0});
+  rows.clearBehind(grooveUW(1, 0), grooveUW(1, 2), -1, 20);
+  rows.clearBehind(grooveUW(2, 0), grooveUW(2, 2), -1, 20);
+  rows.clearBehind(grooveUW(1, 2), grooveUW(1, 4), -1, 20);  // the next layer's first peck
+  EXPECT_TRUE(rows.clears(grooveUW(1, 2), grooveUW(2, 2), 1e-9)) << "along the first layer's bottom";
+  EXPECT_FALSE(rows.clears(grooveUW(1, 2.5), grooveUW(2, 2.5), 1e-9)) << "half a millimetre below it";
+  EXPECT_TRUE(rows.clears(grooveUW(1, 4), grooveUW(1, -1), 1e-9)) << "back up the peck and out";
+  EXPECT_FALSE(rows.clears(grooveUW(1, 4), grooveUW(2, 0), 1e-9)) << "across the second peck's material";
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -293,6 +293,16 @@ std::optional<std::pair<double, double>> PiecewiseMax::over(double x0, double x1
   return std::pair{it->at(x0), it->at(x1)};
 }
 
+std::optional<double> PiecewiseMax::greatestNear(double x, double near) const {
+  std::optional<double> greatest;
+  for (auto it = std::partition_point(pieces_.begin(), pieces_.end(), [&](const Piece& d) { return d.x1 < x - near; });
+       it != pieces_.end() && it->x0 <= x + near; ++it) {
+    const double m = it->at(std::clamp(x, it->x0, it->x1));
+    greatest = greatest ? std::max(*greatest, m) : m;
+  }
+  return greatest;
+}
+
 void PiecewiseMax::breakpoints(double a, double b, std::vector<double>& out) const {
   for (auto it = std::partition_point(pieces_.begin(), pieces_.end(), [&](const Piece& d) { return d.x1 <= a; });
        it != pieces_.end() && it->x0 < b; ++it) {
@@ -409,11 +419,60 @@ bool ShadowedRows::coversTarget(const std::vector<Point>& chain, double slack) c
     const auto a = nearSide.over(w0, w1), minusB = farSide.over(w0, w1);
     if (!a || !minusB) return false;
     const auto l = left_.over(w0, w1), minusR = right_.over(w0, w1);
-    // Each linear over the interval: a condition at both ends holds all along it.
-    const bool leftReachesB = l && l->first >= -minusB->first - slack && l->second >= -minusB->second - slack;
-    const bool rightReachesA = minusR && -minusR->first <= a->first + slack && -minusR->second <= a->second + slack;
+    // Each linear over the interval: a condition at both ends holds all along it. Above the mouth
+    // (w < u·tan∠p) is air: with ∠p > 0 a row's material lies at u ≤ w/tan∠p, with ∠p < 0 at
+    // u ≥ w/tan∠p.
+    const double t = band_.tanSlope;
+    const auto mouthU = [&](double w) { return w / t; };
+    const bool air = (t > 0 && mouthU(w0) <= a->first + slack && mouthU(w1) <= a->second + slack) ||
+                     (t < 0 && mouthU(w0) >= -minusB->first - slack && mouthU(w1) >= -minusB->second - slack);
+    const bool leftReachesB =
+        l && ((l->first >= -minusB->first - slack && l->second >= -minusB->second - slack) ||
+              (t > 0 && l->first >= mouthU(w0) - slack && l->second >= mouthU(w1) - slack));
+    const bool rightReachesA =
+        minusR && ((-minusR->first <= a->first + slack && -minusR->second <= a->second + slack) ||
+                   (t < 0 && -minusR->first <= mouthU(w0) + slack && -minusR->second <= mouthU(w1) + slack));
     const bool rowGone = l && minusR && l->first >= -minusR->first - slack && l->second >= -minusR->second - slack;
-    if (!leftReachesB && !rightReachesA && !rowGone) return false;
+    if (!air && !leftReachesB && !rightReachesA && !rowGone) return false;
+  }
+  return true;
+}
+
+bool ShadowedRows::clears(Point p, Point q, double slack) const {
+  if (p.z > q.z) std::swap(p, q);  // along w
+  const double wTop = band_.shallowestMouth(band_.uLo, band_.uHi);
+  if (q.z <= wTop) return true;  // above the band's top: air
+  // The chord's u at w (a chord along u: its row, from the nearer end to the farther).
+  const auto uAt = [&](double w, bool far) {
+    if (q.z - p.z <= kSlack) return far ? std::max(p.x, q.x) : std::min(p.x, q.x);
+    return p.x + (q.x - p.x) * (w - p.z) / (q.z - p.z);
+  };
+  // A chord along u: its row, where the shadows ending within a nanometre of it hold (its points
+  // lie on or within that of the cleared rows' edge). Else the intervals between the bounds'
+  // breakpoints over the chord's rows below the top.
+  const bool row = q.z - p.z <= kSlack;
+  const auto valuesOn = [&](const PiecewiseMax& m, double a, double b) -> std::optional<std::pair<double, double>> {
+    if (!row) return m.over(a, b);
+    const auto v = m.greatestNear(a, kSlack);
+    if (!v) return std::nullopt;
+    return std::pair{*v, *v};
+  };
+  std::vector<double> inner;
+  const double w0 = row ? q.z : std::max(p.z, wTop), w1 = q.z;
+  if (!row) {
+    left_.breakpoints(w0, w1, inner);
+    right_.breakpoints(w0, w1, inner);
+  }
+  const std::vector<double> ends = intervalEnds(w0, w1, std::move(inner));
+  for (std::size_t k = 0; k + 1 < std::max<std::size_t>(ends.size(), 2); ++k) {
+    const double a = ends[k], b = ends.size() > 1 ? ends[k + 1] : ends[k];
+    const double uLo0 = uAt(a, false), uLo1 = uAt(b, false), uHi0 = uAt(a, true), uHi1 = uAt(b, true);
+    if ((uHi0 <= band_.uLo && uHi1 <= band_.uLo) || (uLo0 >= band_.uHi && uLo1 >= band_.uHi)) continue;  // beside
+    const auto l = valuesOn(left_, a, b), minusR = valuesOn(right_, a, b);
+    const bool behindLeft = l && uHi0 <= l->first + slack && uHi1 <= l->second + slack;
+    const bool behindRight = minusR && uLo0 >= -minusR->first - slack && uLo1 >= -minusR->second - slack;
+    const bool rowGone = l && minusR && l->first >= -minusR->first - slack && l->second >= -minusR->second - slack;
+    if (!behindLeft && !behindRight && !rowGone) return false;
   }
   return true;
 }

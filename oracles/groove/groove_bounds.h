@@ -102,6 +102,9 @@ class PiecewiseMax {
   // M's values at x0 and x1 on the piece spanning [x0, x1] (no breakpoint inside it); nothing
   // where no line reaches.
   std::optional<std::pair<double, double>> over(double x0, double x1) const;
+  // The greatest value at x of the pieces reaching within `near` of x (at a breakpoint, the
+  // greater side); nothing where none does.
+  std::optional<double> greatestNear(double x, double near) const;
   // M's breakpoints strictly between a and b, appended to `out`.
   void breakpoints(double a, double b, std::vector<double>& out) const;
 
@@ -146,6 +149,10 @@ class ShadowedRows {
   // point, then up) and straight up from its ends — lies within the cleared rows within `slack`,
   // from the band's shallowest top down to the chain's deepest point.
   bool coversTarget(const std::vector<Point>& chain, double slack) const;
+  // Whether the point's chord p → q runs within `slack` of the cleared rows, above the band's
+  // shallowest top or beside the band all along: nothing that stands lies farther than that
+  // inside of it.
+  bool clears(Point p, Point q, double slack) const;
 
  private:
   PiecewiseMax left_;   // over w: L

@@ -219,6 +219,17 @@ bool bladeRapidClear(const ClearedOutline& deepest, const GrooveReplay& r, const
   return true;
 }
 
+// Whether a point's rapid runs within `slack` of the cleared rows (or in the air) along every
+// chord: what stands lies no farther than that inside of it, and a point's crossing counts only
+// what lies more than ε inside (crossingOf).
+bool pointRapidClear(const ShadowedRows& rows, const Segment& move, double slack, double chord) {
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!rows.clears(points[k], points[k + 1], slack)) return false;
+  }
+  return true;
+}
+
 // A point's feed: each chord's rows behind it (its shadow towards `side`).
 void shadowRowsOf(ShadowedRows& rows, const Segment& move, int side, double shadow, double chord) {
   const std::vector<Point> points = flatten(move, chord);
@@ -248,14 +259,14 @@ void applyPending(BgRegion& withoutTheOthers, std::vector<PendingRemoval>& pendi
   pending.clear();
 }
 
-// Whether the blade's sweep along the move stays above the part's top: every chord's deepest
-// outline at or above it (a bound finer than the move's box: a pass along a slanted flank or a
-// round follows the part's top).
-bool bladeStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double chord) {
+// Whether the blade's sweep along the move stays above the part's top within `slack`: every
+// chord's deepest outline at or above it (a bound finer than the move's box: a pass along a
+// slanted flank or a round follows the part's top).
+bool bladeStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double slack, double chord) {
   if (r.tool.isPoint()) return false;
   const std::vector<Point> points = flatten(move, chord);
   for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    if (!top.liesBelow(bladeBottomAlong(points[k], points[k + 1], r.tool.width), kBoundSlack)) return false;
+    if (!top.liesBelow(bladeBottomAlong(points[k], points[k + 1], r.tool.width), slack)) return false;
   }
   return true;
 }
@@ -341,12 +352,13 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
     const ToolExtent e = extentOf(r, move, chord);
     MoveSweep sweep(r, move, chord);
     if (!partTop || (e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack &&
-                     !bladeStaysAbove(*partTop, r, move, chord))) {
+                     !bladeStaysAbove(*partTop, r, move, thin, chord))) {
       r.partCrossings[i] = crossingOfTheTool(r, partRegion(), move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       // What stands lies within what the other removals left: a sweep clear of its envelope crosses none.
-      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest) && !(blade && bladeRapidClear(deepest, r, move, thin, chord))) {
+      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest) && !(blade && bladeRapidClear(deepest, r, move, thin, chord)) &&
+          !(point && pointRapidClear(rows, move, thin, chord))) {
         applyPending(withoutTheOthers, pending, r, shadow, chord);
         if (mayMeet(withoutTheOthers, sweptBoxOf(r, e))) {
           if (!standing) standing = materialNow(withoutTheOthers, cleared, aboveTheBand);
