@@ -30,9 +30,11 @@ std::vector<Point> discAround(Point centre, double radius, double chordTolerance
 
 }  // namespace
 
+std::vector<Point> noseDisc(double radius, double chordTolerance) { return discAround({0, 0}, radius, chordTolerance); }
+
 BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength,
                          double chordTolerance) {
-  std::vector<Point> shape = discAround({0, 0}, radius, chordTolerance);
+  std::vector<Point> shape = noseDisc(radius, chordTolerance);
   if (shadowLength > 0) {
     const std::size_t n = shape.size();
     for (std::size_t i = 0; i < n; ++i) shape.push_back(shape[i] + shadowLength * shadowDir);

@@ -170,10 +170,9 @@ ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, co
 
 using Box = bg::model::box<BgPoint>;
 
-// The deepest outline (greatest w over each u) of the blade's sweep along the chord from → to: the
-// upper hull in w of its bottom edge's corners at both ends, u strictly increasing.
-std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
-  std::vector<Point> corners{from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to};
+// The deepest outline (greatest w over each u) of a convex shape's sweep along a chord: the upper
+// hull in w of its corners at both ends (`corners`, any order), u strictly increasing.
+std::vector<Point> deepestOutlineOf(std::vector<Point> corners) {
   std::sort(corners.begin(), corners.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.z > b.z); });
   std::vector<Point> hull;
   for (Point c : corners) {
@@ -187,6 +186,34 @@ std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
     hull.push_back(c);
   }
   return hull;
+}
+
+// The blade's: its bottom edge's corners at both ends.
+std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
+  return deepestOutlineOf({from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to});
+}
+
+// A nose's: the disc's polygon (noseDisc) about the centre at both ends.
+std::vector<Point> noseBottomAlong(Point from, Point to, const std::vector<Point>& disc) {
+  std::vector<Point> corners;
+  corners.reserve(2 * disc.size());
+  for (Point c : disc) {
+    corners.push_back(from + c);
+    corners.push_back(to + c);
+  }
+  return deepestOutlineOf(std::move(corners));
+}
+
+// Whether a nose's sweep along the move stays above the part's top within `slack` (as
+// bladeStaysAbove: a pass along the profile follows it R off).
+bool noseStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double slack, double chord) {
+  if (r.noseRadius <= 0) return false;
+  const std::vector<Point> disc = noseDisc(r.noseRadius, chord);
+  const std::vector<Point> points = flatten(centrePath(r, move), chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!top.liesBelow(noseBottomAlong(points[k], points[k + 1], disc), slack)) return false;
+  }
+  return true;
 }
 
 // Whether the blade's sweep along each chord reaches back out of the band (its shank, blade.length
@@ -352,7 +379,7 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
     const ToolExtent e = extentOf(r, move, chord);
     MoveSweep sweep(r, move, chord);
     if (!partTop || (e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack &&
-                     !bladeStaysAbove(*partTop, r, move, thin, chord))) {
+                     !bladeStaysAbove(*partTop, r, move, thin, chord) && !noseStaysAbove(*partTop, r, move, thin, chord))) {
       r.partCrossings[i] = crossingOfTheTool(r, partRegion(), move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
