@@ -144,78 +144,70 @@ BgRegion parallelogramAlongRun(const std::vector<Point>& chords, std::size_t fir
   return regionFromSimpleOutline(outline);
 }
 
-// The points of the shape at both ends of a chord that can lie on their hull, found once per shape:
-// a vertex of the shape's own hull lies on the hull of its copies at from and to only where one of
+}  // namespace
+
+// A vertex of the shape's own hull lies on the hull of its copies at from and to only where one of
 // its two edges' outward normals n faces back (n·d ≤ 0, d = to − from: the copy at from) or forwards
 // (n·d ≥ 0: the copy at to) — a normal between them would, and they span its normal cone. The rest
 // (a disc's far half, the shape's inside) only cost the hull its sorting and side tests.
-class ChordHullCandidates {
- public:
-  explicit ChordHullCandidates(const std::vector<Point>& shape) : shape_(shape) {
-    const BgRegion hull = convexHullOf(shape);
-    if (hull.empty()) return;  // no area: every point is a candidate
-    std::vector<Point> ring;
-    for (const BgPoint& p : hull.front().outer()) ring.push_back(fromBg(p));
-    ring.pop_back();  // the closing repetition
-    Point centre{0, 0};
-    for (Point p : ring) centre = centre + p;
-    centre = (1.0 / static_cast<double>(ring.size())) * centre;
-    const std::size_t n = ring.size();
-    std::vector<Point> normals(n);  // of the edge from ring[k] to ring[k + 1], outwards
-    for (std::size_t k = 0; k < n; ++k) {
-      const Point a = ring[k], b = ring[(k + 1) % n];
-      Point normal{b.x - a.x, a.z - b.z};
-      if (dot(normal, 0.5 * (a + b) - centre) < 0) normal = -1.0 * normal;
-      normals[k] = normal;
-    }
-    std::vector<std::size_t> byPoint(n);
-    for (std::size_t k = 0; k < n; ++k) byPoint[k] = k;
-    const auto less = [&](Point a, Point b) { return a.z < b.z || (a.z == b.z && a.x < b.x); };
-    std::sort(byPoint.begin(), byPoint.end(), [&](std::size_t a, std::size_t b) { return less(ring[a], ring[b]); });
-    edges_.assign(shape.size(), std::nullopt);
-    for (std::size_t i = 0; i < shape.size(); ++i) {
-      const auto it = std::lower_bound(byPoint.begin(), byPoint.end(), shape[i],
-                                       [&](std::size_t k, Point p) { return less(ring[k], p); });
-      if (it == byPoint.end() || !(ring[*it] == shape[i])) continue;  // not a vertex of the hull
-      edges_[i] = std::pair{normals[(*it + n - 1) % n], normals[*it]};
-    }
+SweptShape::SweptShape(std::vector<Point> points) : points_(std::move(points)) {
+  const BgRegion hull = convexHullOf(points_);
+  if (hull.empty()) return;  // no area: every point is a candidate
+  std::vector<Point> ring;
+  for (const BgPoint& p : hull.front().outer()) ring.push_back(fromBg(p));
+  ring.pop_back();  // the closing repetition
+  Point centre{0, 0};
+  for (Point p : ring) centre = centre + p;
+  centre = (1.0 / static_cast<double>(ring.size())) * centre;
+  const std::size_t n = ring.size();
+  std::vector<Point> normals(n);  // of the edge from ring[k] to ring[k + 1], outwards
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point a = ring[k], b = ring[(k + 1) % n];
+    Point normal{b.x - a.x, a.z - b.z};
+    if (dot(normal, 0.5 * (a + b) - centre) < 0) normal = -1.0 * normal;
+    normals[k] = normal;
   }
-
-  // (shape + from) ∪ (shape + to) in hullAlongChord's order, without the points that cannot be on
-  // their hull (within a relative 1e-9 of facing sideways, a point counts as facing both ways).
-  void along(Point from, Point to, std::vector<Point>& out) const {
-    out.clear();
-    const Point d = to - from;
-    const auto faces = [&](Point normal, double sign) {
-      return sign * dot(normal, d) >= -1e-9 * std::sqrt(dot(normal, normal) * dot(d, d));
-    };
-    for (std::size_t i = 0; i < shape_.size(); ++i) {
-      if (edges_.empty()) {
-        out.push_back(from + shape_[i]);
-        out.push_back(to + shape_[i]);
-        continue;
-      }
-      if (!edges_[i]) continue;
-      const auto [before, after] = *edges_[i];
-      if (faces(before, -1) || faces(after, -1)) out.push_back(from + shape_[i]);
-      if (faces(before, 1) || faces(after, 1)) out.push_back(to + shape_[i]);
-    }
+  std::vector<std::size_t> byPoint(n);
+  for (std::size_t k = 0; k < n; ++k) byPoint[k] = k;
+  const auto less = [](Point a, Point b) { return a.z < b.z || (a.z == b.z && a.x < b.x); };
+  std::sort(byPoint.begin(), byPoint.end(), [&](std::size_t a, std::size_t b) { return less(ring[a], ring[b]); });
+  edges_.assign(points_.size(), std::nullopt);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const auto it = std::lower_bound(byPoint.begin(), byPoint.end(), points_[i],
+                                     [&](std::size_t k, Point p) { return less(ring[k], p); });
+    if (it == byPoint.end() || !(ring[*it] == points_[i])) continue;  // not a vertex of the hull
+    edges_[i] = std::pair{normals[(*it + n - 1) % n], normals[*it]};
   }
+}
 
- private:
-  static double dot(Point a, Point b) { return a.z * b.z + a.x * b.x; }
-  const std::vector<Point>& shape_;
-  // Per shape point on the hull: the outward normals of the hull's edges before and after it.
-  std::vector<std::optional<std::pair<Point, Point>>> edges_;
-};
+void SweptShape::along(Point from, Point to, std::vector<Point>& out) const {
+  out.clear();
+  const Point d = to - from;
+  // Within a relative 1e-9 of facing sideways, a vertex counts as facing both ways.
+  const auto faces = [&](Point normal, double sign) {
+    return sign * dot(normal, d) >= -1e-9 * std::sqrt(dot(normal, normal) * dot(d, d));
+  };
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    if (edges_.empty()) {
+      out.push_back(from + points_[i]);
+      out.push_back(to + points_[i]);
+      continue;
+    }
+    if (!edges_[i]) continue;
+    const auto [before, after] = *edges_[i];
+    if (faces(before, -1) || faces(after, -1)) out.push_back(from + points_[i]);
+    if (faces(before, 1) || faces(after, 1)) out.push_back(to + points_[i]);
+  }
+}
+
+namespace {
 
 // The convex shape swept along the chain of chords: the union of its hulls along each chord.
-BgRegion sweptAlongChords(const std::vector<Point>& chords, const std::vector<Point>& shape) {
+BgRegion sweptAlongChords(const std::vector<Point>& chords, const SweptShape& shape) {
   BgRegion swept;
-  const ChordHullCandidates candidates(shape);
   std::vector<Point> points;
   for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
-    candidates.along(chords[k], chords[k + 1], points);
+    shape.along(chords[k], chords[k + 1], points);
     uniteWith(swept, convexHullOf(points));
   }
   tidy(swept);
@@ -224,8 +216,12 @@ BgRegion sweptAlongChords(const std::vector<Point>& chords, const std::vector<Po
 
 }  // namespace
 
-BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
+BgRegion sweptConvexShape(const Segment& move, const SweptShape& shape, double chordTolerance) {
   return sweptAlongChords(flatten(move, chordTolerance), shape);
+}
+
+BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
+  return sweptConvexShape(move, SweptShape(shape), chordTolerance);
 }
 
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
@@ -233,7 +229,7 @@ BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b
   const std::vector<Point> shape{{0, 0}, sideA, sideA + sideB, sideB};
   const std::vector<Point> chords = flatten(move, chordTolerance);
   // One chord (a line): its hull, no union to spare. A segment (a or b zero) has no open cones.
-  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, shape);
+  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, SweptShape(shape));
   // An arc's chords: each run in one open cone swept at once; a chord along a side, by its hull.
   BgRegion swept;
   for (std::size_t k = 0; k + 1 < chords.size();) {
