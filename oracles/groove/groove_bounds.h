@@ -1,6 +1,6 @@
 #pragma once
 // Bounds that spare the G74.1 replay its Boost booleans where they prove the exact answer
-// (groove_replay.h). Both are functions of u in the groove's frame (u = x, w = z: depth, down):
+// (groove_replay.h), in the groove's frame (u = x, w = z: depth, down):
 // - PartTop: where the part begins below each u — the target's chain where the groove is, the
 //   mouth line beside it, nothing beyond the stock band. A move whose tool stays at or above it over
 //   its whole span touches no part: no crossing, without intersecting regions.
@@ -15,7 +15,11 @@
 //   outline). A bound only, never a region: a blade's rapid at or above max(D, mouth) crosses
 //   nothing still standing, and a target whose chain lies at or above D is emptied — the exact
 //   removals are then never needed.
-// Both bounds are conservative: where they cannot prove "nothing", the exact computation runs.
+// - ShadowedRows: the same for a point's feeds over w: a shadow reaching the band's side clears
+//   the rows behind its chord, {u ≤ L(w)} ∪ {u ≥ R(w)}.
+// ClearedOutline and ShadowedRows prove "nothing thicker than a slack" (the replay's ε/2: what lies
+// between two outlines that close is no thicker, 2·area/perimeter). All are conservative: where
+// they cannot prove it, the exact computation runs.
 #include <map>
 #include <optional>
 #include <vector>
