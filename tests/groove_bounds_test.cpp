@@ -152,5 +152,110 @@ TEST(PartTop, WhereAPolylineLiesAboveItTheExactPartHasNothingAboveIt) {
   EXPECT_GT(proven, 40) << "the trials must prove some";
 }
 
+// Everything above the polyline (u increasing) down to it, from w = top: a blade's sweep reaching
+// back out of the band, or what a rapid's blade would cross.
+BgRegion aboveOutline(const std::vector<Point>& outline, double top) {
+  std::vector<Point> ring{grooveUW(outline.front().x, top)};
+  for (Point p : outline) ring.push_back(p);
+  ring.push_back(grooveUW(outline.back().x, top));
+  return regionFrom(ring);
+}
+
+TEST(ClearedOutline, ASlantedPassAndAPeckBoundWhatStands) {
+  ClearedOutline c(BandFrame{0, 10, 0});
+  c.clearDownTo({grooveUW(1, 2), grooveUW(3, 2)});              // a peck 2 deep over [1, 3]
+  c.clearDownTo({grooveUW(2, 1), grooveUW(4, 3), grooveUW(5, 3)});  // a pass down a flank
+  // D: 2 over [1, 3) but the flank's 1 + (u − 2) beyond u = 3, 3 over [4, 5].
+  EXPECT_TRUE(c.covers({grooveUW(1, 2), grooveUW(3, 2)}, 1e-9));
+  EXPECT_TRUE(c.covers({grooveUW(1.5, 1.9), grooveUW(3.5, 2), grooveUW(5, 3)}, 1e-9));
+  EXPECT_FALSE(c.covers({grooveUW(2.5, 2.1), grooveUW(3, 2.1)}, 1e-9)) << "below the peck's floor";
+  EXPECT_FALSE(c.covers({grooveUW(4.5, 3), grooveUW(5.5, 3)}, 1e-9)) << "beyond the pass";
+  EXPECT_TRUE(c.covers({grooveUW(5.5, 0), grooveUW(7, 0)}, 1e-9)) << "at the mouth";
+  EXPECT_TRUE(c.covers({grooveUW(11, 5), grooveUW(12, 5)}, 1e-9)) << "beyond the band";
+  EXPECT_TRUE(c.covers({grooveUW(3, 2), grooveUW(3, 1), grooveUW(4, 3)}, 1e-9)) << "a wall is skipped";
+  EXPECT_FALSE(c.covers({grooveUW(3, 2), grooveUW(3.5, 2.6)}, 1e-9)) << "0.1 below the flank's pass";
+}
+
+TEST(ClearedOutline, AgreesWithTheDifferenceOfTheSweepsOnRandomPasses) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(-2, 22), width(0.1, 5), depth(0.1, 9);
+  const double top = -10;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double slope = trial % 3 == 0 ? 0.2 : 0;
+    const BandFrame band{0, 20, slope};
+    const BgRegion stock = regionFrom({grooveUW(0, 0), grooveUW(20, 20 * slope), grooveUW(20, 15), grooveUW(0, 15)});
+    ClearedOutline c(band);
+    BgRegion exact = stock;
+    const auto outline = [&](double scale) {
+      const double a = u(random), b = a + width(random), m = a + (b - a) * 0.5;
+      return std::vector<Point>{grooveUW(a, scale * depth(random)), grooveUW(m, scale * depth(random)),
+                                grooveUW(b, scale * depth(random))};
+    };
+    for (int k = 0; k < 12; ++k) {
+      const std::vector<Point> o = outline(1);
+      c.clearDownTo(o);
+      ASSERT_TRUE(c.covers(o, 1e-9)) << "trial " << trial << ": an outline just cleared";
+      exact = without(exact, aboveOutline(o, top));
+    }
+    // Shallower outlines, often covered: where the bound says so, nothing exact stands above them.
+    for (int q = 0; q < 40; ++q) {
+      const std::vector<Point> o = outline(0.4);
+      if (!c.covers(o, 1e-9)) continue;
+      ASSERT_LT(bg::area(checkedIntersection(aboveOutline(o, top), exact)), 1e-6) << "trial " << trial << " query " << q;
+    }
+  }
+}
+
+// The groove of slantedGroove (near flank u = 2 + w/3, far flank u = 6 − w/3, floor 3 deep) and a
+// point's feeds with their shadows 20 long (beyond the band's side).
+std::vector<Point> slantedChain() {
+  const auto top = PartTop::of(slantedGroove(), BandFrame{0, 8, 0}, 0.001);
+  return top->chain();
+}
+
+TEST(ShadowedRows, APassDownTheFarFlankShadowingTowardsTheStartClearsTheTarget) {
+  ShadowedRows rows(BandFrame{0, 8, 0});
+  rows.clearBehind(grooveUW(5.5, 1.5), grooveUW(5, 3), -1, 20);
+  EXPECT_FALSE(rows.coversTarget(slantedChain(), 1e-9)) << "the rows above 1.5 stand";
+  rows.clearBehind(grooveUW(6, 0), grooveUW(5.5, 1.5), -1, 20);
+  EXPECT_TRUE(rows.coversTarget(slantedChain(), 1e-9));
+}
+
+TEST(ShadowedRows, ShadowsFromBothSidesMeet) {
+  ShadowedRows rows(BandFrame{0, 8, 0});
+  rows.clearBehind(grooveUW(4, -1), grooveUW(4, 2.5), -1, 20);  // a peck at u = 4, behind it towards −u
+  rows.clearBehind(grooveUW(4, -1), grooveUW(4, 3), 1, 20);     // and towards +u
+  EXPECT_FALSE(rows.coversTarget(slantedChain(), 1e-9)) << "below 2.5 only the +u side is cleared";
+  rows.clearBehind(grooveUW(4, 2), grooveUW(4, 3), -1, 20);
+  EXPECT_TRUE(rows.coversTarget(slantedChain(), 1e-9));
+  ShadowedRows near(BandFrame{0, 8, 0});
+  near.clearBehind(grooveUW(2, 0), grooveUW(3, 3), 1, 20);  // down the near flank, towards +u
+  EXPECT_TRUE(near.coversTarget(slantedChain(), 1e-9));
+  ShadowedRows shortShadow(BandFrame{0, 8, 0});
+  shortShadow.clearBehind(grooveUW(2, 0), grooveUW(3, 3), 1, 4);
+  EXPECT_FALSE(shortShadow.coversTarget(slantedChain(), 1e-9)) << "a shadow short of the band's side: no bound";
+}
+
+TEST(ShadowedRows, RowsAboveASlantedMouthAreAir) {
+  // The mouth w = 0.1u: the chain from (2, 0.2) on it down to the floor 3 deep and up to (6, 0.6).
+  const std::vector<Point> chain{grooveUW(2, 0.2), grooveUW(3, 3), grooveUW(5, 3), grooveUW(6, 0.6)};
+  ShadowedRows rows(BandFrame{0, 8, 0.1});
+  rows.clearBehind(grooveUW(6, 0.6), grooveUW(5, 3), -1, 20);  // down the far flank, towards −u
+  EXPECT_FALSE(rows.coversTarget(chain, 1e-9)) << "the rows from 0.2 to 0.6 hold material up to u = 10w";
+  rows.clearBehind(grooveUW(6, 0.2), grooveUW(6, 0.6), -1, 20);
+  EXPECT_TRUE(rows.coversTarget(chain, 1e-9)) << "above 0.2 the target's rows are air";
+}
+
+TEST(ShadowedRows, ARapidAlongThePecksBottomsOrBackUpAPeckCrossesNothing) {
+  ShadowedRows rows(BandFrame{0, 8, 0});
+  rows.clearBehind(grooveUW(1, 0), grooveUW(1, 2), -1, 20);
+  rows.clearBehind(grooveUW(2, 0), grooveUW(2, 2), -1, 20);
+  rows.clearBehind(grooveUW(1, 2), grooveUW(1, 4), -1, 20);  // the next layer's first peck
+  EXPECT_TRUE(rows.clears(grooveUW(1, 2), grooveUW(2, 2), 1e-9)) << "along the first layer's bottom";
+  EXPECT_FALSE(rows.clears(grooveUW(1, 2.5), grooveUW(2, 2.5), 1e-9)) << "half a millimetre below it";
+  EXPECT_TRUE(rows.clears(grooveUW(1, 4), grooveUW(1, -1), 1e-9)) << "back up the peck and out";
+  EXPECT_FALSE(rows.clears(grooveUW(1, 4), grooveUW(2, 0), 1e-9)) << "across the second peck's material";
+}
+
 }  // namespace
 }  // namespace cyclecert

@@ -6,6 +6,8 @@
 // a feed removes that sweep and its shadow (the tool's body trailing behind the nose, as a point's
 // shadow). The groove a nose can empty is the target opened by the disc (what discs inside it
 // reach): its concave floor corners keep a fillet of R, as any compensated contour leaves them.
+#include <vector>
+
 #include "oracles/material/region.h"
 #include "oracles/material/tool_shape.h"
 #include "reference/model/geometry.h"
@@ -16,6 +18,10 @@ namespace cyclecert {
 // its shadow of `shadowLength` along the unit vector `shadowDir` (0: the disc alone). The disc is
 // the polygon inscribed within chordTolerance.
 BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength, double chordTolerance);
+
+// The disc's polygon about the origin that noseSweptRegion sweeps: inscribed, its sides' sagitta
+// within chordTolerance.
+std::vector<Point> noseDisc(double radius, double chordTolerance);
 
 // `region` opened by a disc of radius R: the union of the discs inside it.
 BgRegion openedBy(const BgRegion& region, double radius);

@@ -81,6 +81,8 @@ class MoveSweep {
     if (!swept_) swept_ = sweepOf(r_, move_, chordTolerance_);
     return *swept_;
   }
+  // The region if it was computed (nothing otherwise), handed over.
+  std::optional<BgRegion> take() { return std::move(swept_); }
 
  private:
   static BgRegion sweepOf(const GrooveReplay& r, const Segment& move, double chordTolerance) {
@@ -141,7 +143,10 @@ BgRegion materialNow(const BgRegion& withoutTheOthers, const ClearedStaircase& c
 
 }  // namespace
 
-BgRegion GrooveReplay::leftover() const { return consistentIntersection(remaining, reachable); }
+BgRegion GrooveReplay::leftover() const {
+  if (remaining.empty()) return {};  // the bounds proved the target emptied (remaining not made)
+  return consistentIntersection(remaining, reachable);
+}
 
 namespace {
 
@@ -165,10 +170,9 @@ ToolCrossing crossingOfTheTool(const GrooveReplay& r, const BgRegion& region, co
 
 using Box = bg::model::box<BgPoint>;
 
-// The deepest outline (greatest w over each u) of the blade's sweep along the chord from → to: the
-// upper hull in w of its bottom edge's corners at both ends, u strictly increasing.
-std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
-  std::vector<Point> corners{from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to};
+// The deepest outline (greatest w over each u) of a convex shape's sweep along a chord: the upper
+// hull in w of its corners at both ends (`corners`, any order), u strictly increasing.
+std::vector<Point> deepestOutlineOf(std::vector<Point> corners) {
   std::sort(corners.begin(), corners.end(), [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.z > b.z); });
   std::vector<Point> hull;
   for (Point c : corners) {
@@ -184,14 +188,112 @@ std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
   return hull;
 }
 
-// Whether the blade's sweep along the move stays above the part's top: every chord's deepest
-// outline at or above it (a bound finer than the move's box: a pass along a slanted flank or a
-// round follows the part's top).
-bool bladeStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double chord) {
+// The blade's: its bottom edge's corners at both ends.
+std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
+  return deepestOutlineOf({from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to});
+}
+
+// A nose's: the disc's polygon (noseDisc) about the centre at both ends.
+std::vector<Point> noseBottomAlong(Point from, Point to, const std::vector<Point>& disc) {
+  std::vector<Point> corners;
+  corners.reserve(2 * disc.size());
+  for (Point c : disc) {
+    corners.push_back(from + c);
+    corners.push_back(to + c);
+  }
+  return deepestOutlineOf(std::move(corners));
+}
+
+// Whether a nose's sweep along the move stays above the part's top within `slack` (as
+// bladeStaysAbove: a pass along the profile follows it R off).
+bool noseStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double slack, double chord) {
+  if (r.noseRadius <= 0) return false;
+  const std::vector<Point> disc = noseDisc(r.noseRadius, chord);
+  const std::vector<Point> points = flatten(centrePath(r, move), chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!top.liesBelow(noseBottomAlong(points[k], points[k + 1], disc), slack)) return false;
+  }
+  return true;
+}
+
+// Whether the blade's sweep along each chord reaches back out of the band (its shank, blade.length
+// back from the chord's deepest point, above the band's top everywhere): then it removes
+// everything above its deepest outline over its span.
+bool reachesOut(const GrooveReplay& r, const BandFrame& band, Point from, Point to) {
+  return std::max(from.z, to.z) - r.blade.length <= band.shallowestMouth(band.uLo, band.uHi);
+}
+
+// D := max(D, the blade feed's deepest outline) over each chord's span, for the chords that
+// reach out of the band.
+void raiseByFeed(ClearedOutline& deepest, const GrooveReplay& r, const BandFrame& band, const Segment& move,
+                 double chord) {
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (reachesOut(r, band, points[k], points[k + 1])) {
+      deepest.clearDownTo(bladeBottomAlong(points[k], points[k + 1], r.tool.width));
+    }
+  }
+}
+
+// Whether a blade's rapid stays at or above max(D, mouth) within `slack` along every chord: it
+// crosses nothing of what stands thicker than that, whatever the removals not yet applied.
+bool bladeRapidClear(const ClearedOutline& deepest, const GrooveReplay& r, const Segment& move, double slack,
+                     double chord) {
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!deepest.covers(bladeBottomAlong(points[k], points[k + 1], r.tool.width), slack)) return false;
+  }
+  return true;
+}
+
+// Whether a point's rapid runs within `slack` of the cleared rows (or in the air) along every
+// chord: what stands lies no farther than that inside of it, and a point's crossing counts only
+// what lies more than ε inside (crossingOf).
+bool pointRapidClear(const ShadowedRows& rows, const Segment& move, double slack, double chord) {
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!rows.clears(points[k], points[k + 1], slack)) return false;
+  }
+  return true;
+}
+
+// A point's feed: each chord's rows behind it (its shadow towards `side`).
+void shadowRowsOf(ShadowedRows& rows, const Segment& move, int side, double shadow, double chord) {
+  const std::vector<Point> points = flatten(move, chord);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) rows.clearBehind(points[k], points[k + 1], side, shadow);
+}
+
+// A feed whose removal is not yet applied to the material (the blade's sweep, when the part's
+// crossing already made it).
+struct PendingRemoval {
+  Segment move;
+  int side = 0;
+  std::optional<BgRegion> sweep;
+};
+
+// The material with the pending removals applied, in the order of their moves: the same
+// differences, the same regions, as applying each when it comes.
+void applyPending(BgRegion& withoutTheOthers, std::vector<PendingRemoval>& pending, const GrooveReplay& r,
+                  double shadow, double chord) {
+  for (PendingRemoval& p : pending) {
+    MoveSweep sweep(r, p.move, chord);
+    if (p.sweep) {
+      withoutTheOthers = without(withoutTheOthers, *p.sweep);
+    } else {
+      withoutTheOthers = without(withoutTheOthers, removedBy(r, p.move, sweep, p.side, shadow, chord));
+    }
+  }
+  pending.clear();
+}
+
+// Whether the blade's sweep along the move stays above the part's top within `slack`: every
+// chord's deepest outline at or above it (a bound finer than the move's box: a pass along a
+// slanted flank or a round follows the part's top).
+bool bladeStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double slack, double chord) {
   if (r.tool.isPoint()) return false;
   const std::vector<Point> points = flatten(move, chord);
   for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    if (!top.liesBelow(bladeBottomAlong(points[k], points[k + 1], r.tool.width), kBoundSlack)) return false;
+    if (!top.liesBelow(bladeBottomAlong(points[k], points[k + 1], r.tool.width), slack)) return false;
   }
   return true;
 }
@@ -234,9 +336,19 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   const double span = std::max(box.max_corner().x() - box.min_corner().x(), box.max_corner().y() - box.min_corner().y());
   // The shank reaches from the deepest point of the band back out of it; a point's shadow across it.
   r.blade = {grooveUW(-1, 0), grooveUW(0, -1), span + 2 * kStockMargin};
-  r.target = interiorOf(g->target(), r.blade.length, chord);
-  r.part = without(r.stock, r.target);
-  r.reachable = r.noseRadius > 0 ? openedBy(r.target, r.noseRadius) : r.target;
+  // The target and the part, made when first needed: a part crossing the bounds cannot rule out, or
+  // the leftover (most cases need neither).
+  bool targetMade = false, partMade = false;
+  const auto makeTarget = [&] {
+    if (!targetMade) r.target = interiorOf(g->target(), r.blade.length, chord);
+    targetMade = true;
+  };
+  const auto partRegion = [&]() -> const BgRegion& {
+    makeTarget();
+    if (!partMade) r.part = without(r.stock, r.target);
+    partMade = true;
+    return r.part;
+  };
   // J2 finishes a groove roughed before (interpretation): its material is the allowance between the
   // rough and the finish profile.
   BgRegion withoutTheOthers = g->roughs() ? r.stock : without(r.stock, interiorOf(g->rough, r.blade.length, chord));
@@ -250,30 +362,58 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   const double aboveTheBand = box.min_corner().x() - 2 * kStockMargin;  // w above the band's top
   const double shadow = span + 2 * kStockMargin;
   std::optional<BgRegion> standing;  // materialNow, once a rapid needs it, until the next feed
+  // The feeds of a blade or a point (not along an axis) removed from withoutTheOthers only when a
+  // rapid or the end needs the exact material: ClearedOutline and ShadowedRows bound what stands
+  // meanwhile. (A nose sweeps a disc, groove_nose.h: its feeds are removed as they come.)
+  ClearedOutline deepest(band);
+  ShadowedRows rows(band);
+  std::vector<PendingRemoval> pending;
+  const bool blade = !r.tool.isPoint() && r.noseRadius <= 0, point = r.tool.isPoint() && r.noseRadius <= 0;
+  // What lies between two outlines no farther apart than `thin` (along w for a blade, along u for a
+  // point's rows) is no thicker (2·area/perimeter: its area is at most thin × its extent, its
+  // perimeter at least twice the extent): a crossing or a leftover that thin is no finding.
+  const double thin = eps / 2;
   for (std::size_t i = r.range.begin; i < r.range.end; ++i) {
     const Segment move = localSegment(in, *g, i);
     if (distance(move.from, move.to) <= kGeomEps && !move.isArc()) continue;
     const ToolExtent e = extentOf(r, move, chord);
     MoveSweep sweep(r, move, chord);
     if (!partTop || (e.wDeepest > partTop->shallowestOver(e.uFrom, e.uTo) + kBoundSlack &&
-                     !bladeStaysAbove(*partTop, r, move, chord))) {
-      r.partCrossings[i] = crossingOfTheTool(r, r.part, move, sweep, eps, chord);
+                     !bladeStaysAbove(*partTop, r, move, thin, chord) && !noseStaysAbove(*partTop, r, move, thin, chord))) {
+      r.partCrossings[i] = crossingOfTheTool(r, partRegion(), move, sweep, eps, chord);
     }
     if (in.path.moves[i].kind == MoveKind::Rapid) {
       // What stands lies within what the other removals left: a sweep clear of its envelope crosses none.
-      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest) && mayMeet(withoutTheOthers, sweptBoxOf(r, e))) {
-        if (!standing) standing = materialNow(withoutTheOthers, cleared, aboveTheBand);
-        r.rapidCrossings[i] = crossingOfTheTool(r, *standing, move, sweep, eps, chord);
+      if (!cleared.clearOver(e.uFrom, e.uTo, e.wDeepest) && !(blade && bladeRapidClear(deepest, r, move, thin, chord)) &&
+          !(point && pointRapidClear(rows, move, thin, chord))) {
+        applyPending(withoutTheOthers, pending, r, shadow, chord);
+        if (mayMeet(withoutTheOthers, sweptBoxOf(r, e))) {
+          if (!standing) standing = materialNow(withoutTheOthers, cleared, aboveTheBand);
+          r.rapidCrossings[i] = crossingOfTheTool(r, *standing, move, sweep, eps, chord);
+        }
       }
     } else {
       standing.reset();
       const int side = shadowSide(r, move, moves && i >= moves->profileStart);
-      if (!clearsAStep(cleared, r, move, side, shadow, e)) {
+      if (blade) raiseByFeed(deepest, r, band, move, chord);
+      if (point) shadowRowsOf(rows, move, side, shadow, chord);
+      if (clearsAStep(cleared, r, move, side, shadow, e)) continue;
+      if (blade || point) {
+        pending.push_back({move, side, sweep.take()});
+      } else {
         withoutTheOthers = without(withoutTheOthers, removedBy(r, move, sweep, side, shadow, chord));
       }
     }
   }
-  r.remaining = materialNow(withoutTheOthers, cleared, aboveTheBand);
+  // What is left needs the exact material only when the bound cannot prove the target emptied.
+  const bool emptied = partTop && ((blade && deepest.covers(partTop->chain(), thin)) ||
+                                    (point && rows.coversTarget(partTop->chain(), thin)));
+  if (!emptied) {
+    applyPending(withoutTheOthers, pending, r, shadow, chord);
+    r.remaining = materialNow(withoutTheOthers, cleared, aboveTheBand);
+    makeTarget();
+    r.reachable = r.noseRadius > 0 ? openedBy(r.target, r.noseRadius) : r.target;
+  }
   return r;
 }
 

@@ -37,10 +37,14 @@ struct GrooveReplay {
   MoveRange range;           // the cycle's moves
   std::optional<GrooveMoves> moves;  // the cycle's moves as the step oracles see them, found once
   BgRegion stock;            // local frame
+  // Made only when needed (empty otherwise): target for either, part for a crossing the bounds
+  // (groove_bounds.h) cannot rule out, reachable with remaining.
   BgRegion target;           // the groove's interior the cycle must empty (local)
   BgRegion reachable;        // the part of target the tool can reach: target, or opened by a nose
   BgRegion part;             // the stock without the target: no move may enter it (local)
-  BgRegion remaining;        // the material after the cycle's last move (local)
+  // The material after the cycle's last move (local); left empty, not made, when ClearedOutline
+  // (groove_bounds.h) proves a blade emptied the target: nothing then is left inside it.
+  BgRegion remaining;
   std::vector<ToolCrossing> partCrossings;   // per move of the path (empty outside the range)
   std::vector<ToolCrossing> rapidCrossings;  // per move: material still standing a rapid crosses
   // What remains of the reachable target after the last move (local).

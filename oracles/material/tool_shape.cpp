@@ -1,6 +1,8 @@
 #include "oracles/material/tool_shape.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <utility>
 
 #include "oracles/material/boost_geometry.h"
@@ -9,13 +11,74 @@ namespace cyclecert {
 
 namespace bg = boost::geometry;
 
+namespace {
+
+// Boost's convex hull (graham_andrew, 1.74) step by step on buffers kept between calls, with its own
+// predicates (geometry::less and greater, side_by_triangle): the same hull, point for point, as
+// bg::convex_hull — the unions after it see the same rings — without its containers' allocations
+// per chord (a sweep takes one hull per chord).
+struct HullBuffers {
+  std::vector<BgPoint> lower, upper, lowerHull, upperHull;
+};
+
+using Side = bg::strategy::side::side_by_triangle<>;
+
+// Graham–Andrew's half hull from `left` through `points` (sorted) to `right`: a point turning
+// the wrong way (factor·side ≤ 0) drops the one before it.
+void buildHalfHull(int factor, const std::vector<BgPoint>& points, std::vector<BgPoint>& hull, const BgPoint& left,
+                   const BgPoint& right) {
+  hull.clear();
+  hull.push_back(left);
+  const auto add = [&](const BgPoint& p) {
+    hull.push_back(p);
+    while (hull.size() >= 3) {
+      const std::size_t n = hull.size();
+      if (factor * Side::apply(hull[n - 3], hull[n - 1], hull[n - 2]) > 0) return;
+      hull[n - 2] = hull[n - 1];
+      hull.pop_back();
+    }
+  };
+  for (const BgPoint& p : points) add(p);
+  add(right);
+}
+
+}  // namespace
+
 BgRegion convexHullOf(const std::vector<Point>& points) {
-  bg::model::multi_point<BgPoint> cloud;
-  for (Point p : points) cloud.push_back(toBg(p));
-  BgPolygon hull;
-  bg::convex_hull(cloud, hull);
+  thread_local HullBuffers b;
   BgRegion out;
-  if (bg::area(hull) != 0) out.push_back(hull);
+  if (points.empty()) return out;
+  // The extremes: the first least and the first greatest point (x, then y).
+  const bg::less<BgPoint> less;
+  const bg::greater<BgPoint> greater;
+  BgPoint left = toBg(points.front()), right = left;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const BgPoint p = toBg(points[k]);
+    if (less(p, left)) left = p;
+    if (greater(p, right)) right = p;
+  }
+  // The points left of the line left → right make the upper half, those right of it the lower;
+  // those on it are on no hull.
+  b.lower.clear();
+  b.upper.clear();
+  for (Point q : points) {
+    const BgPoint p = toBg(q);
+    const int side = Side::apply(left, right, p);
+    if (side == 1) b.upper.push_back(p);
+    if (side == -1) b.lower.push_back(p);
+  }
+  std::sort(b.lower.begin(), b.lower.end(), less);
+  std::sort(b.upper.begin(), b.upper.end(), less);
+  buildHalfHull(-1, b.lower, b.lowerHull, left, right);
+  buildHalfHull(1, b.upper, b.upperHull, left, right);
+  // Clockwise and closed: the upper half from left to right, then the lower back to left.
+  BgPolygon hull;
+  auto& ring = hull.outer();
+  ring.reserve(b.upperHull.size() + b.lowerHull.size());
+  ring.assign(b.upperHull.begin(), b.upperHull.end());
+  ring.insert(ring.end(), std::next(b.lowerHull.rbegin()), b.lowerHull.rend());
+  if (b.upperHull.size() + b.lowerHull.size() - 1 < 4) ring.push_back(ring.front());
+  if (bg::area(hull) != 0) out.push_back(std::move(hull));
   bg::correct(out);
   return out;
 }
@@ -81,18 +144,84 @@ BgRegion parallelogramAlongRun(const std::vector<Point>& chords, std::size_t fir
   return regionFromSimpleOutline(outline);
 }
 
+}  // namespace
+
+// A vertex of the shape's own hull lies on the hull of its copies at from and to only where one of
+// its two edges' outward normals n faces back (n·d ≤ 0, d = to − from: the copy at from) or forwards
+// (n·d ≥ 0: the copy at to) — a normal between them would, and they span its normal cone. The rest
+// (a disc's far half, the shape's inside) only cost the hull its sorting and side tests.
+SweptShape::SweptShape(std::vector<Point> points) : points_(std::move(points)) {
+  const BgRegion hull = convexHullOf(points_);
+  if (hull.empty()) return;  // no area: every point is a candidate
+  std::vector<Point> ring;
+  for (const BgPoint& p : hull.front().outer()) ring.push_back(fromBg(p));
+  ring.pop_back();  // the closing repetition
+  Point centre{0, 0};
+  for (Point p : ring) centre = centre + p;
+  centre = (1.0 / static_cast<double>(ring.size())) * centre;
+  const std::size_t n = ring.size();
+  std::vector<Point> normals(n);  // of the edge from ring[k] to ring[k + 1], outwards
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point a = ring[k], b = ring[(k + 1) % n];
+    Point normal{b.x - a.x, a.z - b.z};
+    if (dot(normal, 0.5 * (a + b) - centre) < 0) normal = -1.0 * normal;
+    normals[k] = normal;
+  }
+  std::vector<std::size_t> byPoint(n);
+  for (std::size_t k = 0; k < n; ++k) byPoint[k] = k;
+  const auto less = [](Point a, Point b) { return a.z < b.z || (a.z == b.z && a.x < b.x); };
+  std::sort(byPoint.begin(), byPoint.end(), [&](std::size_t a, std::size_t b) { return less(ring[a], ring[b]); });
+  edges_.assign(points_.size(), std::nullopt);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const auto it = std::lower_bound(byPoint.begin(), byPoint.end(), points_[i],
+                                     [&](std::size_t k, Point p) { return less(ring[k], p); });
+    if (it == byPoint.end() || !(ring[*it] == points_[i])) continue;  // not a vertex of the hull
+    edges_[i] = std::pair{normals[(*it + n - 1) % n], normals[*it]};
+  }
+}
+
+void SweptShape::along(Point from, Point to, std::vector<Point>& out) const {
+  out.clear();
+  const Point d = to - from;
+  // Within a relative 1e-9 of facing sideways, a vertex counts as facing both ways.
+  const auto faces = [&](Point normal, double sign) {
+    return sign * dot(normal, d) >= -1e-9 * std::sqrt(dot(normal, normal) * dot(d, d));
+  };
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    if (edges_.empty()) {
+      out.push_back(from + points_[i]);
+      out.push_back(to + points_[i]);
+      continue;
+    }
+    if (!edges_[i]) continue;
+    const auto [before, after] = *edges_[i];
+    if (faces(before, -1) || faces(after, -1)) out.push_back(from + points_[i]);
+    if (faces(before, 1) || faces(after, 1)) out.push_back(to + points_[i]);
+  }
+}
+
+namespace {
+
 // The convex shape swept along the chain of chords: the union of its hulls along each chord.
-BgRegion sweptAlongChords(const std::vector<Point>& chords, const std::vector<Point>& shape) {
+BgRegion sweptAlongChords(const std::vector<Point>& chords, const SweptShape& shape) {
   BgRegion swept;
-  for (std::size_t k = 0; k + 1 < chords.size(); ++k) uniteWith(swept, hullAlongChord(chords[k], chords[k + 1], shape));
+  std::vector<Point> points;
+  for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
+    shape.along(chords[k], chords[k + 1], points);
+    uniteWith(swept, convexHullOf(points));
+  }
   tidy(swept);
   return swept;
 }
 
 }  // namespace
 
-BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
+BgRegion sweptConvexShape(const Segment& move, const SweptShape& shape, double chordTolerance) {
   return sweptAlongChords(flatten(move, chordTolerance), shape);
+}
+
+BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance) {
+  return sweptConvexShape(move, SweptShape(shape), chordTolerance);
 }
 
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
@@ -100,7 +229,7 @@ BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b
   const std::vector<Point> shape{{0, 0}, sideA, sideA + sideB, sideB};
   const std::vector<Point> chords = flatten(move, chordTolerance);
   // One chord (a line): its hull, no union to spare. A segment (a or b zero) has no open cones.
-  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, shape);
+  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, SweptShape(shape));
   // An arc's chords: each run in one open cone swept at once; a chord along a side, by its hull.
   BgRegion swept;
   for (std::size_t k = 0; k + 1 < chords.size();) {

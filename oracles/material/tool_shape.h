@@ -6,6 +6,8 @@
 // a move removes (and may cross) exactly the region the rectangle sweeps — the Minkowski sum of the
 // move and the rectangle — not a shadow.
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "oracles/material/material_model.h"
 #include "oracles/material/region.h"
@@ -28,9 +30,29 @@ struct BladeFrame {
 // The convex hull of `points` as a region (empty when they span no area).
 BgRegion convexHullOf(const std::vector<Point>& points);
 
+// A convex shape to sweep: its points (relative to the tool's programmed point), with its own
+// hull's vertices and their edges' normals found once, so that each chord's hull is fed only the
+// points that can lie on it — the same hull (convexHullOf), without the far half of a disc.
+class SweptShape {
+ public:
+  explicit SweptShape(std::vector<Point> points);
+  const std::vector<Point>& points() const { return points_; }
+  // (shape + from) ∪ (shape + to), in that order point by point, without the points that cannot
+  // be on their hull, into `out`.
+  void along(Point from, Point to, std::vector<Point>& out) const;
+
+ private:
+  static double dot(Point a, Point b) { return a.z * b.z + a.x * b.x; }
+  std::vector<Point> points_;
+  // Per point on the shape's hull: the outward normals of the hull's edges before and after it
+  // (empty when the shape spans no area: every point is fed).
+  std::vector<std::optional<std::pair<Point, Point>>> edges_;
+};
+
 // The Minkowski sum of `move` (arcs as chords within chordTolerance) and the convex shape whose
 // points (relative to the tool's programmed point) are `shape`: the union of the convex hulls of the
 // shape at each chord's two ends.
+BgRegion sweptConvexShape(const Segment& move, const SweptShape& shape, double chordTolerance);
 BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, double chordTolerance);
 
 // The Minkowski sum of `move` (arcs as chords within chordTolerance) and the parallelogram spanned
