@@ -12,6 +12,8 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -396,16 +398,33 @@ SiemensPlacement placementFor(const SiemensFuzzCase& s, const std::vector<Contou
   return place;
 }
 
-struct BlockWriter {
-  bool compact;
-  std::string text;
-  void block(const std::vector<std::string>& words) {
-    for (std::size_t i = 0; i < words.size(); ++i) text += (i && !compact ? " " : "") + words[i];
-    text += "\n";
+// Writes blocks word by word into one text (no list of words per block: the writing is part of
+// every fuzz case's cost): words apart by a space, or run together when compact.
+class BlockWriter {
+ public:
+  explicit BlockWriter(bool compact) : compact_(compact) {}
+  // A word: its address ("G", "X", "CR=") and its value as written.
+  BlockWriter& word(std::string_view address, std::string_view value = {}) {
+    if (!atBlockStart_ && !compact_) text_ += ' ';
+    text_.append(address).append(value);
+    atBlockStart_ = false;
+    return *this;
   }
+  void endBlock() {
+    text_ += '\n';
+    atBlockStart_ = true;
+  }
+  std::string text() && { return std::move(text_); }
+
+ private:
+  bool compact_;
+  bool atBlockStart_ = true;
+  std::string text_;
 };
 
-std::string xWord(long radius) { return "X" + mm(2 * radius); }  // X is a diameter (G23 / DIAMON)
+std::string diameter(long radius) { return mm(2 * radius); }  // X is a diameter (G23 / DIAMON)
+
+std::string xWord(long radius) { return "X" + diameter(radius); }
 
 const char* cornerAddress(SiemensSegment::Corner c) {
   switch (c) {
@@ -428,30 +447,28 @@ std::string siemensContourProgram(const FuzzCase& c) {
   const SiemensFuzzCase& s = c.siemens;
   const std::vector<ContourPiece> pieces = writtenPieces(s);
   const SiemensPlacement place = placementFor(s, piecesOf(s));
-  BlockWriter w{s.compact, {}};
+  BlockWriter w(s.compact);
   const auto [z0, x0] = place.planePoint(pieces.front().fromZ, pieces.front().fromX);
-  w.block({"G1", xWord(x0), "Z" + mm(z0)});
+  w.word("G1").word("X", diameter(x0)).word("Z", mm(z0)).endBlock();
   for (const ContourPiece& p : pieces) {
     const auto [z, x] = place.planePoint(p.toZ, p.toX);
-    std::vector<std::string> words;
     if (p.kind == ContourPiece::Line) {
-      words = {"G1", xWord(x), "Z" + mm(z)};
+      w.word("G1").word("X", diameter(x)).word("Z", mm(z));
     } else {
       const bool ccw = (p.kind == ContourPiece::Ccw) != place.turnsArcs();
-      words = {ccw ? "G3" : "G2", xWord(x), "Z" + mm(z)};
+      w.word(ccw ? "G3" : "G2").word("X", diameter(x)).word("Z", mm(z));
       if (p.centreWords) {
         const auto [k, i] = place.planeVector(p.centreZ - p.fromZ, p.centreX - p.fromX);
-        words.push_back("I" + mm(i));  // SIEMENS.ARC: the centre from the start, I a radius
-        words.push_back("K" + mm(k));
+        w.word("I", mm(i)).word("K", mm(k));  // SIEMENS.ARC: the centre from the start, I a radius
       } else {
-        words.push_back("CR=" + mm(p.radius));
+        w.word("CR=", mm(p.radius));
       }
     }
-    if (p.corner != SiemensSegment::NoCorner) words.push_back(cornerAddress(p.corner) + mm(p.cornerSize));
-    w.block(words);
+    if (p.corner != SiemensSegment::NoCorner) w.word(cornerAddress(p.corner), mm(p.cornerSize));
+    w.endBlock();
   }
-  w.block({"RET"});
-  return w.text;
+  w.word("RET").endBlock();
+  return std::move(w).text();
 }
 
 std::string siemensMainProgram(const FuzzCase& c) {

@@ -51,11 +51,12 @@ SiemensToken SiemensLexer::name() {
 }
 
 // The number's characters by the FANUC reader's rules (a lexer over the rest of the line: its
-// errors are moved to this line and column), its value as the FANUC reader reads it (readNumber).
+// errors are moved to this file, line and column, so it needs no copy of the file's name), its
+// value as the FANUC reader reads it (readNumber).
 SiemensToken SiemensLexer::number() {
   Token scanned;
   try {
-    scanned = Lexer(line_.substr(pos_), file_).next();
+    scanned = Lexer(line_.substr(pos_), std::string()).next();
   } catch (const ParseError& e) {
     throw ParseError({file_, lineNumber_, static_cast<int>(pos_) + e.loc().column}, e.expected(), e.found());
   }
