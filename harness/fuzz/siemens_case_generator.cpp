@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -424,8 +424,6 @@ class BlockWriter {
 
 std::string diameter(long radius) { return mm(2 * radius); }  // X is a diameter (G23 / DIAMON)
 
-std::string xWord(long radius) { return "X" + diameter(radius); }
-
 const char* cornerAddress(SiemensSegment::Corner c) {
   switch (c) {
     case SiemensSegment::Chamfer: return "CHF=";
@@ -481,19 +479,26 @@ std::string siemensMainProgram(const FuzzCase& c) {
   // The start beyond the contour on the entry side (+z of the frame) and above it (+x): clear of
   // the part and of the cycle's own start.
   const auto [z, x] = place.planePoint(clear, xMax + clear);
-  std::string p = "T1 D1\nG0 " + xWord(x) + " Z" + mm(z) + "\n";
+  // Appended piece by piece into room for the whole program (no temporaries, no regrowth: the
+  // writing is part of every fuzz case's cost).
+  std::string p;
+  p.reserve(160);
+  const auto append = [&p](std::initializer_list<std::string_view> pieces) {
+    for (std::string_view piece : pieces) p += piece;
+  };
+  append({"T1 D1\nG0 X", diameter(x), " Z", mm(z), "\n"});
   if (!s.cycle95) {
-    p += std::string("_CNAME=\"") + kSiemensContourName + "\"\n";
-    p += "R105=" + std::to_string(s.type) + " R106=" + mm(s.allowance) + " R108=" + mm(s.maxInfeed) +
-         " R109=" + std::to_string(s.infeedAngle) + "\n";
-    p += "R110=" + mm(s.retract) + " R111=" + mm(s.roughingFeed) + " R112=" + mm(s.finishingFeed) + "\n";
-    p += "LCYC95\nM02\n";
+    append({"_CNAME=\"", kSiemensContourName, "\"\n"});
+    append({"R105=", std::to_string(s.type), " R106=", mm(s.allowance), " R108=", mm(s.maxInfeed), " R109=",
+            std::to_string(s.infeedAngle), "\n"});
+    append({"R110=", mm(s.retract), " R111=", mm(s.roughingFeed), " R112=", mm(s.finishingFeed), "\n"});
+    append({"LCYC95\nM02\n"});
     return p;
   }
-  p += std::string("CYCLE95(\"") + kSiemensContourName + "\", " + mm(s.maxInfeed) + ", " + mm(s.allowanceZ) + ", " +
-       mm(s.allowanceX) + ", " + mm(s.allowance) + ", " + mm(s.roughingFeed) + ", " + mm(s.undercutFeed) + ", " +
-       mm(s.finishingFeed) + ", " + std::to_string(s.type) + ", " + mm(10L * s.dwell) + ", " + mm(s.interruptLength) +
-       ", " + mm(s.retract) + ")\nM02\n";
+  append({"CYCLE95(\"", kSiemensContourName, "\", ", mm(s.maxInfeed), ", ", mm(s.allowanceZ), ", ", mm(s.allowanceX),
+          ", ", mm(s.allowance), ", ", mm(s.roughingFeed), ", ", mm(s.undercutFeed), ", ", mm(s.finishingFeed), ", ",
+          std::to_string(s.type), ", ", mm(10L * s.dwell), ", ", mm(s.interruptLength), ", ", mm(s.retract),
+          ")\nM02\n"});
   return p;
 }
 
@@ -561,21 +566,26 @@ std::string describeSiemensCase(const FuzzCase& c) {
   const SiemensFuzzCase& s = c.siemens;
   const auto arcs = std::count_if(s.segments.begin(), s.segments.end(), [](const SiemensSegment& g) { return g.kind != SiemensSegment::Line; });
   const auto corners = std::count_if(s.segments.begin(), s.segments.end(), [](const SiemensSegment& g) { return g.corner != SiemensSegment::NoCorner; });
-  std::ostringstream o;
-  o << (s.cycle95 ? "CYCLE95" : "LCYC95") << " " << typeText(s) << ", " << s.segments.size() << " segment(s) (" << arcs
-    << " arc(s), " << corners << " corner(s), " << undercutsOf(s) << " turning back), " << c.profile << ", "
-    << (s.cycle95 ? "MID " : "R108 ") << mm(s.maxInfeed) << ", " << (s.cycle95 ? "_VRT " : "R110 ") << mm(s.retract)
-    << ", " << (s.cycle95 ? "FAL " : "R106 ") << mm(s.allowance);
+  // Appended piece by piece (no stream: the title is written for every fuzz case).
+  std::string o;
+  o.reserve(200);
+  const auto append = [&o](std::initializer_list<std::string_view> pieces) {
+    for (std::string_view piece : pieces) o += piece;
+  };
+  append({s.cycle95 ? "CYCLE95" : "LCYC95", " ", typeText(s), ", ", std::to_string(s.segments.size()), " segment(s) (",
+          std::to_string(arcs), " arc(s), ", std::to_string(corners), " corner(s), ", std::to_string(undercutsOf(s)),
+          " turning back), ", c.profile, ", ", s.cycle95 ? "MID " : "R108 ", mm(s.maxInfeed), ", ",
+          s.cycle95 ? "_VRT " : "R110 ", mm(s.retract), ", ", s.cycle95 ? "FAL " : "R106 ", mm(s.allowance)});
   if (s.cycle95) {
-    o << ", FALZ " << mm(s.allowanceZ) << " FALX " << mm(s.allowanceX) << ", FF1 " << mm(s.roughingFeed) << " FF2 "
-      << mm(s.undercutFeed);
-    if (s.interruptLength) o << ", DAM " << mm(s.interruptLength);
-    if (s.dwell) o << ", DT " << mm(10L * s.dwell);
+    append({", FALZ ", mm(s.allowanceZ), " FALX ", mm(s.allowanceX), ", FF1 ", mm(s.roughingFeed), " FF2 ",
+            mm(s.undercutFeed)});
+    if (s.interruptLength) append({", DAM ", mm(s.interruptLength)});
+    if (s.dwell) append({", DT ", mm(10L * s.dwell)});
   } else if (s.infeedAngle) {
-    o << ", R109 " << s.infeedAngle;
+    append({", R109 ", std::to_string(s.infeedAngle)});
   }
-  o << faultText(s.fault);
-  return o.str();
+  o += faultText(s.fault);
+  return o;
 }
 
 nlohmann::json siemensSpecJson(const FuzzCase& c, const std::string& tag) {

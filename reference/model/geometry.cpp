@@ -17,9 +17,24 @@ double normalized(double a) {
   return a < 0 ? a + kTwoPi : a;
 }
 
+// sweep() of an arc whose end angles `a0` (from) and `a1` (to) are known: ArcAngles has the start's
+// already (each angle is an atan2, a hot spot of the planners and the material replay).
+double sweepFromAngles(const Segment& s, double a0, double a1) {
+  // A closed arc (from == to) is a full circle.
+  const bool full = nearlyEqual(s.from, s.to);
+  if (s.kind == SegmentKind::ArcCCW) {
+    const double d = normalized(a1 - a0);
+    return (full || d == 0) ? kTwoPi : d;
+  }
+  const double d = normalized(a0 - a1);
+  return -((full || d == 0) ? kTwoPi : d);
+}
+
 }  // namespace
 
-ArcAngles::ArcAngles(const Segment& arc) : start(angleOf(arc.from, arc.center)), sweep(cyclecert::sweep(arc)) {}
+ArcAngles::ArcAngles(const Segment& arc)
+    : start(angleOf(arc.from, arc.center)),
+      sweep(arc.isArc() ? sweepFromAngles(arc, start, angleOf(arc.to, arc.center)) : 0) {}
 
 std::optional<double> offsetAlongArc(const Segment& s, double a) { return offsetAlongArc(ArcAngles(s), a); }
 
@@ -67,16 +82,7 @@ Segment Segment::reversed() const {
 
 double sweep(const Segment& s) {
   if (!s.isArc()) return 0;
-  const double a0 = angleOf(s.from, s.center);
-  const double a1 = angleOf(s.to, s.center);
-  // A closed arc (from == to) is a full circle.
-  const bool full = nearlyEqual(s.from, s.to);
-  if (s.kind == SegmentKind::ArcCCW) {
-    const double d = normalized(a1 - a0);
-    return (full || d == 0) ? kTwoPi : d;
-  }
-  const double d = normalized(a0 - a1);
-  return -((full || d == 0) ? kTwoPi : d);
+  return sweepFromAngles(s, angleOf(s.from, s.center), angleOf(s.to, s.center));
 }
 
 Point pointAt(const Segment& s, double t) {
