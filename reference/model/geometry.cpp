@@ -139,17 +139,29 @@ std::vector<Point> intersectWithLevelX(const Segment& s, double level) {
   return hits;
 }
 
-std::vector<Point> apexesAlong(const Segment& s) {
-  std::vector<std::pair<double, Point>> found;
-  if (!s.isArc()) return {};
-  const double r = s.radius();
-  const ArcAngles angles(s);
+namespace {
+
+// Calls `f(offset along the arc, point)` for each apex strictly inside the arc, in the order of
+// their angles (0, π/2, π, 3π/2): apexesAlong sorts them, extent needs no order (nor the two
+// vectors apexesAlong returns through; extent is a hot spot of the planners).
+template <class F>
+void forEachApex(const Segment& arc, F&& f) {
+  const double r = arc.radius();
+  const ArcAngles angles(arc);
   for (int k = 0; k < 4; ++k) {
     const double a = k * std::numbers::pi / 2;
     if (auto off = offsetAlongArc(angles, a); off && *off > 0 && *off < std::abs(angles.sweep)) {
-      found.push_back({*off, {s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)}});
+      f(*off, Point{arc.center.z + r * std::cos(a), arc.center.x + r * std::sin(a)});
     }
   }
+}
+
+}  // namespace
+
+std::vector<Point> apexesAlong(const Segment& s) {
+  std::vector<std::pair<double, Point>> found;
+  if (!s.isArc()) return {};
+  forEachApex(s, [&found](double off, Point p) { found.push_back({off, p}); });
   std::sort(found.begin(), found.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Point> points;
@@ -160,12 +172,13 @@ std::vector<Point> apexesAlong(const Segment& s) {
 Extent extent(const Segment& s) {
   Extent e{std::min(s.from.z, s.to.z), std::max(s.from.z, s.to.z), std::min(s.from.x, s.to.x),
            std::max(s.from.x, s.to.x)};
-  for (Point p : apexesAlong(s)) {
+  if (!s.isArc()) return e;
+  forEachApex(s, [&e](double, Point p) {
     e.zMin = std::min(e.zMin, p.z);
     e.zMax = std::max(e.zMax, p.z);
     e.xMin = std::min(e.xMin, p.x);
     e.xMax = std::max(e.xMax, p.x);
-  }
+  });
   return e;
 }
 

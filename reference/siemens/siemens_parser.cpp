@@ -186,6 +186,8 @@ class BlockParser {
                          word.text);
       }
     }
+    // Room for a block's usual words at once (G X Z and one more) rather than growing 1, 2, 4.
+    if (block_.words.empty()) block_.words.reserve(4);
     block_.words.push_back(std::move(word));
   }
 
