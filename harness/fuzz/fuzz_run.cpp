@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <charconv>
 #include <climits>
 #include <iomanip>
-#include <iterator>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -54,13 +52,10 @@ FuzzVerdict judged(EngineResult r, Engine& engine, Engine* vs, const SpecCase& c
 
 }  // namespace
 
-// Sixteen lower-case hex digits, zero-padded (written without a stream: three tags per case).
 std::string caseSeedTag(std::uint64_t caseSeed) {
-  char digits[16];
-  const auto written = std::to_chars(std::begin(digits), std::end(digits), caseSeed, 16).ptr - digits;
-  std::string tag(16 - written, '0');
-  tag.append(digits, static_cast<std::size_t>(written));
-  return tag;
+  std::ostringstream s;
+  s << std::hex << std::setw(16) << std::setfill('0') << caseSeed;
+  return s.str();
 }
 
 FuzzCase generateFuzzCase(std::uint64_t caseSeed, const CycleFormats& formats, const FuzzCycles& cycles) {
