@@ -41,6 +41,15 @@ TEST(FuzzGenerator, TheSameSeedGivesTheSameCase) {
   EXPECT_EQ(fuzzCaseSeed(kSeed, 0), kSeed);
 }
 
+// A case's tag names its results and files: 16 lowercase hex digits, leading zeros kept.
+TEST(FuzzGenerator, ACaseSeedTagIsSixteenHexDigits) {
+  EXPECT_EQ(caseSeedTag(0), "0000000000000000");
+  EXPECT_EQ(caseSeedTag(5), "0000000000000005");
+  EXPECT_EQ(caseSeedTag(0x9E3779B97F4A7C1AULL), "9e3779b97f4a7c1a");
+  EXPECT_EQ(caseSeedTag(UINT64_MAX), "ffffffffffffffff");
+  EXPECT_EQ(caseSeedTag(0xABCULL << 40), "000abc0000000000");
+}
+
 TEST(FuzzGenerator, CoversCyclesQuadrantsShapesAndParameterRanges) {
   std::map<std::string, int> seen;
   for (const FuzzCase& c : sample(3000)) {
