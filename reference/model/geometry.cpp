@@ -1,6 +1,7 @@
 #include "reference/model/geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -125,15 +126,17 @@ std::vector<Point> intersectWithLevelX(const Segment& s, double level) {
   const double dx = level - s.center.x;
   if (std::abs(dx) > r + kGeomEps) return hits;
   const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
-  std::vector<std::pair<double, Point>> ordered;
+  // At most two points, ordered along the arc in place (no vector: a hot spot of the planners).
+  std::array<std::pair<double, Point>, 2> ordered;
+  std::size_t count = 0;
   const ArcAngles angles(s);
   for (double sign : {-1.0, 1.0}) {
     const Point p{s.center.z + sign * h, level};
-    if (auto off = offsetAlongArc(angles, angleOf(p, s.center))) ordered.push_back({*off, p});
+    if (auto off = offsetAlongArc(angles, angleOf(p, s.center))) ordered[count++] = {*off, p};
   }
-  std::sort(ordered.begin(), ordered.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [off, p] : ordered) {
+  if (count == 2 && ordered[1].first < ordered[0].first) std::swap(ordered[0], ordered[1]);
+  for (std::size_t k = 0; k < count; ++k) {
+    const Point p = ordered[k].second;
     if (hits.empty() || !nearlyEqual(hits.back(), p, 1e-12)) hits.push_back(p);
   }
   return hits;
