@@ -699,6 +699,7 @@ MaterialReplay siemensReplayOf(const JudgeInput& in, const std::vector<const Sie
   const double chord = in.settings.chordTolerance;
   const std::optional<BgRegion> given = givenStock(in);
   r.stock = given ? *given : siemensImpliedStock(s, profile, finish, r.away, r.reach, chord);
+  if (!given && !s.roughs()) r.siemensAllowanceLayer = r.stock;
   r.target = r.siemensFinishing ? finish : profile;
   const DepthFrame frame(r.away);
   if (!r.siemensFinishing) {
@@ -760,6 +761,7 @@ class SiemensDocumentedCrossings {
   // Between the roughing profile and the finishing path: made when a rapid to the contour start
   // first crosses material.
   const BgRegion& allowanceLayer() const {
+    if (r_.siemensAllowanceLayer) return *r_.siemensAllowanceLayer;
     if (!layer_) {
       const SiemensCycleSpec& f = r_.siemensFinishing ? *r_.siemensFinishing : s_;
       layer_ = siemensAllowanceLayer(s_, s_.frame.toPlane(s_.profile), f.frame.toPlane(f.finishPath), r_.away, r_.reach,

@@ -31,6 +31,10 @@ struct MaterialReplay {
   Point away;                        // from the part towards the start side, along the depth axis
   double reach = 0;
   BgRegion stock;
+  // SINUMERIK: the allowance layer between the roughing profile and the finishing path, when the
+  // implied stock is that layer (the call only finishes): kept for the documented crossing of the
+  // rapid to the contour start, which would otherwise build the same region again.
+  std::optional<BgRegion> siemensAllowanceLayer;
   std::vector<Segment> target;       // the surface roughing must leave: the rough profile, or the
                                      // finish shape when a G70 follows
   BgRegion part;                     // everything beyond `target`: no move may enter it

@@ -151,6 +151,23 @@ TEST(SiemensParser, ErrorsNameLineColumnAndWhatWasExpected) {
   expectError("M02\nG0X5\n", 2, 1, "nothing after the end at line 1 but a subprogram heading");
 }
 
+// The lexer scans plain numbers itself and leaves the rest to the FANUC lexer (siemens_lexer.cpp):
+// both read the same numbers, and what the FANUC reader refuses keeps its message and column.
+TEST(SiemensParser, NumbersAreReadByTheFanucReadersRules) {
+  const SiemensBlock b = onlyBlock("G1 X+1. Z-.5 F007\n");
+  ASSERT_EQ(b.words.size(), 4u);
+  EXPECT_EQ(b.words[1].text, "X+1.");
+  EXPECT_EQ(b.words[1].value, 1);
+  EXPECT_EQ(b.words[2].text, "Z-.5");
+  EXPECT_EQ(b.words[2].value, -0.5);
+  EXPECT_EQ(b.words[3].value, 7);
+  expectError("G1 X-\n", 1, 6, "a digit");
+  expectError("G1 X-.Z1\n", 1, 7, "a digit");
+  expectError("G1 X-inf\n", 1, 5, "a finite number");
+  expectError("G1 X1.2.3\n", 1, 8, "a single decimal point");
+  expectError("G1 X1234567890.123456\n", 1, 5, "a number of at most 15 significant digits");
+}
+
 TEST(SiemensParser, ASubprogramGivenOnItsOwnHasNoHeadings) {
   EXPECT_EQ(parseSiemensSubprogram("G1X0Z0\nZ-5\nM17\n", "L1.spf").blocks.size(), 3u);
   try {

@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
-#include <sstream>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -396,16 +398,31 @@ SiemensPlacement placementFor(const SiemensFuzzCase& s, const std::vector<Contou
   return place;
 }
 
-struct BlockWriter {
-  bool compact;
-  std::string text;
-  void block(const std::vector<std::string>& words) {
-    for (std::size_t i = 0; i < words.size(); ++i) text += (i && !compact ? " " : "") + words[i];
-    text += "\n";
+// Writes blocks word by word into one text (no list of words per block: the writing is part of
+// every fuzz case's cost): words apart by a space, or run together when compact.
+class BlockWriter {
+ public:
+  explicit BlockWriter(bool compact) : compact_(compact) {}
+  // A word: its address ("G", "X", "CR=") and its value as written.
+  BlockWriter& word(std::string_view address, std::string_view value = {}) {
+    if (!atBlockStart_ && !compact_) text_ += ' ';
+    text_.append(address).append(value);
+    atBlockStart_ = false;
+    return *this;
   }
+  void endBlock() {
+    text_ += '\n';
+    atBlockStart_ = true;
+  }
+  std::string text() && { return std::move(text_); }
+
+ private:
+  bool compact_;
+  bool atBlockStart_ = true;
+  std::string text_;
 };
 
-std::string xWord(long radius) { return "X" + mm(2 * radius); }  // X is a diameter (G23 / DIAMON)
+std::string diameter(long radius) { return mm(2 * radius); }  // X is a diameter (G23 / DIAMON)
 
 const char* cornerAddress(SiemensSegment::Corner c) {
   switch (c) {
@@ -428,30 +445,28 @@ std::string siemensContourProgram(const FuzzCase& c) {
   const SiemensFuzzCase& s = c.siemens;
   const std::vector<ContourPiece> pieces = writtenPieces(s);
   const SiemensPlacement place = placementFor(s, piecesOf(s));
-  BlockWriter w{s.compact, {}};
+  BlockWriter w(s.compact);
   const auto [z0, x0] = place.planePoint(pieces.front().fromZ, pieces.front().fromX);
-  w.block({"G1", xWord(x0), "Z" + mm(z0)});
+  w.word("G1").word("X", diameter(x0)).word("Z", mm(z0)).endBlock();
   for (const ContourPiece& p : pieces) {
     const auto [z, x] = place.planePoint(p.toZ, p.toX);
-    std::vector<std::string> words;
     if (p.kind == ContourPiece::Line) {
-      words = {"G1", xWord(x), "Z" + mm(z)};
+      w.word("G1").word("X", diameter(x)).word("Z", mm(z));
     } else {
       const bool ccw = (p.kind == ContourPiece::Ccw) != place.turnsArcs();
-      words = {ccw ? "G3" : "G2", xWord(x), "Z" + mm(z)};
+      w.word(ccw ? "G3" : "G2").word("X", diameter(x)).word("Z", mm(z));
       if (p.centreWords) {
         const auto [k, i] = place.planeVector(p.centreZ - p.fromZ, p.centreX - p.fromX);
-        words.push_back("I" + mm(i));  // SIEMENS.ARC: the centre from the start, I a radius
-        words.push_back("K" + mm(k));
+        w.word("I", mm(i)).word("K", mm(k));  // SIEMENS.ARC: the centre from the start, I a radius
       } else {
-        words.push_back("CR=" + mm(p.radius));
+        w.word("CR=", mm(p.radius));
       }
     }
-    if (p.corner != SiemensSegment::NoCorner) words.push_back(cornerAddress(p.corner) + mm(p.cornerSize));
-    w.block(words);
+    if (p.corner != SiemensSegment::NoCorner) w.word(cornerAddress(p.corner), mm(p.cornerSize));
+    w.endBlock();
   }
-  w.block({"RET"});
-  return w.text;
+  w.word("RET").endBlock();
+  return std::move(w).text();
 }
 
 std::string siemensMainProgram(const FuzzCase& c) {
@@ -464,19 +479,26 @@ std::string siemensMainProgram(const FuzzCase& c) {
   // The start beyond the contour on the entry side (+z of the frame) and above it (+x): clear of
   // the part and of the cycle's own start.
   const auto [z, x] = place.planePoint(clear, xMax + clear);
-  std::string p = "T1 D1\nG0 " + xWord(x) + " Z" + mm(z) + "\n";
+  // Appended piece by piece into room for the whole program (no temporaries, no regrowth: the
+  // writing is part of every fuzz case's cost).
+  std::string p;
+  p.reserve(160);
+  const auto append = [&p](std::initializer_list<std::string_view> pieces) {
+    for (std::string_view piece : pieces) p += piece;
+  };
+  append({"T1 D1\nG0 X", diameter(x), " Z", mm(z), "\n"});
   if (!s.cycle95) {
-    p += std::string("_CNAME=\"") + kSiemensContourName + "\"\n";
-    p += "R105=" + std::to_string(s.type) + " R106=" + mm(s.allowance) + " R108=" + mm(s.maxInfeed) +
-         " R109=" + std::to_string(s.infeedAngle) + "\n";
-    p += "R110=" + mm(s.retract) + " R111=" + mm(s.roughingFeed) + " R112=" + mm(s.finishingFeed) + "\n";
-    p += "LCYC95\nM02\n";
+    append({"_CNAME=\"", kSiemensContourName, "\"\n"});
+    append({"R105=", std::to_string(s.type), " R106=", mm(s.allowance), " R108=", mm(s.maxInfeed), " R109=",
+            std::to_string(s.infeedAngle), "\n"});
+    append({"R110=", mm(s.retract), " R111=", mm(s.roughingFeed), " R112=", mm(s.finishingFeed), "\n"});
+    append({"LCYC95\nM02\n"});
     return p;
   }
-  p += std::string("CYCLE95(\"") + kSiemensContourName + "\", " + mm(s.maxInfeed) + ", " + mm(s.allowanceZ) + ", " +
-       mm(s.allowanceX) + ", " + mm(s.allowance) + ", " + mm(s.roughingFeed) + ", " + mm(s.undercutFeed) + ", " +
-       mm(s.finishingFeed) + ", " + std::to_string(s.type) + ", " + mm(10L * s.dwell) + ", " + mm(s.interruptLength) +
-       ", " + mm(s.retract) + ")\nM02\n";
+  append({"CYCLE95(\"", kSiemensContourName, "\", ", mm(s.maxInfeed), ", ", mm(s.allowanceZ), ", ", mm(s.allowanceX),
+          ", ", mm(s.allowance), ", ", mm(s.roughingFeed), ", ", mm(s.undercutFeed), ", ", mm(s.finishingFeed), ", ",
+          std::to_string(s.type), ", ", mm(10L * s.dwell), ", ", mm(s.interruptLength), ", ", mm(s.retract),
+          ")\nM02\n"});
   return p;
 }
 
@@ -544,21 +566,26 @@ std::string describeSiemensCase(const FuzzCase& c) {
   const SiemensFuzzCase& s = c.siemens;
   const auto arcs = std::count_if(s.segments.begin(), s.segments.end(), [](const SiemensSegment& g) { return g.kind != SiemensSegment::Line; });
   const auto corners = std::count_if(s.segments.begin(), s.segments.end(), [](const SiemensSegment& g) { return g.corner != SiemensSegment::NoCorner; });
-  std::ostringstream o;
-  o << (s.cycle95 ? "CYCLE95" : "LCYC95") << " " << typeText(s) << ", " << s.segments.size() << " segment(s) (" << arcs
-    << " arc(s), " << corners << " corner(s), " << undercutsOf(s) << " turning back), " << c.profile << ", "
-    << (s.cycle95 ? "MID " : "R108 ") << mm(s.maxInfeed) << ", " << (s.cycle95 ? "_VRT " : "R110 ") << mm(s.retract)
-    << ", " << (s.cycle95 ? "FAL " : "R106 ") << mm(s.allowance);
+  // Appended piece by piece (no stream: the title is written for every fuzz case).
+  std::string o;
+  o.reserve(200);
+  const auto append = [&o](std::initializer_list<std::string_view> pieces) {
+    for (std::string_view piece : pieces) o += piece;
+  };
+  append({s.cycle95 ? "CYCLE95" : "LCYC95", " ", typeText(s), ", ", std::to_string(s.segments.size()), " segment(s) (",
+          std::to_string(arcs), " arc(s), ", std::to_string(corners), " corner(s), ", std::to_string(undercutsOf(s)),
+          " turning back), ", c.profile, ", ", s.cycle95 ? "MID " : "R108 ", mm(s.maxInfeed), ", ",
+          s.cycle95 ? "_VRT " : "R110 ", mm(s.retract), ", ", s.cycle95 ? "FAL " : "R106 ", mm(s.allowance)});
   if (s.cycle95) {
-    o << ", FALZ " << mm(s.allowanceZ) << " FALX " << mm(s.allowanceX) << ", FF1 " << mm(s.roughingFeed) << " FF2 "
-      << mm(s.undercutFeed);
-    if (s.interruptLength) o << ", DAM " << mm(s.interruptLength);
-    if (s.dwell) o << ", DT " << mm(10L * s.dwell);
+    append({", FALZ ", mm(s.allowanceZ), " FALX ", mm(s.allowanceX), ", FF1 ", mm(s.roughingFeed), " FF2 ",
+            mm(s.undercutFeed)});
+    if (s.interruptLength) append({", DAM ", mm(s.interruptLength)});
+    if (s.dwell) append({", DT ", mm(10L * s.dwell)});
   } else if (s.infeedAngle) {
-    o << ", R109 " << s.infeedAngle;
+    append({", R109 ", std::to_string(s.infeedAngle)});
   }
-  o << faultText(s.fault);
-  return o.str();
+  o += faultText(s.fault);
+  return o;
 }
 
 nlohmann::json siemensSpecJson(const FuzzCase& c, const std::string& tag) {

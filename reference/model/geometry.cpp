@@ -1,6 +1,7 @@
 #include "reference/model/geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -17,9 +18,24 @@ double normalized(double a) {
   return a < 0 ? a + kTwoPi : a;
 }
 
+// sweep() of an arc whose end angles `a0` (from) and `a1` (to) are known: ArcAngles has the start's
+// already (each angle is an atan2, a hot spot of the planners and the material replay).
+double sweepFromAngles(const Segment& s, double a0, double a1) {
+  // A closed arc (from == to) is a full circle.
+  const bool full = nearlyEqual(s.from, s.to);
+  if (s.kind == SegmentKind::ArcCCW) {
+    const double d = normalized(a1 - a0);
+    return (full || d == 0) ? kTwoPi : d;
+  }
+  const double d = normalized(a0 - a1);
+  return -((full || d == 0) ? kTwoPi : d);
+}
+
 }  // namespace
 
-ArcAngles::ArcAngles(const Segment& arc) : start(angleOf(arc.from, arc.center)), sweep(cyclecert::sweep(arc)) {}
+ArcAngles::ArcAngles(const Segment& arc)
+    : start(angleOf(arc.from, arc.center)),
+      sweep(arc.isArc() ? sweepFromAngles(arc, start, angleOf(arc.to, arc.center)) : 0) {}
 
 std::optional<double> offsetAlongArc(const Segment& s, double a) { return offsetAlongArc(ArcAngles(s), a); }
 
@@ -67,16 +83,7 @@ Segment Segment::reversed() const {
 
 double sweep(const Segment& s) {
   if (!s.isArc()) return 0;
-  const double a0 = angleOf(s.from, s.center);
-  const double a1 = angleOf(s.to, s.center);
-  // A closed arc (from == to) is a full circle.
-  const bool full = nearlyEqual(s.from, s.to);
-  if (s.kind == SegmentKind::ArcCCW) {
-    const double d = normalized(a1 - a0);
-    return (full || d == 0) ? kTwoPi : d;
-  }
-  const double d = normalized(a0 - a1);
-  return -((full || d == 0) ? kTwoPi : d);
+  return sweepFromAngles(s, angleOf(s.from, s.center), angleOf(s.to, s.center));
 }
 
 Point pointAt(const Segment& s, double t) {
@@ -119,31 +126,45 @@ std::vector<Point> intersectWithLevelX(const Segment& s, double level) {
   const double dx = level - s.center.x;
   if (std::abs(dx) > r + kGeomEps) return hits;
   const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
-  std::vector<std::pair<double, Point>> ordered;
+  // At most two points, ordered along the arc in place (no vector: a hot spot of the planners).
+  std::array<std::pair<double, Point>, 2> ordered;
+  std::size_t count = 0;
   const ArcAngles angles(s);
   for (double sign : {-1.0, 1.0}) {
     const Point p{s.center.z + sign * h, level};
-    if (auto off = offsetAlongArc(angles, angleOf(p, s.center))) ordered.push_back({*off, p});
+    if (auto off = offsetAlongArc(angles, angleOf(p, s.center))) ordered[count++] = {*off, p};
   }
-  std::sort(ordered.begin(), ordered.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [off, p] : ordered) {
+  if (count == 2 && ordered[1].first < ordered[0].first) std::swap(ordered[0], ordered[1]);
+  for (std::size_t k = 0; k < count; ++k) {
+    const Point p = ordered[k].second;
     if (hits.empty() || !nearlyEqual(hits.back(), p, 1e-12)) hits.push_back(p);
   }
   return hits;
 }
 
-std::vector<Point> apexesAlong(const Segment& s) {
-  std::vector<std::pair<double, Point>> found;
-  if (!s.isArc()) return {};
-  const double r = s.radius();
-  const ArcAngles angles(s);
+namespace {
+
+// Calls `f(offset along the arc, point)` for each apex strictly inside the arc, in the order of
+// their angles (0, π/2, π, 3π/2): apexesAlong sorts them, extent needs no order (nor the two
+// vectors apexesAlong returns through; extent is a hot spot of the planners).
+template <class F>
+void forEachApex(const Segment& arc, F&& f) {
+  const double r = arc.radius();
+  const ArcAngles angles(arc);
   for (int k = 0; k < 4; ++k) {
     const double a = k * std::numbers::pi / 2;
     if (auto off = offsetAlongArc(angles, a); off && *off > 0 && *off < std::abs(angles.sweep)) {
-      found.push_back({*off, {s.center.z + r * std::cos(a), s.center.x + r * std::sin(a)}});
+      f(*off, Point{arc.center.z + r * std::cos(a), arc.center.x + r * std::sin(a)});
     }
   }
+}
+
+}  // namespace
+
+std::vector<Point> apexesAlong(const Segment& s) {
+  std::vector<std::pair<double, Point>> found;
+  if (!s.isArc()) return {};
+  forEachApex(s, [&found](double off, Point p) { found.push_back({off, p}); });
   std::sort(found.begin(), found.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Point> points;
@@ -154,12 +175,13 @@ std::vector<Point> apexesAlong(const Segment& s) {
 Extent extent(const Segment& s) {
   Extent e{std::min(s.from.z, s.to.z), std::max(s.from.z, s.to.z), std::min(s.from.x, s.to.x),
            std::max(s.from.x, s.to.x)};
-  for (Point p : apexesAlong(s)) {
+  if (!s.isArc()) return e;
+  forEachApex(s, [&e](double, Point p) {
     e.zMin = std::min(e.zMin, p.z);
     e.zMax = std::max(e.zMax, p.z);
     e.xMin = std::min(e.xMin, p.x);
     e.xMax = std::max(e.xMax, p.x);
-  }
+  });
   return e;
 }
 

@@ -14,6 +14,22 @@ bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
+// The length of the number `s` starts with when it is a plain one — a sign, digits with at most one
+// decimal point among them, and no second one after — or 0. These are the FANUC reader's rules
+// (Lexer::number, reference/gcode/lexer.cpp) for the numbers it takes; what it refuses is left to
+// it (fanucNumberLength), so that its messages stay the only ones. A SINUMERIK case's numbers are
+// most of its parsing, and the FANUC lexer's set-up per number cost more than the scan.
+std::size_t plainNumberLength(std::string_view s) {
+  std::size_t end = !s.empty() && (s[0] == '+' || s[0] == '-') ? 1 : 0;
+  std::size_t digits = 0;
+  for (; end < s.size() && isDigit(s[end]); ++end) ++digits;
+  if (end < s.size() && s[end] == '.') {
+    for (++end; end < s.size() && isDigit(s[end]); ++end) ++digits;
+  }
+  const bool secondPoint = end < s.size() && s[end] == '.';
+  return digits == 0 || secondPoint ? 0 : end;
+}
+
 }  // namespace
 
 std::string SiemensToken::upperName() const {
@@ -50,20 +66,26 @@ SiemensToken SiemensLexer::name() {
   return take(SiemensTokenKind::Name, end - pos_);
 }
 
-// The number's characters by the FANUC reader's rules (a lexer over the rest of the line: its
-// errors are moved to this line and column), its value as the FANUC reader reads it (readNumber).
+// The number's characters by the FANUC reader's rules (plainNumberLength, else the FANUC lexer),
+// its value as the FANUC reader reads it (readNumber).
 SiemensToken SiemensLexer::number() {
-  Token scanned;
-  try {
-    scanned = Lexer(line_.substr(pos_), file_).next();
-  } catch (const ParseError& e) {
-    throw ParseError({file_, lineNumber_, static_cast<int>(pos_) + e.loc().column}, e.expected(), e.found());
-  }
-  SiemensToken token = take(SiemensTokenKind::Number, scanned.text.size());
+  std::size_t length = plainNumberLength(line_.substr(pos_));
+  if (length == 0) length = fanucNumberLength();
+  SiemensToken token = take(SiemensTokenKind::Number, length);
   const NumberReading r = readNumber(token.text);
   if (r.expected) throw ParseError({file_, lineNumber_, token.column}, r.expected, std::string(token.text));
   token.number = r.value;
   return token;
+}
+
+// The number here as the FANUC lexer reads it (a lexer over the rest of the line: its errors are
+// moved to this file, line and column, so it needs no copy of the file's name).
+std::size_t SiemensLexer::fanucNumberLength() const {
+  try {
+    return Lexer(line_.substr(pos_), std::string()).next().text.size();
+  } catch (const ParseError& e) {
+    throw ParseError({file_, lineNumber_, static_cast<int>(pos_) + e.loc().column}, e.expected(), e.found());
+  }
 }
 
 SiemensToken SiemensLexer::string() {

@@ -32,6 +32,7 @@ class SiemensLexer {
  private:
   SiemensToken name();
   SiemensToken number();
+  std::size_t fanucNumberLength() const;
   SiemensToken string();
   SiemensToken take(SiemensTokenKind kind, std::size_t length);
   [[noreturn]] void fail(std::size_t offset, const std::string& expected) const;

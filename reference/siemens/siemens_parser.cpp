@@ -111,8 +111,11 @@ class BlockParser {
     throw ParseError({lexer_.file(), lexer_.lineNumber(), at.column}, expected, describe(at));
   }
 
-  SiemensToken expect(SiemensTokenKind kind, const std::string& expected) {
-    if (current_.kind != kind) fail(current_, expected);
+  // `expected()` says what was expected: the message is only built for an error (a parse builds
+  // none, and its words are most of a fuzz case's parsing).
+  template <class Expected>
+  SiemensToken expect(SiemensTokenKind kind, const Expected& expected) {
+    if (current_.kind != kind) fail(current_, expected());
     return advance();
   }
 
@@ -120,11 +123,12 @@ class BlockParser {
     if (current_.kind != SiemensTokenKind::Name) fail(current_, kEverythingAccepted);
     const SiemensToken name = advance();
     const std::string upper = name.upperName();
-    if (upper == "R") return rAssignment(name);
-    if (upper == "CR" || upper == "CHF" || upper == "CHR" || upper == "RND") return namedValue(name, upper);
-    if (upper == "_CNAME") return stringAssignment(name, upper);
-    if (upper == "LCYC" || upper == "CYCLE") return cycleCall(name, upper);
-    if (upper == "RET" || upper == "DIAMON" || upper == "DIAMOF") {
+    const std::string_view is = upper;  // compared as a view: lengths first, no strlen per name
+    if (is == "R") return rAssignment(name);
+    if (is == "CR" || is == "CHF" || is == "CHR" || is == "RND") return namedValue(name, upper);
+    if (is == "_CNAME") return stringAssignment(name, upper);
+    if (is == "LCYC" || is == "CYCLE") return cycleCall(name, upper);
+    if (is == "RET" || is == "DIAMON" || is == "DIAMOF") {
       block_.keywords.push_back({upper, lexer_.lineNumber(), name.column});
       return;
     }
@@ -136,31 +140,35 @@ class BlockParser {
 
   SiemensWord wordFrom(const SiemensToken& name, const std::string& address, const SiemensToken& number,
                        std::string_view between) const {
-    return {address, number.number, std::string(name.text) + std::string(between) + std::string(number.text),
-            lexer_.lineNumber(), name.column};
+    std::string text;
+    text.reserve(name.text.size() + between.size() + number.text.size());
+    text.append(name.text).append(between).append(number.text);
+    return {address, number.number, std::move(text), lexer_.lineNumber(), name.column};
   }
 
   void addressWord(const SiemensToken& name, const std::string& address) {
     if (current_.kind == SiemensTokenKind::Equals) {
       fail(current_, "a number right after address " + address + " (" + address + "=… is not in the 802's language)");
     }
-    const SiemensToken number = expect(SiemensTokenKind::Number, "a number after address " + address);
-    if (isValueAddress(address)) requireWithin(number, kLargestValue, "a value of " + address);
+    const SiemensToken number = expect(SiemensTokenKind::Number, [&] { return "a number after address " + address; });
+    if (isValueAddress(address)) requireWithin(number, kLargestValue, [&] { return "a value of " + address; });
     SiemensWord word = wordFrom(name, address, number, "");
-    if (address == "N") return sequence(number, word);
-    if (address == "L") return subprogramCall(number, std::move(word));
+    if (address == std::string_view("N")) return sequence(number, word);
+    if (address == std::string_view("L")) return subprogramCall(number, std::move(word));
     keepWord(name, std::move(word));
   }
 
-  // A number outside ±largest, refused at its token naming the bound and what it is for.
-  void requireWithin(const SiemensToken& number, double largest, const std::string& what) const {
+  // A number outside ±largest, refused at its token naming the bound and what it is for (`what()`,
+  // built only then).
+  template <class What>
+  void requireWithin(const SiemensToken& number, double largest, const What& what) const {
     if (std::abs(number.number) <= largest) return;
     char bound[32];
     std::snprintf(bound, sizeof bound, "%.3f", largest);
     std::string text = bound;
     while (text.back() == '0') text.pop_back();
     if (text.back() == '.') text.pop_back();
-    fail(number, what + " within -" + text + "…" + text);
+    fail(number, what() + " within -" + text + "…" + text);
   }
 
   static bool isValueAddress(const std::string& address) {
@@ -170,7 +178,7 @@ class BlockParser {
   // One word of an address per block (G and M may repeat: codes of different groups); a second
   // would leave which one counts to the reader (interpretation, SIEMENS.LEX).
   void keepWord(const SiemensToken& name, SiemensWord word) {
-    if (word.address != "G" && word.address != "M") {
+    if (word.address != std::string_view("G") && word.address != std::string_view("M")) {
       if (const SiemensWord* first = block_.find(word.address)) {
         throw ParseError({lexer_.file(), lexer_.lineNumber(), name.column},
                          "one " + word.address + " word per block (" + first->text + " at column " +
@@ -178,6 +186,8 @@ class BlockParser {
                          word.text);
       }
     }
+    // Room for a block's usual words at once (G X Z and one more) rather than growing 1, 2, 4.
+    if (block_.words.empty()) block_.words.reserve(4);
     block_.words.push_back(std::move(word));
   }
 
@@ -200,32 +210,38 @@ class BlockParser {
   }
 
   void rAssignment(const SiemensToken& name) {
-    const SiemensToken number = expect(SiemensTokenKind::Number, "an R parameter number after R (R105=…)");
+    const SiemensToken number =
+        expect(SiemensTokenKind::Number, [] { return std::string("an R parameter number after R (R105=…)"); });
     if (number.text.find_first_not_of("0123456789") != std::string_view::npos || number.number > 999) {
       fail(number, "an R parameter number 0…999 without sign or decimal point");
     }
-    expect(SiemensTokenKind::Equals, "'=' after R" + std::string(number.text) + " (R" + std::string(number.text) + "=value)");
-    const SiemensToken value = expect(SiemensTokenKind::Number, "a number after R" + std::string(number.text) +
-                                                                   "= (expressions and other parameters are not read)");
-    requireWithin(value, kLargestRValue, "a value of R" + std::string(number.text));
+    const std::string_view r = number.text;
+    expect(SiemensTokenKind::Equals, [r] { return "'=' after R" + std::string(r) + " (R" + std::string(r) + "=value)"; });
+    const SiemensToken value = expect(SiemensTokenKind::Number, [r] {
+      return "a number after R" + std::string(r) + "= (expressions and other parameters are not read)";
+    });
+    requireWithin(value, kLargestRValue, [r] { return "a value of R" + std::string(r); });
     block_.rAssignments.push_back({static_cast<int>(number.number), value.number, lexer_.lineNumber(), name.column});
   }
 
   void namedValue(const SiemensToken& name, const std::string& address) {
-    const SiemensToken equals = expect(SiemensTokenKind::Equals, "'=' after " + address + " (" + address + "=value)");
-    const SiemensToken number = expect(SiemensTokenKind::Number, "a number after " + address + "=");
-    requireWithin(number, kLargestValue, "a value of " + address + "=");
+    const SiemensToken equals =
+        expect(SiemensTokenKind::Equals, [&] { return "'=' after " + address + " (" + address + "=value)"; });
+    const SiemensToken number = expect(SiemensTokenKind::Number, [&] { return "a number after " + address + "="; });
+    requireWithin(number, kLargestValue, [&] { return "a value of " + address + "="; });
     keepWord(name, wordFrom(name, address, number, equals.text));
   }
 
   void stringAssignment(const SiemensToken& name, const std::string& variable) {
-    expect(SiemensTokenKind::Equals, "'=' after " + variable + " (" + variable + "=\"L42\")");
-    const SiemensToken value = expect(SiemensTokenKind::String, "a subprogram name in double quotes after " + variable + "=");
+    expect(SiemensTokenKind::Equals, [&] { return "'=' after " + variable + " (" + variable + "=\"L42\")"; });
+    const SiemensToken value =
+        expect(SiemensTokenKind::String, [&] { return "a subprogram name in double quotes after " + variable + "="; });
     block_.strings.push_back({variable, std::string(value.stringBody()), lexer_.lineNumber(), name.column});
   }
 
   void cycleCall(const SiemensToken& name, const std::string& prefix) {
-    const SiemensToken number = expect(SiemensTokenKind::Number, "the cycle's number after " + prefix + " (" + prefix + "95)");
+    const SiemensToken number =
+        expect(SiemensTokenKind::Number, [&] { return "the cycle's number after " + prefix + " (" + prefix + "95)"; });
     if (block_.cycle) fail(name, "one cycle call per block");
     CycleCallText call;
     call.name = prefix + std::string(number.text);
@@ -246,7 +262,8 @@ class BlockParser {
       arg.line = lexer_.lineNumber();
       arg.column = current_.column;
       if (current_.kind == SiemensTokenKind::Number) {
-        requireWithin(current_, kLargestValue, "argument " + std::to_string(call.arguments.size() + 1) + " of " + call.name);
+        requireWithin(current_, kLargestValue,
+                      [&] { return "argument " + std::to_string(call.arguments.size() + 1) + " of " + call.name; });
         arg.number = advance().number;
       } else if (current_.kind == SiemensTokenKind::String) {
         arg.text = std::string(advance().stringBody());
@@ -256,8 +273,10 @@ class BlockParser {
         advance();
         return;
       }
-      expect(SiemensTokenKind::Comma, "',' or ')' after argument " + std::to_string(call.arguments.size()) + " of " +
-                                          call.name + " (an argument is a number, a \"string\" or empty)");
+      expect(SiemensTokenKind::Comma, [&] {
+        return "',' or ')' after argument " + std::to_string(call.arguments.size()) + " of " + call.name +
+               " (an argument is a number, a \"string\" or empty)";
+      });
     }
   }
 

@@ -2,14 +2,14 @@
 
 namespace cyclecert {
 
-const SiemensWord* SiemensBlock::find(const std::string& address) const {
+const SiemensWord* SiemensBlock::find(std::string_view address) const {
   for (const SiemensWord& w : words) {
     if (w.address == address) return &w;
   }
   return nullptr;
 }
 
-bool SiemensBlock::hasKeyword(const std::string& name) const {
+bool SiemensBlock::hasKeyword(std::string_view name) const {
   for (const SiemensKeyword& k : keywords) {
     if (k.name == name) return true;
   }
@@ -19,7 +19,7 @@ bool SiemensBlock::hasKeyword(const std::string& name) const {
 bool SiemensBlock::endsProgram() const {
   if (hasKeyword("RET")) return true;
   for (const SiemensWord& w : words) {
-    if (w.address == "M" && (w.value == 2 || w.value == 17 || w.value == 30)) return true;
+    if (w.address == std::string_view("M") && (w.value == 2 || w.value == 17 || w.value == 30)) return true;
   }
   return false;
 }

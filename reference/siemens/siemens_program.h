@@ -5,6 +5,7 @@
 // call (L42). Nothing is evaluated here: the runner (siemens_runner.h) gives the words meaning.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cyclecert {
@@ -70,8 +71,8 @@ struct SiemensBlock {
   std::optional<SiemensWord> subprogramCall;  // L42: address "L", the name is "L42"
   std::string text;                           // the line as written, without its comment
 
-  const SiemensWord* find(const std::string& address) const;
-  bool hasKeyword(const std::string& name) const;
+  const SiemensWord* find(std::string_view address) const;
+  bool hasKeyword(std::string_view name) const;
   // M02, M30 (main program), M17 (subprogram) or RET: the program or subprogram ends here.
   bool endsProgram() const;
 };

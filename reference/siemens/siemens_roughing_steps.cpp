@@ -241,8 +241,9 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
     std::vector<Point> candidates{s.from, s.to};
     for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) candidates.push_back(transposed(t));
     if (s.isArc()) {
+      const ArcAngles angles(s);
       for (const Point& n : {Point{h, -h}, Point{-h, h}}) {
-        if (offsetAlongArc(s, std::atan2(n.x, n.z))) candidates.push_back(s.center + s.radius() * n);
+        if (offsetAlongArc(angles, std::atan2(n.x, n.z))) candidates.push_back(s.center + r * n);
       }
     }
     if (std::any_of(candidates.begin(), candidates.end(), above)) return true;
