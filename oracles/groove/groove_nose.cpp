@@ -32,9 +32,6 @@ std::vector<Point> discAround(Point centre, double radius, double chordTolerance
 
 std::vector<Point> noseDisc(double radius, double chordTolerance) { return discAround({0, 0}, radius, chordTolerance); }
 
-namespace {
-
-// The disc with its shadow, as a SweptShape.
 SweptShape noseShape(double radius, Point shadowDir, double shadowLength, double chordTolerance) {
   std::vector<Point> shape = noseDisc(radius, chordTolerance);
   if (shadowLength > 0) {
@@ -42,29 +39,6 @@ SweptShape noseShape(double radius, Point shadowDir, double shadowLength, double
     for (std::size_t i = 0; i < n; ++i) shape.push_back(shape[i] + shadowLength * shadowDir);
   }
   return SweptShape(std::move(shape));
-}
-
-}  // namespace
-
-BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength,
-                         double chordTolerance) {
-  // A replay sweeps the same few shapes (the disc; with its shadow to either side) move after move:
-  // the last ones made are kept (per thread) rather than their hulls found again.
-  struct Made {
-    double radius, shadowZ, shadowX, shadowLength, chordTolerance;
-    SweptShape shape;
-  };
-  thread_local std::vector<Made> made;
-  for (const Made& m : made) {
-    if (m.radius == radius && m.shadowZ == shadowDir.z && m.shadowX == shadowDir.x && m.shadowLength == shadowLength &&
-        m.chordTolerance == chordTolerance) {
-      return sweptConvexShape(move, m.shape, chordTolerance);
-    }
-  }
-  if (made.size() >= 4) made.erase(made.begin());
-  made.push_back({radius, shadowDir.z, shadowDir.x, shadowLength, chordTolerance,
-                  noseShape(radius, shadowDir, shadowLength, chordTolerance)});
-  return sweptConvexShape(move, made.back().shape, chordTolerance);
 }
 
 BgRegion openedBy(const BgRegion& region, double radius) {

@@ -14,14 +14,13 @@
 
 namespace cyclecert {
 
-// The region the disc of radius R sweeps along `move` (arcs as chords within chordTolerance), with
-// its shadow of `shadowLength` along the unit vector `shadowDir` (0: the disc alone). The disc is
-// the polygon inscribed within chordTolerance.
-BgRegion noseSweptRegion(const Segment& move, double radius, Point shadowDir, double shadowLength, double chordTolerance);
-
-// The disc's polygon about the origin that noseSweptRegion sweeps: inscribed, its sides' sagitta
-// within chordTolerance.
+// The disc's polygon about the origin: inscribed, its sides' sagitta within chordTolerance.
 std::vector<Point> noseDisc(double radius, double chordTolerance);
+
+// The disc of radius R with its shadow of `shadowLength` along the unit vector `shadowDir` (0: the
+// disc alone), as a shape to sweep along a move (sweptConvexShape, tool_shape.h): made once per
+// replay, swept move after move.
+SweptShape noseShape(double radius, Point shadowDir, double shadowLength, double chordTolerance);
 
 // `region` opened by a disc of radius R: the union of the discs inside it.
 BgRegion openedBy(const BgRegion& region, double radius);

@@ -86,7 +86,7 @@ class MoveSweep {
 
  private:
   static BgRegion sweepOf(const GrooveReplay& r, const Segment& move, double chordTolerance) {
-    if (r.noseRadius > 0) return noseSweptRegion(centrePath(r, move), r.noseRadius, {0, 0}, 0, chordTolerance);
+    if (r.nose) return sweptConvexShape(centrePath(r, move), r.nose->disc, chordTolerance);
     return sweptRegion(move, r.blade.across, r.tool.width, r.blade.back, r.blade.length, chordTolerance);
   }
   const GrooveReplay& r_;
@@ -99,8 +99,9 @@ class MoveSweep {
 BgRegion removedBy(const GrooveReplay& r, const Segment& move, MoveSweep& sweep, int side, double shadow,
                    double chordTolerance) {
   if (!r.tool.isPoint()) return sweep.region();
-  if (r.noseRadius > 0) {  // the disc about the centre, R back along h from the point judged (I26)
-    return noseSweptRegion(centrePath(r, move), r.noseRadius, grooveUW(side, 0), shadow, chordTolerance);
+  if (r.nose) {  // the disc about the centre, R back along h from the point judged (I26)
+    return sweptConvexShape(centrePath(r, move), side > 0 ? r.nose->shadowedForward : r.nose->shadowedBack,
+                            chordTolerance);
   }
   return sweptRegion(move, grooveUW(side, 0), shadow, grooveUW(0, -1), 0, chordTolerance);
 }
@@ -207,11 +208,10 @@ std::vector<Point> noseBottomAlong(Point from, Point to, const std::vector<Point
 // Whether a nose's sweep along the move stays above the part's top within `slack` (as
 // bladeStaysAbove: a pass along the profile follows it R off).
 bool noseStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& move, double slack, double chord) {
-  if (r.noseRadius <= 0) return false;
-  const std::vector<Point> disc = noseDisc(r.noseRadius, chord);
+  if (!r.nose) return false;
   const std::vector<Point> points = flatten(centrePath(r, move), chord);
   for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    if (!top.liesBelow(noseBottomAlong(points[k], points[k + 1], disc), slack)) return false;
+    if (!top.liesBelow(noseBottomAlong(points[k], points[k + 1], r.nose->disc.points()), slack)) return false;
   }
   return true;
 }
@@ -361,6 +361,11 @@ std::optional<GrooveReplay> replayGroove(const JudgeInput& in) {
   ClearedStaircase cleared(band);
   const double aboveTheBand = box.min_corner().x() - 2 * kStockMargin;  // w above the band's top
   const double shadow = span + 2 * kStockMargin;
+  if (r.noseRadius > 0) {
+    r.nose.emplace(GrooveReplay::NoseShapes{noseShape(r.noseRadius, {0, 0}, 0, chord),
+                                            noseShape(r.noseRadius, grooveUW(1, 0), shadow, chord),
+                                            noseShape(r.noseRadius, grooveUW(-1, 0), shadow, chord)});
+  }
   std::optional<BgRegion> standing;  // materialNow, once a rapid needs it, until the next feed
   // The feeds of a blade or a point (not along an axis) removed from withoutTheOthers only when a
   // rapid or the end needs the exact material: ClearedOutline and ShadowedRows bound what stands

@@ -33,6 +33,12 @@ struct GrooveReplay {
   const GrooveSpec* groove = nullptr;
   ToolShape tool;
   double noseRadius = 0;     // a pointed tool's nose under G41/G42 (groove_nose.h); 0: none
+  // The nose's shapes, made once (noseRadius > 0): the disc a move sweeps, and the disc with the
+  // shadow a feed removes towards +u and towards −u.
+  struct NoseShapes {
+    SweptShape disc, shadowedForward, shadowedBack;
+  };
+  std::optional<NoseShapes> nose;
   BladeFrame blade;          // the blade's rectangle in the groove's frame
   MoveRange range;           // the cycle's moves
   std::optional<GrooveMoves> moves;  // the cycle's moves as the step oracles see them, found once

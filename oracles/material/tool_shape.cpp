@@ -96,17 +96,6 @@ void uniteWith(BgRegion& swept, BgRegion piece) {
   }
 }
 
-// The convex shape swept along the chord from → to: the hull of the shape at both ends.
-BgRegion hullAlongChord(Point from, Point to, const std::vector<Point>& shape) {
-  std::vector<Point> points;
-  points.reserve(2 * shape.size());
-  for (Point c : shape) {
-    points.push_back(from + c);
-    points.push_back(to + c);
-  }
-  return convexHullOf(points);
-}
-
 double cross(Point a, Point b) { return a.z * b.x - a.x * b.z; }
 int signOf(double v) { return (v > 0) - (v < 0); }
 
@@ -202,13 +191,19 @@ void SweptShape::along(Point from, Point to, std::vector<Point>& out) const {
 
 namespace {
 
+// The convex shape swept along the chord from → to: the hull of the shape at both ends (`points`:
+// a buffer kept between chords).
+BgRegion hullAlongChord(Point from, Point to, const SweptShape& shape, std::vector<Point>& points) {
+  shape.along(from, to, points);
+  return convexHullOf(points);
+}
+
 // The convex shape swept along the chain of chords: the union of its hulls along each chord.
 BgRegion sweptAlongChords(const std::vector<Point>& chords, const SweptShape& shape) {
   BgRegion swept;
   std::vector<Point> points;
   for (std::size_t k = 0; k + 1 < chords.size(); ++k) {
-    shape.along(chords[k], chords[k + 1], points);
-    uniteWith(swept, convexHullOf(points));
+    uniteWith(swept, hullAlongChord(chords[k], chords[k + 1], shape, points));
   }
   tidy(swept);
   return swept;
@@ -226,17 +221,18 @@ BgRegion sweptConvexShape(const Segment& move, const std::vector<Point>& shape, 
 
 BgRegion sweptRegion(const Segment& move, Point da, double a, Point db, double b, double chordTolerance) {
   const Point sideA = a * da, sideB = b * db;
-  const std::vector<Point> shape{{0, 0}, sideA, sideA + sideB, sideB};
+  const SweptShape shape({{0, 0}, sideA, sideA + sideB, sideB});
   const std::vector<Point> chords = flatten(move, chordTolerance);
   // One chord (a line): its hull, no union to spare. A segment (a or b zero) has no open cones.
-  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, SweptShape(shape));
+  if (chords.size() <= 2 || !(a > 0 && b > 0)) return sweptAlongChords(chords, shape);
   // An arc's chords: each run in one open cone swept at once; a chord along a side, by its hull.
   BgRegion swept;
+  std::vector<Point> points;
   for (std::size_t k = 0; k + 1 < chords.size();) {
     const Cone c = coneOf(chords[k + 1] - chords[k], sideA, sideB);
     std::size_t last = k + 1;
     if (!c.open()) {
-      uniteWith(swept, hullAlongChord(chords[k], chords[last], shape));
+      uniteWith(swept, hullAlongChord(chords[k], chords[last], shape, points));
     } else {
       while (last + 1 < chords.size() && coneOf(chords[last + 1] - chords[last], sideA, sideB) == c) ++last;
       uniteWith(swept, parallelogramAlongRun(chords, k, last, sideA, sideB, c));
