@@ -398,6 +398,12 @@ SiemensPlacement placementFor(const SiemensFuzzCase& s, const std::vector<Contou
   return place;
 }
 
+// text += each piece in turn (the programs and the title are written for every fuzz case: no
+// stream, no temporary strings joined).
+void appendPieces(std::string& text, std::initializer_list<std::string_view> pieces) {
+  for (std::string_view piece : pieces) text += piece;
+}
+
 // Writes blocks word by word into one text (no list of words per block: the writing is part of
 // every fuzz case's cost): words apart by a space, or run together when compact.
 class BlockWriter {
@@ -483,22 +489,19 @@ std::string siemensMainProgram(const FuzzCase& c) {
   // writing is part of every fuzz case's cost).
   std::string p;
   p.reserve(160);
-  const auto append = [&p](std::initializer_list<std::string_view> pieces) {
-    for (std::string_view piece : pieces) p += piece;
-  };
-  append({"T1 D1\nG0 X", diameter(x), " Z", mm(z), "\n"});
+  appendPieces(p, {"T1 D1\nG0 X", diameter(x), " Z", mm(z), "\n"});
   if (!s.cycle95) {
-    append({"_CNAME=\"", kSiemensContourName, "\"\n"});
-    append({"R105=", std::to_string(s.type), " R106=", mm(s.allowance), " R108=", mm(s.maxInfeed), " R109=",
+    appendPieces(p, {"_CNAME=\"", kSiemensContourName, "\"\n"});
+    appendPieces(p, {"R105=", std::to_string(s.type), " R106=", mm(s.allowance), " R108=", mm(s.maxInfeed), " R109=",
             std::to_string(s.infeedAngle), "\n"});
-    append({"R110=", mm(s.retract), " R111=", mm(s.roughingFeed), " R112=", mm(s.finishingFeed), "\n"});
-    append({"LCYC95\nM02\n"});
+    appendPieces(p, {"R110=", mm(s.retract), " R111=", mm(s.roughingFeed), " R112=", mm(s.finishingFeed), "\n"});
+    appendPieces(p, {"LCYC95\nM02\n"});
     return p;
   }
-  append({"CYCLE95(\"", kSiemensContourName, "\", ", mm(s.maxInfeed), ", ", mm(s.allowanceZ), ", ", mm(s.allowanceX),
-          ", ", mm(s.allowance), ", ", mm(s.roughingFeed), ", ", mm(s.undercutFeed), ", ", mm(s.finishingFeed), ", ",
-          std::to_string(s.type), ", ", mm(10L * s.dwell), ", ", mm(s.interruptLength), ", ", mm(s.retract),
-          ")\nM02\n"});
+  appendPieces(p, {"CYCLE95(\"", kSiemensContourName, "\", ", mm(s.maxInfeed), ", ", mm(s.allowanceZ), ", ",
+                   mm(s.allowanceX), ", ", mm(s.allowance), ", ", mm(s.roughingFeed), ", ", mm(s.undercutFeed), ", ",
+                   mm(s.finishingFeed), ", ", std::to_string(s.type), ", ", mm(10L * s.dwell), ", ",
+                   mm(s.interruptLength), ", ", mm(s.retract), ")\nM02\n"});
   return p;
 }
 
@@ -569,20 +572,18 @@ std::string describeSiemensCase(const FuzzCase& c) {
   // Appended piece by piece (no stream: the title is written for every fuzz case).
   std::string o;
   o.reserve(200);
-  const auto append = [&o](std::initializer_list<std::string_view> pieces) {
-    for (std::string_view piece : pieces) o += piece;
-  };
-  append({s.cycle95 ? "CYCLE95" : "LCYC95", " ", typeText(s), ", ", std::to_string(s.segments.size()), " segment(s) (",
-          std::to_string(arcs), " arc(s), ", std::to_string(corners), " corner(s), ", std::to_string(undercutsOf(s)),
-          " turning back), ", c.profile, ", ", s.cycle95 ? "MID " : "R108 ", mm(s.maxInfeed), ", ",
-          s.cycle95 ? "_VRT " : "R110 ", mm(s.retract), ", ", s.cycle95 ? "FAL " : "R106 ", mm(s.allowance)});
+  appendPieces(o, {s.cycle95 ? "CYCLE95" : "LCYC95", " ", typeText(s), ", ", std::to_string(s.segments.size()),
+                   " segment(s) (", std::to_string(arcs), " arc(s), ", std::to_string(corners), " corner(s), ",
+                   std::to_string(undercutsOf(s)), " turning back), ", c.profile, ", ", s.cycle95 ? "MID " : "R108 ",
+                   mm(s.maxInfeed), ", ", s.cycle95 ? "_VRT " : "R110 ", mm(s.retract), ", ",
+                   s.cycle95 ? "FAL " : "R106 ", mm(s.allowance)});
   if (s.cycle95) {
-    append({", FALZ ", mm(s.allowanceZ), " FALX ", mm(s.allowanceX), ", FF1 ", mm(s.roughingFeed), " FF2 ",
-            mm(s.undercutFeed)});
-    if (s.interruptLength) append({", DAM ", mm(s.interruptLength)});
-    if (s.dwell) append({", DT ", mm(10L * s.dwell)});
+    appendPieces(o, {", FALZ ", mm(s.allowanceZ), " FALX ", mm(s.allowanceX), ", FF1 ", mm(s.roughingFeed), " FF2 ",
+                     mm(s.undercutFeed)});
+    if (s.interruptLength) appendPieces(o, {", DAM ", mm(s.interruptLength)});
+    if (s.dwell) appendPieces(o, {", DT ", mm(10L * s.dwell)});
   } else if (s.infeedAngle) {
-    append({", R109 ", std::to_string(s.infeedAngle)});
+    appendPieces(o, {", R109 ", std::to_string(s.infeedAngle)});
   }
   o += faultText(s.fault);
   return o;
