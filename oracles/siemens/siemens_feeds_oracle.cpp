@@ -42,7 +42,9 @@ class SiemensFeedsOracle : public Oracle {
     }
   }
 
-  void judgeFeed(const SiemensCycleMoves& m, std::size_t i, double expected, const std::string& what,
+  // `what` a literal: no string is made for a feed that is right (most names are too long to be
+  // kept in a std::string without allocating).
+  void judgeFeed(const SiemensCycleMoves& m, std::size_t i, double expected, const char* what,
                  std::vector<Finding>& out) const {
     const std::optional<double> feed = m.in.path.moves[i].feed;
     if (feed && std::abs(*feed - expected) <= 1e-9 * std::max(1.0, std::abs(expected))) return;
