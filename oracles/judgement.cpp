@@ -8,6 +8,7 @@
 #include "oracles/material/region.h"
 #include "oracles/material_replay.h"
 #include "oracles/oracles.h"
+#include "oracles/siemens/siemens_moves.h"
 #include "reference/gcode/program_limits.h"
 
 namespace cyclecert {
@@ -80,7 +81,8 @@ std::vector<Finding> judge(const JudgeInput& in) {
   try {
     const std::optional<MaterialReplay> replay = groove ? std::nullopt : replayMaterial(in);
     const std::optional<GrooveReplay> grooveReplay = groove ? replayGroove(in) : std::nullopt;
-    const JudgeContext ctx{in, replay ? &*replay : nullptr, grooveReplay ? &*grooveReplay : nullptr};
+    const std::vector<SiemensCycleMoves> siemensCalls = siemensCallsMoves(in);
+    const JudgeContext ctx{in, replay ? &*replay : nullptr, grooveReplay ? &*grooveReplay : nullptr, &siemensCalls};
     for (const auto& oracle : allOracles()) {
       if (!family || oracle->judges(*family)) oracle->judge(ctx, findings);
     }

@@ -53,6 +53,7 @@ struct JudgeInput {
 
 struct MaterialReplay;  // oracles/material_replay.h
 struct GrooveReplay;    // oracles/groove/groove_replay.h
+struct SiemensCycleMoves;  // oracles/siemens/siemens_moves.h
 
 // What the oracles see: the input, and the material replay computed once for all of them (null
 // when the program is not one the geometric oracles judge) — for a G74.1 program the groove's
@@ -61,6 +62,9 @@ struct JudgeContext {
   const JudgeInput& in;
   const MaterialReplay* replay = nullptr;
   const GrooveReplay* groove = nullptr;
+  // A SINUMERIK program's calls and their moves (oracles/siemens/siemens_moves.h), found once for
+  // all the Siemens oracles.
+  const std::vector<SiemensCycleMoves>* siemensCalls = nullptr;
 };
 
 class Oracle {

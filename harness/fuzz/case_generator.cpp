@@ -827,17 +827,16 @@ SpecCase fuzzSpecCase(const FuzzCase& c, const std::string& tag) {
 
 nlohmann::json drawnCaseJson(const FuzzCase& c, const std::string& tag, nlohmann::json rules, std::string program,
                              const std::optional<FuzzExpectedAlarm>& alarm, const std::string& alarmDerivation) {
-  nlohmann::json j{{"id", fuzzCaseFolder(c) + "/fuzz-" + tag},
-                   {"title", "fuzz case " + tag + ": " + describeFuzzCase(c)},
-                   {"rules", std::move(rules)},
-                   {"profile", c.profile},
-                   {"program", std::move(program)},
-                   {"expect", everyOracleExpectation()},
-                   {"derivation", kGeneratedCaseDerivation}};
-  if (alarm) {
-    j["expect"] = alarmExpectation(alarm->code, alarm->line);
-    j["derivation"] = alarmDerivation;
-  }
+  // Field by field, not from an initializer list (which builds each pair as an array first): a
+  // case is drawn for every case a fuzz run judges.
+  nlohmann::json j = nlohmann::json::object();
+  j["id"] = fuzzCaseFolder(c) + "/fuzz-" + tag;
+  j["title"] = "fuzz case " + tag + ": " + describeFuzzCase(c);
+  j["rules"] = std::move(rules);
+  j["profile"] = c.profile;
+  j["program"] = std::move(program);
+  j["expect"] = alarm ? alarmExpectation(alarm->code, alarm->line) : everyOracleExpectation();
+  j["derivation"] = alarm ? alarmDerivation : kGeneratedCaseDerivation;
   if (c.noseRadius > 0) j["tool"] = {{"nose_radius", c.noseRadius / 100.0}, {"tip", c.tip}};
   return j;
 }

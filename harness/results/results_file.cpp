@@ -59,10 +59,18 @@ std::string boundedLine(nlohmann::json& j) {
 }  // namespace
 
 std::string resultLine(const CaseResult& r) {
-  nlohmann::json j{{"engine", r.engine},     {"case", r.caseId},   {"file", r.file},
-                   {"rules", r.rules},       {"verdict", r.verdict}, {"detail", r.detail},
-                   {"findings", findingsJson(r.findings)}, {"seconds", r.seconds}, {"seed", nullptr}};
-  if (r.seed) j["seed"] = *r.seed;
+  // Field by field, not from an initializer list (which builds each pair as an array first): a
+  // line is written for every case a fuzz run judges.
+  nlohmann::json j = nlohmann::json::object();
+  j["engine"] = r.engine;
+  j["case"] = r.caseId;
+  j["file"] = r.file;
+  j["rules"] = r.rules;
+  j["verdict"] = r.verdict;
+  j["detail"] = r.detail;
+  j["findings"] = findingsJson(r.findings);
+  j["seconds"] = r.seconds;
+  j["seed"] = r.seed ? nlohmann::json(*r.seed) : nlohmann::json(nullptr);
   if (!r.program.empty()) j["program"] = r.program;
   if (!r.vs.empty()) j["vs"] = r.vs;
   if (r.plot) j["plot"] = *r.plot;

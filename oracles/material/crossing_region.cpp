@@ -94,11 +94,16 @@ bool CrossingRegion::contains(Point p) const {
 RegionBelowGraph::RegionBelowGraph(const DepthFrame& frame, std::vector<std::pair<double, double>> top, double dBottom)
     : frame_(frame), top_(std::move(top)), dBottom_(dBottom) {
   blockDepths_.reserve(top_.size() / kBlock + 1);
-  for (std::size_t k = 0; k + 1 < top_.size(); ++k) {
-    if (k % kBlock == 0) blockDepths_.push_back({INFINITY, -INFINITY});
-    auto& [low, high] = blockDepths_.back();
-    low = std::min({low, top_[k].second, top_[k + 1].second});
-    high = std::max({high, top_[k].second, top_[k + 1].second});
+  // Block b holds the edges from vertex b·kBlock on: its depths are those of its vertices, up to the
+  // one ending its last edge.
+  for (std::size_t first = 0; first + 1 < top_.size(); first += kBlock) {
+    const std::size_t last = std::min(first + kBlock, top_.size() - 1);
+    double low = top_[first].second, high = low;
+    for (std::size_t v = first + 1; v <= last; ++v) {
+      low = std::min(low, top_[v].second);
+      high = std::max(high, top_[v].second);
+    }
+    blockDepths_.push_back({low, high});
   }
   // The box of the frame's rectangle the region fills: for a frame along the axes, as every
   // cycle's is, the region's own box.

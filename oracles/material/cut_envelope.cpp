@@ -120,9 +120,11 @@ bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
 
 std::vector<std::pair<double, double>> CutEnvelope::belowTop(double cMin, double cMax, double dBottom,
                                                              double dTop) const {
-  std::vector<std::pair<double, double>> top;  // (cut, depth) from cMin to cMax
-  top.reserve(3 * pieces_.size() + 4);         // a piece gives at most three points, a gap two
-  const auto at = [&](double c, double d) { top.push_back({c, std::clamp(d, dBottom, dTop)}); };
+  // (cut, depth) from cMin to cMax, written in place: a piece gives at most three points, and each
+  // gap before a piece or after the last two.
+  std::vector<std::pair<double, double>> top(5 * pieces_.size() + 2);
+  auto* end = top.data();
+  const auto at = [&](double c, double d) { *end++ = {c, std::clamp(d, dBottom, dTop)}; };
   walk(
       cMin, cMax,
       [&](const Piece& p) {
@@ -137,6 +139,7 @@ std::vector<std::pair<double, double>> CutEnvelope::belowTop(double cMin, double
         at(g0, dTop);  // a gap: up to the top and along it
         at(g1, dTop);
       });
+  top.resize(static_cast<std::size_t>(end - top.data()));
   return top;
 }
 

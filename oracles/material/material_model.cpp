@@ -200,8 +200,10 @@ void common(const std::vector<Interval>& a, const std::vector<Interval>& b, std:
 
 // The pieces of `move` deeper than ε inside the region, and inside `also` when given (inside
 // their intersection: a point is ε inside an intersection exactly when it is ε inside each).
-template <typename Region, typename Also = CrossingRegion>
-Crossing crossingWithin(const Segment& move, double epsilon, double chordTolerance, const Region& region,
+// `regionOf()` gives the region, asked for only by a chord that comes into the box of `also`: a
+// region made on demand (MaterialModel::crossing) is not made for a move clear of the stock.
+template <typename RegionOf, typename Also = CrossingRegion>
+Crossing crossingWithin(const Segment& move, double epsilon, double chordTolerance, RegionOf regionOf,
                         const Also* also = nullptr) {
   Crossing crossing;
   epsilon = std::max(epsilon, kTidyDistance);
@@ -211,7 +213,7 @@ Crossing crossingWithin(const Segment& move, double epsilon, double chordToleran
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Chord chord(points[i - 1], points[i]);
     if (chord.length <= kGeomEps || (also && !entersBoxOf(*also, chord, epsilon))) continue;
-    insideIntervals(region, chord, epsilon, scratch, scratch.inside);
+    insideIntervals(regionOf(), chord, epsilon, scratch, scratch.inside);
     const std::vector<Interval>* inside = &scratch.inside;
     if (also && !inside->empty()) {
       insideIntervals(*also, chord, epsilon, scratch, scratch.insideAlso);
@@ -252,11 +254,11 @@ Crossing crossingOf(const BgRegion& region, const Segment& move, double epsilon,
 }
 
 Crossing crossingOf(const CrossingRegion& region, const Segment& move, double epsilon, double chordTolerance) {
-  return crossingWithin(move, epsilon, chordTolerance, region);
+  return crossingWithin(move, epsilon, chordTolerance, [&region]() -> const CrossingRegion& { return region; });
 }
 
 Crossing crossingOf(const RegionBelowGraph& region, const Segment& move, double epsilon, double chordTolerance) {
-  return crossingWithin(move, epsilon, chordTolerance, region);
+  return crossingWithin(move, epsilon, chordTolerance, [&region]() -> const RegionBelowGraph& { return region; });
 }
 
 MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double chordTolerance)
@@ -354,15 +356,23 @@ const BgRegion& MaterialModel::remaining() const {
 
 double MaterialModel::area() const { return bg::area(remaining()); }
 
-Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
-  if (stock_.empty()) return {};
-  if (cut_.empty()) return crossingWithin(move, epsilon, chordTolerance_, stockForCrossing_);
+const RegionBelowGraph& MaterialModel::belowForCrossing() const {
   if (!belowForCrossing_) {
     const FrameBox box = frameBox();
     belowForCrossing_.emplace(frame_, cut_.belowTop(box.cMin, box.cMax, box.dBottom, box.dTop), box.dBottom);
   }
-  // Below the envelope first: a rapid in the air is found above it without measuring.
-  return crossingWithin(move, epsilon, chordTolerance_, *belowForCrossing_, &stockForCrossing_);
+  return *belowForCrossing_;
+}
+
+Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
+  if (stock_.empty()) return {};
+  const auto stock = [this]() -> const CrossingRegion& { return stockForCrossing_; };
+  if (cut_.empty()) return crossingWithin(move, epsilon, chordTolerance_, stock);
+  // Below the envelope first: a rapid in the air is found above it without measuring. The region
+  // below is made again after the feeds lowered the envelope only for a move that comes into the
+  // stock's box.
+  return crossingWithin(move, epsilon, chordTolerance_, [this]() -> const RegionBelowGraph& { return belowForCrossing(); },
+                        &stockForCrossing_);
 }
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {

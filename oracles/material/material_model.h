@@ -110,6 +110,9 @@ class MaterialModel {
   // The deepest the stock comes over the cut coordinates [c0, c1]; nothing when it has no point
   // there. Where the range has some width, a wall standing at one of its ends does not count.
   std::optional<double> stockDeepestWithin(double c0, double c1) const;
+  // The region below the envelope as the crossing tests see it, made when first asked for after
+  // the feeds lowered the envelope.
+  const RegionBelowGraph& belowForCrossing() const;
 
   BgRegion stock_;
   CrossingRegion stockForCrossing_;
@@ -120,8 +123,7 @@ class MaterialModel {
   double chordTolerance_;
   CutEnvelope cut_;
   std::vector<Point> flattened_;  // apply's buffer for a move's chords
-  // The region below the envelope as the crossing tests see it; made when first needed after a feed.
-  mutable std::optional<RegionBelowGraph> belowForCrossing_;
+  mutable std::optional<RegionBelowGraph> belowForCrossing_;  // belowForCrossing's
   mutable std::optional<BgRegion> remaining_;  // likewise
 };
 

@@ -22,7 +22,7 @@ class SiemensChipBreakingOracle : public Oracle {
   bool judges(CycleFamily f) const override { return f == CycleFamily::Cycle95; }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+    for (const SiemensCycleMoves& call : *ctx.siemensCalls) judgeCall(call, out);
   }
 
  private:

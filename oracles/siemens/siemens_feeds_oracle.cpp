@@ -22,7 +22,7 @@ class SiemensFeedsOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+    for (const SiemensCycleMoves& call : *ctx.siemensCalls) judgeCall(call, out);
   }
 
  private:
@@ -42,7 +42,9 @@ class SiemensFeedsOracle : public Oracle {
     }
   }
 
-  void judgeFeed(const SiemensCycleMoves& m, std::size_t i, double expected, const std::string& what,
+  // `what` a literal: no string is made for a feed that is right (most names are too long to be
+  // kept in a std::string without allocating).
+  void judgeFeed(const SiemensCycleMoves& m, std::size_t i, double expected, const char* what,
                  std::vector<Finding>& out) const {
     const std::optional<double> feed = m.in.path.moves[i].feed;
     if (feed && std::abs(*feed - expected) <= 1e-9 * std::max(1.0, std::abs(expected))) return;

@@ -22,7 +22,7 @@ class SiemensInfeedOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+    for (const SiemensCycleMoves& call : *ctx.siemensCalls) judgeCall(call, out);
   }
 
  private:

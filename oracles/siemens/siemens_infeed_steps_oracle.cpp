@@ -24,7 +24,7 @@ class SiemensInfeedStepsOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+    for (const SiemensCycleMoves& call : *ctx.siemensCalls) judgeCall(call, out);
   }
 
  private:
@@ -32,18 +32,22 @@ class SiemensInfeedStepsOracle : public Oracle {
     for (const FeedRun& cut : m.roughing) {
       for (std::size_t i = cut.begin; i < cut.end; ++i) {
         if (m.isMainLevelCut(i)) {
-          judgeLevel(m, i, m.c.levels, "the profile's top", out);
+          judgeLevel(m, i, m.c.levels, nullptr, out);
         } else if (const SiemensUndercut* u = m.undercutLevelCut(i)) {
-          judgeLevel(m, i, equalLevels(u->top, u->bottom, m.c.maxInfeed),
-                     "the top of the undercut at Z" + shortDecimalText(m.c.frame.toPlane({u->rimZ, u->top}).z), out);
+          judgeLevel(m, i, equalLevels(u->top, u->bottom, m.c.maxInfeed), u, out);
         }
       }
     }
   }
 
-  void judgeLevel(const SiemensCycleMoves& m, std::size_t i, const SiemensLevels& l, const std::string& top,
+  // A cut on the main levels (`undercut` null) or on those of an undercut; the message is written
+  // only for a cut off them.
+  void judgeLevel(const SiemensCycleMoves& m, std::size_t i, const SiemensLevels& l, const SiemensUndercut* undercut,
                   std::vector<Finding>& out) const {
     if (l.isLevel(m.from(i).x, m.tol)) return;
+    const std::string top =
+        undercut ? "the top of the undercut at Z" + shortDecimalText(m.c.frame.toPlane({undercut->rimZ, undercut->top}).z)
+                 : "the profile's top";
     const double depth = std::abs(m.from(i).x - l.top);
     out.push_back(m.report(
         *this, i,

@@ -62,8 +62,27 @@ std::size_t endOfCall(const JudgeInput& in, const SiemensCycleSpec& c, std::size
   return end;
 }
 
+// Move i as a cut along a level towards −z (frame) off the roughing profile: a main pass's cut
+// (SiemensCycleMoves::isMainLevelCut) or the cut across an undercut's pocket (undercutLevelCut).
+SiemensCycleMoves::LevelCut levelCutOf(const SiemensCycleMoves& m, std::size_t i) {
+  if (!isLevelCutTowardsMinusZ(m, i)) return {};
+  const Point a = m.from(i), b = m.to(i);
+  if (nearPath(0.5 * (a + b), m.c.profile, m.tol)) return {};
+  if (!inUndercut(m.c, a, b, m.tol)) {
+    // A level's cut comes from the entry side; a move from the contour's first point (the top of
+    // the part's face) goes across the allowance to the profile's start behind it (LCYC95.ROUGH note).
+    const bool fromContourStart =
+        !m.c.contour.empty() && nearlyEqual(a, m.c.frame.toFrame(m.c.contour.front().from), m.tol);
+    return {!fromContourStart, nullptr};
+  }
+  for (const SiemensUndercut& u : m.c.undercuts) {
+    if (a.z <= u.rimZ + m.tol && b.z >= u.endZ - m.tol) return {false, &u};
+  }
+  return {};
+}
+
 SiemensCycleMoves movesOfCall(const JudgeInput& in, const SiemensCycleSpec& c, MoveRange range) {
-  SiemensCycleMoves m{c, in, in.settings.tolerance(), range, {}, {}};
+  SiemensCycleMoves m{c, in, in.settings.tolerance(), range, {}, {}, {}};
   std::vector<FeedRun> runs = feedRuns(m, m.range.begin, m.range.end);
   m.finishing = {m.range.end, m.range.end};
   if (c.finishes() && !runs.empty()) {
@@ -71,29 +90,14 @@ SiemensCycleMoves movesOfCall(const JudgeInput& in, const SiemensCycleSpec& c, M
     runs.pop_back();
   }
   if (c.roughs()) m.roughing = std::move(runs);
+  m.levelCuts.resize(m.range.end - m.range.begin);
+  for (const FeedRun& cut : m.roughing) {
+    for (std::size_t i = cut.begin; i < cut.end; ++i) m.levelCuts[i - m.range.begin] = levelCutOf(m, i);
+  }
   return m;
 }
 
 }  // namespace
-
-bool SiemensCycleMoves::isMainLevelCut(std::size_t i) const {
-  if (!isLevelCutTowardsMinusZ(*this, i)) return false;
-  const Point a = from(i), b = to(i);
-  // A level's cut comes from the entry side; a move from the contour's first point (the top of the
-  // part's face) goes across the allowance to the profile's start behind it (LCYC95.ROUGH note).
-  if (!c.contour.empty() && nearlyEqual(a, c.frame.toFrame(c.contour.front().from), tol)) return false;
-  return !nearPath(0.5 * (a + b), c.profile, tol) && !inUndercut(c, a, b, tol);
-}
-
-const SiemensUndercut* SiemensCycleMoves::undercutLevelCut(std::size_t i) const {
-  if (!isLevelCutTowardsMinusZ(*this, i)) return nullptr;
-  const Point a = from(i), b = to(i);
-  if (nearPath(0.5 * (a + b), c.profile, tol) || !inUndercut(c, a, b, tol)) return nullptr;
-  for (const SiemensUndercut& u : c.undercuts) {
-    if (a.z <= u.rimZ + tol && b.z >= u.endZ - tol) return &u;
-  }
-  return nullptr;
-}
 
 Finding SiemensCycleMoves::report(const Oracle& o, std::size_t i, std::string message) const {
   Finding f = finding(o, i, std::string(cycleCode(c.family)) + " at line " + std::to_string(c.line) + ": " +

@@ -31,13 +31,22 @@ struct SiemensCycleMoves {
   Point to(std::size_t i) const { return c.frame.toFrame(in.path.moves[i].to); }
   bool isFeed(std::size_t i) const { return in.path.moves[i].kind == MoveKind::Feed; }
   bool isRapid(std::size_t i) const { return in.path.moves[i].kind == MoveKind::Rapid; }
+  // What a move of the roughing runs is as a cut along a level, found once with the call's moves
+  // (siemensCallsMoves) for every oracle that asks: by move, from range.begin (nothing for a move
+  // outside the roughing runs).
+  struct LevelCut {
+    bool main = false;                         // isMainLevelCut
+    const SiemensUndercut* undercut = nullptr;  // undercutLevelCut
+  };
+  std::vector<LevelCut> levelCuts;
+
   // A line in feed along a level towards −z (frame), not on the roughing profile and not in an
   // undercut: a cut of a main roughing pass (LCYC95.ROUGH "G1 parallel to the axis").
-  bool isMainLevelCut(std::size_t i) const;
+  bool isMainLevelCut(std::size_t i) const { return levelCuts[i - range.begin].main; }
   // A line in feed along a level towards −z (frame) in one of CYCLE95's undercuts, not on the
   // roughing profile: the cut across the pocket of an undercut pass (CYCLE95.UNDERCUT); that
   // undercut, or nullptr.
-  const SiemensUndercut* undercutLevelCut(std::size_t i) const;
+  const SiemensUndercut* undercutLevelCut(std::size_t i) const { return levelCuts[i - range.begin].undercut; }
   // Move i's finding with its segment as the witness: the message names the call (its cycle and
   // line), and the finding cites those of the oracle's rules that are the call's own cycle's.
   Finding report(const Oracle& o, std::size_t i, std::string message) const;

@@ -32,7 +32,7 @@ class SiemensReturnsOracle : public Oracle {
   bool judges(CycleFamily f) const override { return isSiemensFamily(f); }
 
   void judge(const JudgeContext& ctx, std::vector<Finding>& out) const override {
-    for (const SiemensCycleMoves& call : siemensCallsMoves(ctx.in)) judgeCall(call, out);
+    for (const SiemensCycleMoves& call : *ctx.siemensCalls) judgeCall(call, out);
   }
 
  private:
