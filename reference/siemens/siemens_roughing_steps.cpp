@@ -103,13 +103,8 @@ double positionAlong(const Segment& s, Point p) {
 // `throughDescents` (in the front stretch, frontStretchEnd, and on a pocket's own profile).
 std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughDescents) {
   std::optional<Point> first;  // the stop first along `s` (of equally far ones, the first found)
-  double firstAt = 0;
   const auto stop = [&](Point p) {
-    const double at = positionAlong(s, p);
-    if (!first || at < firstAt) {
-      first = p;
-      firstAt = at;
-    }
+    if (!first || positionAlong(s, p) < positionAlong(s, *first)) first = p;
   };
   for (const Point& p : intersectWithLevelX(s, upper)) {
     if (distance(p, s.from) > kGeomEps) stop(p);
