@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -25,12 +24,17 @@ constexpr double kLargestSequenceNumber = 9999;  // 802S/D: N0…N9999 (interpre
 // digits); a larger number is refused where it is written rather than planned.
 constexpr double kLargestValue = 999'999.999;
 constexpr double kLargestRValue = 99'999'999;
-constexpr std::string_view kValueAddresses[] = {"X", "Z", "I", "K", "F", "CR", "CHF", "CHR", "RND"};
 // Every name a block may hold, upper case, the addresses with numbers first: a name is read as the
-// entry it equals ignoring case (readName; no upper-case copy of each name is made).
-constexpr std::string_view kNames[] = {"G", "X", "Z", "I", "K", "F", "S", "T", "D", "M", "N", "L",
-                                       "R", "CR", "CHF", "CHR", "RND", "_CNAME", "LCYC", "CYCLE",
-                                       "RET", "DIAMON", "DIAMOF"};
+// entry it equals ignoring case (readName; no upper-case copy of each name is made). `bounded`: the
+// values written after it lie within ±kLargestValue.
+struct KnownName {
+  std::string_view name;
+  bool bounded = false;
+};
+constexpr KnownName kNames[] = {
+    {"G"}, {"X", true}, {"Z", true}, {"I", true}, {"K", true}, {"F", true}, {"S"}, {"T"}, {"D"}, {"M"}, {"N"}, {"L"},
+    {"R"}, {"CR", true}, {"CHF", true}, {"CHR", true}, {"RND", true},
+    {"_CNAME"}, {"LCYC"}, {"CYCLE"}, {"RET"}, {"DIAMON"}, {"DIAMOF"}};
 constexpr const char* kEverythingAccepted =
     "an address (G X Z I K F S T D M N L), R<n>=, CR=, CHF=, CHR=, RND=, _CNAME=, a cycle (LCYC95, CYCLE95(…)), "
     "RET, DIAMON, DIAMOF or a ';' comment";
@@ -123,20 +127,20 @@ class BlockParser {
     return advance();
   }
 
-  // The entry of kNames the name `name` is (upper case), or nothing.
-  static std::optional<std::string_view> readName(const SiemensToken& name) {
-    for (const std::string_view known : kNames) {
-      if (equalIgnoringCase(name.text, known)) return known;
+  // The entry of kNames the name `name` is, or nullptr.
+  static const KnownName* readName(const SiemensToken& name) {
+    for (const KnownName& known : kNames) {
+      if (equalIgnoringCase(name.text, known.name)) return &known;
     }
-    return std::nullopt;
+    return nullptr;
   }
 
   void item() {
     if (current_.kind != SiemensTokenKind::Name) fail(current_, kEverythingAccepted);
     const SiemensToken name = advance();
-    const auto known = readName(name);
+    const KnownName* known = readName(name);
     if (!known) fail(name, kEverythingAccepted);
-    const std::string_view is = *known;
+    const std::string_view is = known->name;
     if (is == "R") return rAssignment(name);
     if (is == "CR" || is == "CHF" || is == "CHR" || is == "RND") return namedValue(name, is);
     if (is == "_CNAME") return stringAssignment(name, std::string(is));
@@ -145,7 +149,7 @@ class BlockParser {
       block_.keywords.push_back({std::string(is), lexer_.lineNumber(), name.column});
       return;
     }
-    return addressWord(name, is);  // G X Z I K F S T D M N L
+    return addressWord(name, *known);  // G X Z I K F S T D M N L
   }
 
   SiemensWord wordFrom(const SiemensToken& name, std::string_view address, const SiemensToken& number,
@@ -156,14 +160,15 @@ class BlockParser {
     return {address, number.number, std::move(text), lexer_.lineNumber(), name.column};
   }
 
-  void addressWord(const SiemensToken& name, std::string_view address) {
+  void addressWord(const SiemensToken& name, const KnownName& known) {
+    const std::string_view address = known.name;
     if (current_.kind == SiemensTokenKind::Equals) {
       fail(current_, "a number right after address " + std::string(address) + " (" + std::string(address) +
                          "=… is not in the 802's language)");
     }
     const SiemensToken number =
         expect(SiemensTokenKind::Number, [address] { return "a number after address " + std::string(address); });
-    if (isValueAddress(address)) {
+    if (known.bounded) {
       requireWithin(number, kLargestValue, [address] { return "a value of " + std::string(address); });
     }
     SiemensWord word = wordFrom(name, address, number, "");
@@ -171,7 +176,6 @@ class BlockParser {
     if (address == "L") return subprogramCall(number, std::move(word));
     keepWord(name, std::move(word));
   }
-
 
   // A number outside ±largest, refused at its token naming the bound and what it is for (`what()`,
   // built only then).
@@ -184,10 +188,6 @@ class BlockParser {
     while (text.back() == '0') text.pop_back();
     if (text.back() == '.') text.pop_back();
     fail(number, what() + " within -" + text + "…" + text);
-  }
-
-  static bool isValueAddress(std::string_view address) {
-    return std::find(std::begin(kValueAddresses), std::end(kValueAddresses), address) != std::end(kValueAddresses);
   }
 
   // One word of an address per block (G and M may repeat: codes of different groups); a second
