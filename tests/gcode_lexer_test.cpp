@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -255,6 +259,40 @@ TEST(Lexer, RecognisesNonFiniteSpellings) {
   EXPECT_EQ(nonFiniteSpellingAt("in", 0), "");
   EXPECT_EQ(nonFiniteSpellingAt("I5", 0), "");
   EXPECT_EQ(nonFiniteSpellingAt("x", 5), "");
+}
+
+// readNumber's value of a plain decimal is from_chars' to the bit (its fast path divides the digits
+// by a power of ten): random numbers of up to 15 significant digits, every place of the point, both
+// signs, leading and trailing zeros.
+TEST(Lexer, ReadsPlainDecimalsToTheBitAsFromChars) {
+  std::mt19937_64 random(20261127);
+  for (int n = 0; n < 200000; ++n) {
+    const int digits = 1 + static_cast<int>(random() % 17);
+    std::string text;
+    const int sign = static_cast<int>(random() % 3);
+    if (sign == 1) text += '-';
+    if (sign == 2) text += '+';
+    const int point = static_cast<int>(random() % (digits + 2)) - 1;  // -1: none
+    for (int d = 0; d < digits; ++d) {
+      if (d == point) text += '.';
+      text += static_cast<char>('0' + random() % 10);
+    }
+    if (point == digits) text += '.';
+    const NumberReading r = readNumber(text);
+    const std::string_view body = text[0] == '+' ? std::string_view(text).substr(1) : std::string_view(text);
+    double expected = 0;
+    std::from_chars(body.data(), body.data() + body.size(), expected);
+    if (significantDigits(text) > kMostSignificantDigits) {
+      EXPECT_NE(r.expected, nullptr) << text;
+      continue;
+    }
+    ASSERT_EQ(r.expected, nullptr) << text;
+    ASSERT_EQ(std::memcmp(&r.value, &expected, sizeof expected), 0) << text << " " << r.value << " " << expected;
+  }
+  EXPECT_EQ(std::signbit(readNumber("-0.0").value), true);
+  EXPECT_NE(readNumber(".").expected, nullptr);
+  EXPECT_NE(readNumber("1.2.3").expected, nullptr);
+  EXPECT_EQ(readNumber("0.0000000000000000000000005").value, 5e-25);  // past the fast path's 22 decimals
 }
 
 }  // namespace

@@ -5,7 +5,10 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <iterator>
+#include <optional>
 #include <system_error>
 #include <utility>
 
@@ -208,7 +211,45 @@ int significantDigits(std::string_view number) {
   return count;
 }
 
+namespace {
+
+// The value of a plain decimal — an optional sign, digits with at most one decimal point — of at
+// most kMostSignificantDigits significant digits and at most 22 decimals, or nothing for any other
+// text. It is m / 10^k with m < 10^15 < 2^53 and 10^k ≤ 10^22, both exact doubles, so the one
+// correctly rounded division gives the double nearest to the number, which is from_chars' result
+// too (Clinger's fast path) at a fraction of its cost: the numbers are most of a SINUMERIK case's
+// parsing.
+std::optional<double> plainDecimalValue(std::string_view text) {
+  static constexpr double kPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                            1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  std::size_t i = 0;
+  const bool negative = !text.empty() && text[0] == '-';
+  if (!text.empty() && (text[0] == '+' || text[0] == '-')) ++i;
+  std::uint64_t m = 0;
+  int significant = 0, decimals = 0;
+  bool point = false, digits = false;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '.' && !point) {
+      point = true;
+      continue;
+    }
+    if (c < '0' || c > '9') return std::nullopt;
+    digits = true;
+    if (m != 0 || c != '0') ++significant;
+    if (significant > kMostSignificantDigits) return std::nullopt;
+    m = m * 10 + static_cast<std::uint64_t>(c - '0');
+    if (point) ++decimals;
+  }
+  if (!digits || decimals >= static_cast<int>(std::size(kPowersOfTen))) return std::nullopt;
+  const double value = static_cast<double>(m) / kPowersOfTen[decimals];
+  return negative ? -value : value;
+}
+
+}  // namespace
+
 NumberReading readNumber(std::string_view text) {
+  if (const auto value = plainDecimalValue(text)) return {*value, nullptr};
   NumberReading r;
   if (significantDigits(text) > kMostSignificantDigits) {
     r.expected = "a number of at most 15 significant digits";

@@ -12,26 +12,27 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 
 double angleOf(Point p, Point center) { return std::atan2(p.x - center.x, p.z - center.z); }
 
-// Angle in [0, 2π).
-double normalized(double a) {
-  a = std::fmod(a, kTwoPi);
-  return a < 0 ? a + kTwoPi : a;
-}
-
 // sweep() of an arc whose end angles `a0` (from) and `a1` (to) are known: ArcAngles has the start's
 // already (each angle is an atan2, a hot spot of the planners and the material replay).
 double sweepFromAngles(const Segment& s, double a0, double a1) {
   // A closed arc (from == to) is a full circle.
   const bool full = nearlyEqual(s.from, s.to);
   if (s.kind == SegmentKind::ArcCCW) {
-    const double d = normalized(a1 - a0);
+    const double d = normalizedAngle(a1 - a0);
     return (full || d == 0) ? kTwoPi : d;
   }
-  const double d = normalized(a0 - a1);
+  const double d = normalizedAngle(a0 - a1);
   return -((full || d == 0) ? kTwoPi : d);
 }
 
 }  // namespace
+
+double normalizedAngle(double a) {
+  // std::fmod returns an `a` within ±2π unchanged (it is exact: a − n·2π with n = 0), and most
+  // angles here are differences of two atan2 results, within ±2π: fmod is left for the others.
+  if (!(std::abs(a) < kTwoPi)) a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
 
 ArcAngles::ArcAngles(const Segment& arc)
     : start(angleOf(arc.from, arc.center)),
@@ -41,7 +42,7 @@ std::optional<double> offsetAlongArc(const Segment& s, double a) { return offset
 
 std::optional<double> offsetAlongArc(const ArcAngles& arc, double a) {
   const double span = std::abs(arc.sweep);
-  double off = arc.sweep > 0 ? normalized(a - arc.start) : normalized(arc.start - a);
+  double off = arc.sweep > 0 ? normalizedAngle(a - arc.start) : normalizedAngle(arc.start - a);
   const double angularTol = 1e-9;
   if (off > kTwoPi - angularTol) off = 0;  // just before the start counts as the start
   if (off <= span + angularTol) return std::min(off, span);
@@ -135,6 +136,7 @@ std::vector<Point> intersectWithLevelX(const Segment& s, double level) {
     if (auto off = offsetAlongArc(angles, angleOf(p, s.center))) ordered[count++] = {*off, p};
   }
   if (count == 2 && ordered[1].first < ordered[0].first) std::swap(ordered[0], ordered[1]);
+  hits.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     const Point p = ordered[k].second;
     if (hits.empty() || !nearlyEqual(hits.back(), p, 1e-12)) hits.push_back(p);

@@ -44,6 +44,9 @@ struct Segment {
 // Point on the segment at parameter t in [0,1] (by arc angle for arcs).
 Point pointAt(const Segment& s, double t);
 
+// The angle `a` (radians) in [0, 2π): std::fmod(a, 2π), plus 2π when negative.
+double normalizedAngle(double a);
+
 // Signed sweep angle of an arc in radians (negative for CW), in (-2π, 2π]; 0 for lines.
 double sweep(const Segment& s);
 

@@ -18,12 +18,6 @@ double norm(Point a) { return std::hypot(a.z, a.x); }
 Point unit(Point a) { return (1.0 / norm(a)) * a; }
 double angleOf(Point p, Point center) { return std::atan2(p.x - center.x, p.z - center.z); }
 
-// Angle in [0, 2π).
-double normalized(double a) {
-  a = std::fmod(a, kTwoPi);
-  return a < 0 ? a + kTwoPi : a;
-}
-
 // Direction of travel on an arc at point p (p on the arc).
 Point arcTangentAt(const Segment& s, Point p) {
   const Point radial = unit(p - s.center);
@@ -70,6 +64,18 @@ Piece offsetPiece(const Segment& s, int i, double r, CompensationSide side) {
   return piece;
 }
 
+// fractionAlong on an arc `s` of signed sweep `sweep` whose start lies at the angle `start` around
+// its centre (angleOf(s.from, s.center), given: distanceToSegment knows it already).
+std::optional<double> fractionAlongArc(const Segment& s, double sweep, double start, Point p) {
+  const double span = std::abs(sweep);
+  const double angularTol = kGeomEps / s.radius();
+  const double dir = sweep >= 0 ? 1.0 : -1.0;
+  double off = normalizedAngle(dir * (angleOf(p, s.center) - start));
+  if (off > kTwoPi - angularTol) off -= kTwoPi;  // just before the start counts as the start
+  if (off < -angularTol || off > span + angularTol) return std::nullopt;
+  return span > 0 ? std::clamp(off / span, 0.0, 1.0) : 0.0;
+}
+
 // Where p lies on the piece as a fraction of its length in [0, 1], or nothing when p is off the
 // piece by more than the tolerance. p is known to lie on the piece's line or circle.
 std::optional<double> fractionAlong(const Piece& piece, Point p) {
@@ -83,13 +89,7 @@ std::optional<double> fractionAlong(const Piece& piece, Point p) {
     if (along < -kGeomEps || along > len + kGeomEps) return std::nullopt;
     return std::clamp(along / len, 0.0, 1.0);
   }
-  const double span = std::abs(piece.sweep);
-  const double angularTol = kGeomEps / s.radius();
-  const double dir = piece.sweep >= 0 ? 1.0 : -1.0;
-  double off = normalized(dir * (angleOf(p, s.center) - angleOf(s.from, s.center)));
-  if (off > kTwoPi - angularTol) off -= kTwoPi;  // just before the start counts as the start
-  if (off < -angularTol || off > span + angularTol) return std::nullopt;
-  return span > 0 ? std::clamp(off / span, 0.0, 1.0) : 0.0;
+  return fractionAlongArc(s, piece.sweep, angleOf(s.from, s.center), p);
 }
 
 // Intersections of the full lines/circles carrying two pieces.
@@ -177,6 +177,7 @@ Piece cornerArc(Point from, Point to, Point corner, CompensationSide side, const
 // The input without zero-length segments, each with its index in the input.
 std::vector<std::pair<int, Segment>> nonEmptySegments(const std::vector<Segment>& path) {
   std::vector<std::pair<int, Segment>> kept;
+  kept.reserve(path.size());
   for (int i = 0; i < static_cast<int>(path.size()); ++i) {
     if (path[i].length() <= kGeomEps) continue;
     if (!kept.empty() && distance(kept.back().second.to, path[i].from) > 1e-6) {
@@ -191,6 +192,7 @@ std::vector<std::pair<int, Segment>> nonEmptySegments(const std::vector<Segment>
 // Pieces to segments: drops zero-length pieces and makes every join exact.
 std::vector<Segment> assemble(const std::vector<Piece>& pieces) {
   std::vector<Segment> result;
+  result.reserve(pieces.size());
   for (const Piece& piece : pieces) {
     if (piece.length() <= kGeomEps) continue;
     Segment s = piece.seg;
@@ -243,12 +245,15 @@ double distanceToSegment(Point p, const Segment& s) {
     const double t = len2 > 0 ? std::clamp(dot(p - s.from, d) / len2, 0.0, 1.0) : 0.0;
     return distance(p, s.from + t * d);
   }
-  const double toEnds = std::min(distance(p, s.from), distance(p, s.to));
-  if (distance(p, s.center) <= kGeomEps) return s.radius();
-  const Piece whole{s, sweep(s), 0};
+  return distanceToSegment(p, s, ArcAngles(s));
+}
+
+double distanceToSegment(Point p, const Segment& arc, const ArcAngles& angles) {
+  const double toEnds = std::min(distance(p, arc.from), distance(p, arc.to));
+  if (distance(p, arc.center) <= kGeomEps) return arc.radius();
   // The nearest point of the full circle counts when it lies on the arc.
-  const Point nearest = s.center + s.radius() * unit(p - s.center);
-  if (fractionAlong(whole, nearest)) return std::min(toEnds, distance(p, nearest));
+  const Point nearest = arc.center + arc.radius() * unit(p - arc.center);
+  if (fractionAlongArc(arc, angles.sweep, angles.start, nearest)) return std::min(toEnds, distance(p, nearest));
   return toEnds;
 }
 
@@ -280,6 +285,7 @@ std::vector<Segment> offsetPath(const std::vector<Segment>& path, double r, Comp
   if (!(r >= 0)) throw std::invalid_argument("offsetPath: the nose radius must be >= 0");
   const auto kept = nonEmptySegments(path);
   std::vector<Piece> pieces;
+  pieces.reserve(2 * kept.size());  // a piece per segment and one per corner at most
   for (std::size_t k = 0; k < kept.size(); ++k) {
     const auto& [index, segment] = kept[k];
     Piece next = offsetPiece(segment, index, r, side);

@@ -79,6 +79,9 @@ Point unitTangentAtStart(const Segment& s);  // direction of travel at `from`
 Point unitTangentAtEnd(const Segment& s);    // direction of travel at `to`
 Point sideNormal(Point unitTangent, CompensationSide side);
 double distanceToSegment(Point p, const Segment& s);
+// distanceToSegment of an arc whose angles are known (ArcAngles(arc)): the same distance, without
+// working them out again for each point.
+double distanceToSegment(Point p, const Segment& arc, const ArcAngles& angles);
 double distanceToPath(Point p, const std::vector<Segment>& path);  // +∞ for an empty path
 // distanceToPath(p, path) <= tolerance, answered without measuring the segments far from p.
 bool nearPath(Point p, const std::vector<Segment>& path, double tolerance);

@@ -15,14 +15,25 @@ double cross(Point a, Point b) { return a.z * b.x - a.x * b.z; }
 double dot(Point a, Point b) { return a.z * b.z + a.x * b.x; }
 Point unit(Point v) { return (1.0 / std::hypot(v.z, v.x)) * v; }
 
-// Whether `p` lies on the element (within the geometry's tolerance, ends included).
-bool onElement(Point p, const Segment& s) { return distanceToSegment(p, s) <= 1e-7; }
+// An element next to a corner, with its arc's angles worked out once (ArcAngles; a chamfer's
+// length next to an arc is searched for, legOfChamferLength, trying many legs on the same element).
+struct CornerElement {
+  explicit CornerElement(const Segment& s) : s(s), angles(s.isArc() ? std::optional(ArcAngles(s)) : std::nullopt) {}
+  const Segment& s;
+  std::optional<ArcAngles> angles;  // an arc's
+};
 
-// The point of element `s` at straight distance `leg` from its end `corner` (s.to when `atEnd`,
+// Whether `p` lies on the element (within the geometry's tolerance, ends included).
+constexpr double kOnElement = 1e-7;
+bool onElement(Point p, const Segment& s) { return distanceToSegment(p, s) <= kOnElement; }
+bool onArc(Point p, const CornerElement& arc) { return distanceToSegment(p, arc.s, *arc.angles) <= kOnElement; }
+
+// The point of element `e` at straight distance `leg` from its end `corner` (s.to when `atEnd`,
 // else s.from): along a line, `leg` from the corner; on an arc, where the circle of radius `leg`
 // round the corner meets the arc (interpretation, SIEMENS.CORNER: a chamfer's leg next to an arc is
 // measured straight from the corner). Nothing when the element is shorter than that.
-std::optional<Point> pointAtDistanceFromCorner(const Segment& s, bool atEnd, double leg) {
+std::optional<Point> pointAtDistanceFromCorner(const CornerElement& e, bool atEnd, double leg) {
+  const Segment& s = e.s;
   const Point corner = atEnd ? s.to : s.from;
   if (!s.isArc()) {
     const Point along = unit(atEnd ? s.from - s.to : s.to - s.from);
@@ -42,7 +53,7 @@ std::optional<Point> pointAtDistanceFromCorner(const Segment& s, bool atEnd, dou
   std::optional<Point> found;
   for (const double sign : {1.0, -1.0}) {
     const Point p = s.center + along * toCorner + (sign * side) * across;
-    if (!onElement(p, s)) continue;
+    if (!onArc(p, e)) continue;
     if (!found || dot(p - corner, leaving) > 0) found = p;
   }
   return found;
@@ -54,8 +65,9 @@ std::optional<Point> pointAtDistanceFromCorner(const Segment& s, bool atEnd, dou
 // is at most twice the leg) and the shorter element's chord. Nothing when the elements are too short.
 std::optional<double> legOfChamferLength(const Segment& a, const Segment& b, double length, double turn) {
   if (!a.isArc() && !b.isArc()) return length / (2 * std::cos(turn / 2));
+  const CornerElement before(a), after(b);
   const auto chord = [&](double leg) -> std::optional<double> {
-    const auto pa = pointAtDistanceFromCorner(a, true, leg), pb = pointAtDistanceFromCorner(b, false, leg);
+    const auto pa = pointAtDistanceFromCorner(before, true, leg), pb = pointAtDistanceFromCorner(after, false, leg);
     if (!pa || !pb) return std::nullopt;
     return distance(*pa, *pb);
   };
@@ -73,7 +85,8 @@ std::optional<double> legOfChamferLength(const Segment& a, const Segment& b, dou
 // SIEMENS.CORNER, CHF=/CHR=: a line from the point `leg` before the corner on `a` to the point `leg`
 // after it on `b` (CHR: `leg` is the given width; CHF: legOfChamferLength).
 Segment chamfer(Segment& a, Segment& b, const CornerRequest& corner, double leg) {
-  const auto from = pointAtDistanceFromCorner(a, true, leg), to = pointAtDistanceFromCorner(b, false, leg);
+  const auto from = pointAtDistanceFromCorner(CornerElement(a), true, leg),
+             to = pointAtDistanceFromCorner(CornerElement(b), false, leg);
   if (!from || !to) {
     throw NotSupported(corner.line, corner.text + " needs " + shortDecimalText(leg) +
                                         " mm of each element; the controller shortens it then, which cyclecert does not model");

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -19,14 +18,23 @@ namespace {
 
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 constexpr double kLargestSequenceNumber = 9999;  // 802S/D: N0…N9999 (interpretation, SIEMENS.LEX)
-constexpr const char* kAddressesWithNumbers = "G X Z I K F S T D M N L";
 // SIEMENS.LEX (interpretation, issue 19): the values cyclecert reads — positions, centres, radii,
 // corner sizes, feeds and cycle arguments — lie within ±999,999.999 (mm or mm/rev; the same bound
 // as the FANUC profiles' IS-B words), an R parameter's value within ±99,999,999 (the 802's eight
 // digits); a larger number is refused where it is written rather than planned.
 constexpr double kLargestValue = 999'999.999;
 constexpr double kLargestRValue = 99'999'999;
-constexpr std::string_view kValueAddresses[] = {"X", "Z", "I", "K", "F", "CR", "CHF", "CHR", "RND"};
+// Every name a block may hold, upper case, the addresses with numbers first: a name is read as the
+// entry it equals ignoring case (readName; no upper-case copy of each name is made). `bounded`: the
+// values written after it lie within ±kLargestValue.
+struct KnownName {
+  std::string_view name;
+  bool bounded = false;
+};
+constexpr KnownName kNames[] = {
+    {"G"}, {"X", true}, {"Z", true}, {"I", true}, {"K", true}, {"F", true}, {"S"}, {"T"}, {"D"}, {"M"}, {"N"}, {"L"},
+    {"R"}, {"CR", true}, {"CHF", true}, {"CHR", true}, {"RND", true},
+    {"_CNAME"}, {"LCYC"}, {"CYCLE"}, {"RET"}, {"DIAMON"}, {"DIAMOF"}};
 constexpr const char* kEverythingAccepted =
     "an address (G X Z I K F S T D M N L), R<n>=, CR=, CHF=, CHR=, RND=, _CNAME=, a cycle (LCYC95, CYCLE95(…)), "
     "RET, DIAMON, DIAMOF or a ';' comment";
@@ -88,20 +96,20 @@ bool holdsNothing(const SiemensBlock& b) {
          !b.subprogramCall && !b.sequence;
 }
 
-// Reads the tokens of one line into a block.
+// Reads the tokens of one line into a block (`block`, empty: read in place where it is kept, since
+// moving a block costs as much as a word).
 class BlockParser {
  public:
-  BlockParser(std::string_view line, const std::string& file, int lineNumber)
-      : lexer_(line, file, lineNumber), current_(lexer_.next()) {
+  BlockParser(std::string_view line, const std::string& file, int lineNumber, SiemensBlock& block)
+      : lexer_(line, file, lineNumber), current_(lexer_.next()), block_(block) {
     block_.line = lineNumber;
   }
 
-  SiemensBlock parse() {
+  void parse() {
     while (current_.kind != SiemensTokenKind::EndOfLine && current_.kind != SiemensTokenKind::Comment) item();
     const std::size_t commentAt = current_.kind == SiemensTokenKind::Comment ? static_cast<std::size_t>(current_.column - 1)
                                                                              : lexer_.line().size();
     block_.text = std::string(trimmed(lexer_.line().substr(0, commentAt)));
-    return std::move(block_);
   }
 
  private:
@@ -119,26 +127,32 @@ class BlockParser {
     return advance();
   }
 
+  // The entry of kNames the name `name` is, or nullptr.
+  static const KnownName* readName(const SiemensToken& name) {
+    for (const KnownName& known : kNames) {
+      if (equalIgnoringCase(name.text, known.name)) return &known;
+    }
+    return nullptr;
+  }
+
   void item() {
     if (current_.kind != SiemensTokenKind::Name) fail(current_, kEverythingAccepted);
     const SiemensToken name = advance();
-    const std::string upper = name.upperName();
-    const std::string_view is = upper;  // compared as a view: lengths first, no strlen per name
+    const KnownName* known = readName(name);
+    if (!known) fail(name, kEverythingAccepted);
+    const std::string_view is = known->name;
     if (is == "R") return rAssignment(name);
-    if (is == "CR" || is == "CHF" || is == "CHR" || is == "RND") return namedValue(name, upper);
-    if (is == "_CNAME") return stringAssignment(name, upper);
-    if (is == "LCYC" || is == "CYCLE") return cycleCall(name, upper);
+    if (is == "CR" || is == "CHF" || is == "CHR" || is == "RND") return namedValue(name, is);
+    if (is == "_CNAME") return stringAssignment(name, std::string(is));
+    if (is == "LCYC" || is == "CYCLE") return cycleCall(name, std::string(is));
     if (is == "RET" || is == "DIAMON" || is == "DIAMOF") {
-      block_.keywords.push_back({upper, lexer_.lineNumber(), name.column});
+      block_.keywords.push_back({std::string(is), lexer_.lineNumber(), name.column});
       return;
     }
-    if (upper.size() == 1 && std::string_view(kAddressesWithNumbers).find(upper[0]) != std::string_view::npos) {
-      return addressWord(name, upper);
-    }
-    fail(name, kEverythingAccepted);
+    return addressWord(name, *known);  // G X Z I K F S T D M N L
   }
 
-  SiemensWord wordFrom(const SiemensToken& name, const std::string& address, const SiemensToken& number,
+  SiemensWord wordFrom(const SiemensToken& name, std::string_view address, const SiemensToken& number,
                        std::string_view between) const {
     std::string text;
     text.reserve(name.text.size() + between.size() + number.text.size());
@@ -146,15 +160,20 @@ class BlockParser {
     return {address, number.number, std::move(text), lexer_.lineNumber(), name.column};
   }
 
-  void addressWord(const SiemensToken& name, const std::string& address) {
+  void addressWord(const SiemensToken& name, const KnownName& known) {
+    const std::string_view address = known.name;
     if (current_.kind == SiemensTokenKind::Equals) {
-      fail(current_, "a number right after address " + address + " (" + address + "=… is not in the 802's language)");
+      fail(current_, "a number right after address " + std::string(address) + " (" + std::string(address) +
+                         "=… is not in the 802's language)");
     }
-    const SiemensToken number = expect(SiemensTokenKind::Number, [&] { return "a number after address " + address; });
-    if (isValueAddress(address)) requireWithin(number, kLargestValue, [&] { return "a value of " + address; });
+    const SiemensToken number =
+        expect(SiemensTokenKind::Number, [address] { return "a number after address " + std::string(address); });
+    if (known.bounded) {
+      requireWithin(number, kLargestValue, [address] { return "a value of " + std::string(address); });
+    }
     SiemensWord word = wordFrom(name, address, number, "");
-    if (address == std::string_view("N")) return sequence(number, word);
-    if (address == std::string_view("L")) return subprogramCall(number, std::move(word));
+    if (address == "N") return sequence(number, word);
+    if (address == "L") return subprogramCall(number, std::move(word));
     keepWord(name, std::move(word));
   }
 
@@ -171,17 +190,13 @@ class BlockParser {
     fail(number, what() + " within -" + text + "…" + text);
   }
 
-  static bool isValueAddress(const std::string& address) {
-    return std::find(std::begin(kValueAddresses), std::end(kValueAddresses), address) != std::end(kValueAddresses);
-  }
-
   // One word of an address per block (G and M may repeat: codes of different groups); a second
   // would leave which one counts to the reader (interpretation, SIEMENS.LEX).
   void keepWord(const SiemensToken& name, SiemensWord word) {
-    if (word.address != std::string_view("G") && word.address != std::string_view("M")) {
+    if (word.address != "G" && word.address != "M") {
       if (const SiemensWord* first = block_.find(word.address)) {
         throw ParseError({lexer_.file(), lexer_.lineNumber(), name.column},
-                         "one " + word.address + " word per block (" + first->text + " at column " +
+                         "one " + std::string(word.address) + " word per block (" + first->text + " at column " +
                              std::to_string(first->column) + ")",
                          word.text);
       }
@@ -224,11 +239,12 @@ class BlockParser {
     block_.rAssignments.push_back({static_cast<int>(number.number), value.number, lexer_.lineNumber(), name.column});
   }
 
-  void namedValue(const SiemensToken& name, const std::string& address) {
+  void namedValue(const SiemensToken& name, std::string_view address) {
+    const std::string a(address);
     const SiemensToken equals =
-        expect(SiemensTokenKind::Equals, [&] { return "'=' after " + address + " (" + address + "=value)"; });
-    const SiemensToken number = expect(SiemensTokenKind::Number, [&] { return "a number after " + address + "="; });
-    requireWithin(number, kLargestValue, [&] { return "a value of " + address + "="; });
+        expect(SiemensTokenKind::Equals, [&] { return "'=' after " + a + " (" + a + "=value)"; });
+    const SiemensToken number = expect(SiemensTokenKind::Number, [&] { return "a number after " + a + "="; });
+    requireWithin(number, kLargestValue, [&] { return "a value of " + a + "="; });
     keepWord(name, wordFrom(name, address, number, equals.text));
   }
 
@@ -282,7 +298,7 @@ class BlockParser {
 
   SiemensLexer lexer_;
   SiemensToken current_;
-  SiemensBlock block_;
+  SiemensBlock& block_;
 };
 
 // The blocks of `lines`, in order; `printed` collects the subprograms printed after the main
@@ -290,6 +306,9 @@ class BlockParser {
 SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file,
                          std::vector<PrintedSubprogram>* printed) {
   SiemensBlocks main{file, {}};
+  // A block per line at most (and no more than PROG.CAP.BLOCKS allows): no block is moved as the
+  // vector grows.
+  main.blocks.reserve(std::min(lines.size(), kMostBlocksPerProgram));
   SiemensBlocks* section = &main;
   int endLine = 0;  // the line of the current section's M02/M17/M30/RET, 0 before it
   std::size_t blocks = 0;
@@ -309,8 +328,12 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
       endLine = 0;
       continue;
     }
-    SiemensBlock block = BlockParser(line.text, file, line.number).parse();
-    if (holdsNothing(block)) continue;
+    SiemensBlock& block = section->blocks.emplace_back();
+    BlockParser(line.text, file, line.number, block).parse();
+    if (holdsNothing(block)) {
+      section->blocks.pop_back();
+      continue;
+    }
     if (endLine) {
       throw ParseError({file, line.number, 1},
                        std::string("nothing after the end at line ") + std::to_string(endLine) +
@@ -319,7 +342,6 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
     }
     if (block.endsProgram()) endLine = block.line;
     requireBlockWithinTheCap(++blocks, file, line.number);  // PROG.CAP.BLOCKS, printed subprograms included
-    section->blocks.push_back(std::move(block));
   }
   return main;
 }

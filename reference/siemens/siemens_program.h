@@ -10,9 +10,10 @@
 
 namespace cyclecert {
 
-// An address with a number: "G3", "X20.8", "T1", "CR=8", "CHF=1.5". `address` is upper case.
+// An address with a number: "G3", "X20.8", "T1", "CR=8", "CHF=1.5". `address` is upper case, a
+// view of the parser's constant name (siemens_parser.cpp), valid for the program's whole run.
 struct SiemensWord {
-  std::string address;
+  std::string_view address;
   double value = 0;
   std::string text;  // as written
   int line = 0;

@@ -131,7 +131,8 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
   if (s.type.technology != SiemensTechnology::Finishing && !s.roughUndercuts) {
     out.warnings = undercutsLeftToFinishing(cycle.profile, contour, frame, call.line);
   }
-  for (Move& m : planStockRemoval(cycle, frame.toFrame(call.position))) out.moves.push_back(frame.toPlane(std::move(m)));
+  out.moves = planStockRemoval(cycle, frame.toFrame(call.position));
+  for (Move& m : out.moves) m = frame.toPlane(std::move(m));
   requirePositiveCuttingFeeds(out.moves, s, call.line);
   out.end = out.moves.empty() ? call.position : out.moves.back().to;
   return out;

@@ -102,15 +102,15 @@ double positionAlong(const Segment& s, Point p) {
 // `upper` (after its start), or where it starts to turn back down (an undercut begins) unless
 // `throughDescents` (in the front stretch, frontStretchEnd, and on a pocket's own profile).
 std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughDescents) {
-  std::vector<Point> stops;
+  std::optional<Point> first;  // the stop first along `s` (of equally far ones, the first found)
+  const auto stop = [&](Point p) {
+    if (!first || positionAlong(s, p) < positionAlong(s, *first)) first = p;
+  };
   for (const Point& p : intersectWithLevelX(s, upper)) {
-    if (distance(p, s.from) > kGeomEps) stops.push_back(p);
+    if (distance(p, s.from) > kGeomEps) stop(p);
   }
-  if (const auto descent = throughDescents ? std::nullopt : descentStartOn(s)) stops.push_back(*descent);
-  if (stops.empty()) return std::nullopt;
-  return *std::min_element(stops.begin(), stops.end(), [&](Point a, Point b) {
-    return positionAlong(s, a) < positionAlong(s, b);
-  });
+  if (const auto descent = throughDescents ? std::nullopt : descentStartOn(s)) stop(*descent);
+  return first;
 }
 
 // The parts of `s` (the piece of profile element `i` a cleanup runs along, its end the element's), each
@@ -229,7 +229,11 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
   const auto above = [&](Point q) {
     return q.z > p.z + kGeomEps && q.z <= p.z + v + kGeomEps && q.x > p.x + (q.z - p.z) + kGeomEps;
   };
-  const double h = 1 / std::numbers::sqrt2;
+  constexpr double h = 1 / std::numbers::sqrt2;
+  // The directions from an arc's centre to where it runs parallel to the diagonal, and their angles.
+  static const Point kNormals[] = {Point{h, -h}, Point{-h, h}};
+  static const double kNormalAngles[] = {std::atan2(kNormals[0].x, kNormals[0].z),
+                                         std::atan2(kNormals[1].x, kNormals[1].z)};
   for (const Segment& s : profile) {
     // Most elements lie outside the window or below p (the pass has just cut there): a box around
     // the element (an arc's whole circle) rules them out before anything is computed.
@@ -238,15 +242,16 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
     const double zHigh = s.isArc() ? s.center.z + r : std::max(s.from.z, s.to.z);
     const double xHigh = s.isArc() ? s.center.x + r : std::max(s.from.x, s.to.x);
     if (zHigh <= p.z + kGeomEps || zLow > p.z + v + kGeomEps || xHigh <= p.x + kGeomEps) continue;
-    std::vector<Point> candidates{s.from, s.to};
-    for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) candidates.push_back(transposed(t));
+    if (above(s.from) || above(s.to)) return true;
+    for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) {
+      if (above(transposed(t))) return true;
+    }
     if (s.isArc()) {
       const ArcAngles angles(s);
-      for (const Point& n : {Point{h, -h}, Point{-h, h}}) {
-        if (offsetAlongArc(angles, std::atan2(n.x, n.z))) candidates.push_back(s.center + r * n);
+      for (int k = 0; k < 2; ++k) {
+        if (offsetAlongArc(angles, kNormalAngles[k]) && above(s.center + r * kNormals[k])) return true;
       }
     }
-    if (std::any_of(candidates.begin(), candidates.end(), above)) return true;
   }
   return false;
 }

@@ -1,5 +1,6 @@
 #include "reference/siemens/siemens_runner.h"
 
+#include <iterator>
 #include <optional>
 
 #include "reference/interpreter/known_position.h"
@@ -208,7 +209,8 @@ class SiemensRunner {
                                      " moves; cyclecert plans at most that many per program");
     }
     path_.cycles.push_back({call.name, b.line, position_, path_.moves.size(), out.moves.size(), contour.segments, Point{}, false, {}});
-    for (Move& m : out.moves) path_.moves.push_back(std::move(m));
+    path_.moves.insert(path_.moves.end(), std::make_move_iterator(out.moves.begin()),
+                       std::make_move_iterator(out.moves.end()));
     for (Warning& w : out.warnings) path_.warnings.push_back(std::move(w));
     position_ = out.end;
   }
