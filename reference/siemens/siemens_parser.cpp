@@ -306,9 +306,11 @@ class BlockParser {
 SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file,
                          std::vector<PrintedSubprogram>* printed) {
   SiemensBlocks main{file, {}};
-  // A block per line at most (and no more than PROG.CAP.BLOCKS allows): no block is moved as the
-  // vector grows.
-  main.blocks.reserve(std::min(lines.size(), kMostBlocksPerProgram));
+  // A block per line at most: a program of usual length is read without moving a block as the
+  // vector grows; a longer one's vector grows as its blocks come (a file of a million blank lines
+  // reserves no more than this).
+  constexpr std::size_t kBlocksReservedAtOnce = 1024;
+  main.blocks.reserve(std::min(lines.size(), kBlocksReservedAtOnce));
   SiemensBlocks* section = &main;
   int endLine = 0;  // the line of the current section's M02/M17/M30/RET, 0 before it
   std::size_t blocks = 0;
