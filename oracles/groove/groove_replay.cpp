@@ -194,14 +194,11 @@ std::vector<Point> bladeBottomAlong(Point from, Point to, double width) {
   return deepestOutlineOf({from + grooveUW(-width, 0), from, to + grooveUW(-width, 0), to});
 }
 
-// A nose's: the disc's polygon (noseDisc) about the centre at both ends.
-std::vector<Point> noseBottomAlong(Point from, Point to, const std::vector<Point>& disc) {
+// A nose's: the disc's polygon (noseDisc) about the centre at both ends, those of its points that
+// can lie on the sweep's hull (SweptShape::along).
+std::vector<Point> noseBottomAlong(Point from, Point to, const SweptShape& disc) {
   std::vector<Point> corners;
-  corners.reserve(2 * disc.size());
-  for (Point c : disc) {
-    corners.push_back(from + c);
-    corners.push_back(to + c);
-  }
+  disc.along(from, to, corners);
   return deepestOutlineOf(std::move(corners));
 }
 
@@ -211,7 +208,7 @@ bool noseStaysAbove(const PartTop& top, const GrooveReplay& r, const Segment& mo
   if (!r.nose) return false;
   const std::vector<Point> points = flatten(centrePath(r, move), chord);
   for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    if (!top.liesBelow(noseBottomAlong(points[k], points[k + 1], r.nose->disc.points()), slack)) return false;
+    if (!top.liesBelow(noseBottomAlong(points[k], points[k + 1], r.nose->disc), slack)) return false;
   }
   return true;
 }

@@ -36,7 +36,6 @@ BgRegion convexHullOf(const std::vector<Point>& points);
 class SweptShape {
  public:
   explicit SweptShape(std::vector<Point> points);
-  const std::vector<Point>& points() const { return points_; }
   // (shape + from) ∪ (shape + to), in that order point by point, without the points that cannot
   // be on their hull, into `out`.
   void along(Point from, Point to, std::vector<Point>& out) const;
