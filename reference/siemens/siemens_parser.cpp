@@ -240,11 +240,12 @@ class BlockParser {
   }
 
   void namedValue(const SiemensToken& name, std::string_view address) {
-    const std::string a(address);
-    const SiemensToken equals =
-        expect(SiemensTokenKind::Equals, [&] { return "'=' after " + a + " (" + a + "=value)"; });
-    const SiemensToken number = expect(SiemensTokenKind::Number, [&] { return "a number after " + a + "="; });
-    requireWithin(number, kLargestValue, [&] { return "a value of " + a + "="; });
+    const SiemensToken equals = expect(SiemensTokenKind::Equals, [address] {
+      return "'=' after " + std::string(address) + " (" + std::string(address) + "=value)";
+    });
+    const SiemensToken number =
+        expect(SiemensTokenKind::Number, [address] { return "a number after " + std::string(address) + "="; });
+    requireWithin(number, kLargestValue, [address] { return "a value of " + std::string(address) + "="; });
     keepWord(name, wordFrom(name, address, number, equals.text));
   }
 
