@@ -92,7 +92,7 @@ BgRegion withoutWhatG70Removes(const JudgeInput& in, const MaterialReplay& r, Bg
 // in the relief's frame), the top without skins decides (mayStandThickerWithoutSkins): the judgement
 // below measures the material left without them before it reports.
 bool leftoverMayExceed(const MaterialReplay& r, double allowed, double tolerance) {
-  if (!isGraphOverCutAxis(r.target, DepthFrame(r.away))) return true;
+  if (!r.targetIsGraph) return true;
   const auto span = targetSpan(r, tolerance);
   if (!span) return false;
   return standsThickerThan(r.model->topWithin(span->first, span->second), r.target, r.away, tolerance / 2, allowed) &&

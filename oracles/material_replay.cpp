@@ -501,10 +501,13 @@ namespace {
 
 // The part: everything below `profile` in `frame` (nothing for an empty profile), and no-gouge's
 // crossing test for it — below a profile that is a graph over the cut axis the part's edges are
-// found by their cut coordinates (nothing to build); any other part's rings are indexed.
-void setPartBelow(MaterialReplay& r, const std::vector<Segment>& profile, const DepthFrame& frame, double chordTolerance) {
+// found by their cut coordinates (nothing to build); any other part's rings are indexed. Returns
+// whether the profile is such a graph (isGraphOverCutAxis), which its outline found.
+bool setPartBelow(MaterialReplay& r, const std::vector<Segment>& profile, const DepthFrame& frame, double chordTolerance) {
+  bool graph = true;
   if (!profile.empty()) {
     const PartOutline part = partOutlineOf(profile, frame, r.reach, chordTolerance);
+    graph = part.graph;
     r.part = partRegionFrom(part, profile, frame, r.reach, chordTolerance);
     if (part.graph) {
       std::vector<std::pair<double, double>> top;
@@ -515,6 +518,7 @@ void setPartBelow(MaterialReplay& r, const std::vector<Segment>& profile, const 
     }
   }
   if (!r.partBelowProfile) r.partForCrossing = CrossingRegion(r.part);
+  return graph;
 }
 
 // The replay's frame, stock and part for a FANUC roughing cycle (no move replayed yet).
@@ -530,6 +534,7 @@ MaterialReplay fanucReplayOf(const JudgeInput& in, const CycleSpec& c) {
   // The part region starts after the head block for type I (its A'→B' is the side of the stock).
   const std::vector<Segment> profile(r.target.begin() + (c.typeII ? 0 : 1), r.target.end());
   setPartBelow(r, profile, DepthFrame(partSideOf(c)), in.settings.chordTolerance);
+  r.targetIsGraph = isGraphOverCutAxis(r.target, DepthFrame(r.away));
   return r;
 }
 
@@ -703,12 +708,13 @@ MaterialReplay siemensReplayOf(const JudgeInput& in, const std::vector<const Sie
   r.target = r.siemensFinishing ? finish : profile;
   const DepthFrame frame(r.away);
   if (!r.siemensFinishing) {
-    setPartBelow(r, profile, frame, chord);
+    r.targetIsGraph = setPartBelow(r, profile, frame, chord);
   } else if (r.siemensFinishing->tool.noseRadius <= 0) {
-    setPartBelow(r, finish, frame, chord);  // the contour: the profile stands above it
+    r.targetIsGraph = setPartBelow(r, finish, frame, chord);  // the contour: the profile stands above it
   } else {
     r.part = checkedIntersection(partRegionOf(profile, r.away, r.reach, chord), partRegionOf(finish, r.away, r.reach, chord));
     r.partForCrossing = CrossingRegion(r.part);
+    r.targetIsGraph = isGraphOverCutAxis(r.target, frame);
   }
   if (!r.siemensFinishing) r.leftAlone = siemensLeftAlone(s, r.reach);
   return r;

@@ -37,6 +37,7 @@ struct MaterialReplay {
   std::optional<BgRegion> siemensAllowanceLayer;
   std::vector<Segment> target;       // the surface roughing must leave: the rough profile, or the
                                      // finish shape when a G70 follows
+  bool targetIsGraph = false;        // isGraphOverCutAxis(target) in away's frame, found once
   BgRegion part;                     // everything beyond `target`: no move may enter it
   // Material the cycle leaves standing by its rules, which completeness does not ask for: LCYC95's
   // undercuts when the call only roughs (no undercut roughing, CYCLE95.UNDERCUT note).

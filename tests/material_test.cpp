@@ -374,6 +374,44 @@ TEST(Material, ThickestAboveMeasuresAnArcExactly) {
   EXPECT_NEAR(sloped->where.z, -5 / std::sqrt(101.0), 1e-9);
 }
 
+TEST(Material, StandsThickerThanFindsWhatStandsOffTheStepsItSkips) {
+  // A flat (x 10 from z −10 to −5) and a bump on it (the upper half of the circle about (z 0,
+  // x 10) of radius 5). A top along their chords stands nowhere above them (a chord of the bump
+  // lies inside the circle): the search skips its points from each step alone (thickness.cpp,
+  // cannotBeatAt). A chord raised near the bump's apex, or a piece raised over the flat, stands
+  // above its step there: measured as before.
+  const Segment flat = line({-10, 10}, {-5, 10});
+  const Segment bump = arc(SegmentKind::ArcCW, {-5, 10}, {5, 10}, {0, 10});
+  ASSERT_NEAR(pointAt(bump, 0.5).x, 15, 1e-12);
+  const std::vector<Segment> profile{flat, bump};
+  std::vector<CutEnvelope::Piece> top;
+  for (const Segment& s : profile) {
+    const std::vector<Point> chords = flatten(s, 0.001);
+    for (std::size_t i = 1; i < chords.size(); ++i) top.push_back({chords[i - 1].z, chords[i - 1].x, chords[i].z, chords[i].x});
+  }
+  EXPECT_FALSE(standsThickerThan(top, profile, kOuter, 1e-6, 0.01));
+  std::vector<CutEnvelope::Piece> raisedAtTheApex = top;
+  for (CutEnvelope::Piece& p : raisedAtTheApex) {
+    if (p.c0 <= 0 && p.c1 > 0) {
+      p.d0 += 0.05;
+      p.d1 += 0.05;
+    }
+  }
+  EXPECT_TRUE(standsThickerThan(raisedAtTheApex, profile, kOuter, 1e-6, 0.01));
+  const auto atTheApex = thickestBeneath(raisedAtTheApex, profile, kOuter, 1e-6);
+  ASSERT_TRUE(atTheApex);
+  EXPECT_NEAR(atTheApex->thickness, 0.05, 1e-4);
+  EXPECT_NEAR(atTheApex->where.z, 0, 0.2);
+  std::vector<CutEnvelope::Piece> raisedOverTheFlat = top;
+  raisedOverTheFlat.front() = {-10, 10, -8, 10};
+  raisedOverTheFlat.insert(raisedOverTheFlat.begin() + 1, {{-8, 10.02, -7, 10.02}, {-7, 10, -5, 10}});
+  EXPECT_TRUE(standsThickerThan(raisedOverTheFlat, profile, kOuter, 1e-6, 0.01));
+  EXPECT_FALSE(standsThickerThan(raisedOverTheFlat, profile, kOuter, 1e-6, 0.03));
+  const auto overTheFlat = thickestBeneath(raisedOverTheFlat, profile, kOuter, 1e-6);
+  ASSERT_TRUE(overTheFlat);
+  EXPECT_NEAR(overTheFlat->thickness, 0.02, 1e-9);
+}
+
 TEST(Material, ThickestAboveReplayedPassesIsTheDepthOfCut) {
   // The three passes of the type I test below (x = 18 to z = −30, 15.5 to −20, 13 to −15)
   // replayed on the implied stock of kG71Shape, without the semi-finish pass. Above the rough

@@ -8,24 +8,43 @@ constexpr int kMostCells = 64;  // per axis
 
 }  // namespace
 
-CrossingRegion::CrossingRegion(const BgRegion& region) : CrossingRegion(outlinesOf(region)) {}
+CrossingRegion::CrossingRegion(const BgRegion& region) {
+  // The rings' edges as outlinesOf gives them (a ring's closing point is its first), read in place.
+  std::size_t points = 0;
+  for (const BgPolygon& polygon : region) {
+    points += polygon.outer().size();
+    for (const auto& hole : polygon.inners()) points += hole.size();
+  }
+  edges_.reserve(points);
+  const auto addRing = [this](const BgPolygon::ring_type& ring) {
+    std::size_t n = ring.size();
+    if (n >= 2 && fromBg(ring.front()) == fromBg(ring.back())) --n;
+    for (std::size_t i = 0; i < n; ++i) addEdge(fromBg(ring[i]), fromBg(ring[(i + 1) % n]));
+  };
+  for (const BgPolygon& polygon : region) {
+    addRing(polygon.outer());
+    for (const auto& hole : polygon.inners()) addRing(hole);
+  }
+}
 
 CrossingRegion::CrossingRegion(const std::vector<std::vector<Point>>& rings) {
   for (const auto& ring : rings) {
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
-      if (a == b) continue;
-      edges_.push_back({a, b, 0, 0});
-      box_.include(a);
-      box_.include(b);
-    }
+    for (std::size_t i = 0; i < ring.size(); ++i) addEdge(ring[i], ring[(i + 1) % ring.size()]);
   }
+}
+
+void CrossingRegion::addEdge(Point a, Point b) {
+  if (a == b) return;
+  edges_.push_back({a, b, 0, 0});
+  box_.include(a);
+  box_.include(b);
 }
 
 void CrossingRegion::makeGrid() const {
   gridMade_ = true;
   // Long: more than a quarter of the region's width or height.
   const double longZ = 0.25 * (box_.zMax - box_.zMin), longX = 0.25 * (box_.xMax - box_.xMin);
+  grid_.reserve(edges_.size());
   double gz0 = INFINITY, gz1 = -INFINITY, gx0 = INFINITY, gx1 = -INFINITY;
   for (const Edge& e : edges_) {
     if (std::abs(e.b.z - e.a.z) > longZ || std::abs(e.b.x - e.a.x) > longX) {
@@ -129,7 +148,13 @@ bool RegionBelowGraph::staysWithin(Point a, Point b, double slack) const {
 }
 
 RegionBelowGraph::Vertex RegionBelowGraph::firstAtOrAfter(double c, Vertex from) const {
-  return std::lower_bound(from, top_.end(), c, [](const auto& q, double v) { return q.first < v; });
+  // Searched from a vertex already found for a chord's other end, the one sought is mostly among
+  // the next few (a chord spans few of the top's vertices): those are looked at first.
+  const Vertex near = from + std::min<std::ptrdiff_t>(kNearVertices, top_.end() - from);
+  for (Vertex it = from; it != near; ++it) {
+    if (!(it->first < c)) return it;
+  }
+  return std::lower_bound(near, top_.end(), c, [](const auto& q, double v) { return q.first < v; });
 }
 
 RegionBelowGraph::Vertex RegionBelowGraph::firstAfter(double c) const {

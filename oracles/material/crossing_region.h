@@ -4,6 +4,7 @@
 // containment by the even-odd rule over the same index. No Boost.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -54,6 +55,7 @@ class CrossingRegion {
   struct CellRange {
     int col0, col1, row0, row1;
   };
+  void addEdge(Point a, Point b);  // an edge of a ring (none for a repeated point)
   CellRange cellsOf(double zMin, double zMax, double xMin, double xMax) const;
   void makeGrid() const;
 
@@ -123,6 +125,7 @@ class RegionBelowGraph {
   double lowestTopWithin(double c0, double c1) const;  // -∞ where [c0, c1] reaches past a side
 
   static constexpr std::size_t kBlock = 16;  // top edges per block
+  static constexpr std::ptrdiff_t kNearVertices = 4;  // firstAtOrAfter's look before it searches
 
   DepthFrame frame_;
   std::vector<std::pair<double, double>> top_;

@@ -98,4 +98,14 @@ SegmentPieces splitWhereTangentIsAlong(const Segment& s, const DepthFrame& frame
 // depth axis allowed).
 bool isGraphOverCutAxis(std::span<const Segment> path, const DepthFrame& frame);
 
+// isGraphOverCutAxis piece by piece, for a caller that splits the path itself: whether each piece
+// (of splitWhereTangentIsAlong) goes the way the ones before went along the cut axis.
+class OneWayAlongCut {
+ public:
+  bool keeps(const Segment& piece, const DepthFrame& frame);
+
+ private:
+  int direction_ = 0;  // +1 or −1 once a piece advanced
+};
+
 }  // namespace cyclecert

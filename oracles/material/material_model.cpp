@@ -270,17 +270,18 @@ MaterialModel::MaterialModel(BgRegion stock, Point away, double reach, double ch
   // The stock's top: the lower envelope of its edges seen from the other side (away reversed),
   // lowered to run by run of each ring that goes one way along the cut axis.
   const DepthFrame reversed({-frame_.away().z, -frame_.away().x});
-  for (std::vector<Point> ring : outlinesOf(stock_)) {
+  std::vector<Point> run;
+  for (std::vector<Point>& ring : outlinesOf(stock_)) {
     if (ring.empty()) continue;
     ring.push_back(ring.front());
-    std::vector<Point> run{ring.front()};
+    run.assign(1, ring.front());
     int direction = 0;
     for (std::size_t i = 1; i < ring.size(); ++i) {
       const double advance = reversed.cut(ring[i]) - reversed.cut(ring[i - 1]);
       const int sign = std::abs(advance) <= kTidyDistance ? 0 : advance > 0 ? 1 : -1;
       if (sign != 0 && direction != 0 && sign != direction) {
         stockTop_.lower(run, reversed);
-        run = {ring[i - 1]};
+        run.assign(1, ring[i - 1]);
         direction = 0;
       }
       if (sign != 0) direction = sign;
@@ -377,6 +378,7 @@ Crossing MaterialModel::crossing(const Segment& move, double epsilon) const {
 
 std::vector<CutEnvelope::Piece> MaterialModel::topWithin(double c0, double c1) const {
   std::vector<CutEnvelope::Piece> top;
+  top.reserve(3 * cut_.pieces().size() + 1);  // at most two a piece, one a gap
   cut_.walk(
       c0, c1,
       [&](const CutEnvelope::Piece& p) {

@@ -132,15 +132,18 @@ double chordsToFlatten(const Segment& s, double chordTolerance) {
   return std::max(1.0, chordsForSweep(ArcAngles(s).sweep, radius, chordTolerance));
 }
 
-void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance) {
+namespace {
+
+// Appends the segment's points flattened within chordTolerance (flatten), leaving out its first
+// point (s.from) when `withFrom` is false: appendFlattened writes straight into the path it grows.
+void appendFlattenedPoints(std::vector<Point>& points, const Segment& s, double chordTolerance, bool withFrom) {
   requireFinite(s);
   if (!(chordTolerance > 0) || !std::isfinite(chordTolerance)) {
     throw std::invalid_argument("the chord tolerance must be a positive number");
   }
-  points.clear();
   const double radius = s.radius();
   if (!s.isArc() || radius <= kGeomEps) {
-    points.push_back(s.from);
+    if (withFrom) points.push_back(s.from);
     points.push_back(s.to);
     return;
   }
@@ -153,8 +156,8 @@ void flattenInto(std::vector<Point>& points, const Segment& s, double chordToler
                                 " mm: it would take more than 1,000,000 chords");
   }
   const int n = std::max(1, static_cast<int>(chords));
-  points.reserve(n + 1);
-  points.push_back(s.from);
+  if (points.empty()) points.reserve(static_cast<std::size_t>(n) + 1);  // a path appended to grows as vectors do
+  if (withFrom) points.push_back(s.from);
   // Each point is the one before turned by the chord's angle about the centre: no sine or cosine
   // per point, and the rounding gathered over n ≤ 10⁶ turns stays within 10⁻⁹ of the radius.
   const double step = span / n, cosStep = std::cos(step), sinStep = std::sin(step);
@@ -168,10 +171,17 @@ void flattenInto(std::vector<Point>& points, const Segment& s, double chordToler
   points.push_back(s.to);
 }
 
+}  // namespace
+
+void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance) {
+  points.clear();
+  appendFlattenedPoints(points, s, chordTolerance, true);
+}
+
 void appendFlattened(std::vector<Point>& points, const Segment& s, double chordTolerance) {
-  const std::vector<Point> more = flatten(s, chordTolerance);
-  const bool joins = !points.empty() && nearlyEqual(points.back(), more.front(), kTidyDistance);
-  points.insert(points.end(), more.begin() + (joins ? 1 : 0), more.end());
+  // Flattening starts at s.from: where the path already ends there, that point is not repeated.
+  const bool joins = !points.empty() && nearlyEqual(points.back(), s.from, kTidyDistance);
+  appendFlattenedPoints(points, s, chordTolerance, !joins);
 }
 
 namespace {

@@ -58,14 +58,27 @@ class ProfileSteps {
   // one beneath switches where they cross, which those points miss: such a profile is measured
   // against fine chords (within `chordTolerance`) instead, which sample it densely.
   ProfileSteps(const std::vector<Segment>& profile, const DepthFrame& frame, double chordTolerance) {
-    const bool graph = isGraphOverCutAxis(profile, frame);
+    // The graph's pieces, found as isGraphOverCutAxis finds whether it is one.
+    std::vector<Segment> pieces;
+    bool graph = true;
+    OneWayAlongCut way;
     for (const Segment& segment : profile) {
-      if (!graph && segment.isArc()) {
+      for (const Segment& piece : splitWhereTangentIsAlong(segment, frame)) {
+        graph = graph && way.keeps(piece, frame);
+        pieces.push_back(piece);
+      }
+    }
+    if (graph) {
+      for (const Segment& piece : pieces) add(piece, frame);
+    } else {
+      for (const Segment& segment : profile) {
+        if (!segment.isArc()) {
+          add(segment, frame);
+          continue;
+        }
         const std::vector<Point> chords = flatten(segment, chordTolerance);
         for (std::size_t i = 1; i < chords.size(); ++i) add({SegmentKind::Line, chords[i - 1], chords[i], {}, 0}, frame);
-        continue;
       }
-      for (const Segment& piece : splitWhereTangentIsAlong(segment, frame)) add(piece, frame);
     }
     std::sort(steps_.begin(), steps_.end(),
               [](const ProfileStep& a, const ProfileStep& b) { return a.c0 < b.c0; });
@@ -155,14 +168,14 @@ class ThicknessSearch {
     for (const ProfileStep* s : under_) {
       if (done()) return;
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
-      measureAt(edge, lo);
-      measureAt(edge, hi);
+      measureOver(edge, *s, lo);
+      measureOver(edge, *s, hi);
       if (hi - lo > 2 * window_) {
-        measureAt(edge, lo + window_);
-        measureAt(edge, hi - window_);
+        measureOver(edge, *s, lo + window_);
+        measureOver(edge, *s, hi - window_);
       }
       if (const auto tangent = s->tangentTo((d1 - d0) / (c1 - c0)); tangent && *tangent > lo && *tangent < hi) {
-        measureAt(edge, *tangent);
+        measureOver(edge, *s, *tangent);
       }
     }
   }
@@ -170,6 +183,27 @@ class ThicknessSearch {
   const std::optional<Thickest>& best() const { return best_; }
 
  private:
+  // Whether the edge's point at c (over step s, which measureEdge measures it for) cannot measure
+  // thicker than what is sought — above the floor and the thickest so far — found from s alone, so
+  // that measureAt need not look at every step near c. Where s neither rises nor falls back within
+  // the window around c (a line; an arc away from its apex, the centre's cut coordinate), the
+  // higher of its depths at c ± window, which measureAt takes, is no lower than its depth at c: if
+  // that stands less than the window above the point, s is among the steps beneath it (not wholly
+  // above) and the thickness is at most the point's height above s there. Exact: each rounded
+  // operation keeps that order.
+  bool cannotBeatAt(const RegionEdge& edge, const ProfileStep& s, double c) const {
+    if (s.arc && s.cc > c - window_ && s.cc < c + window_) return false;
+    const double sought = best_ ? std::max(best_->thickness, floor_) : floor_;
+    const double d = edge.depthAt(c), onStep = s.depthAt(c);
+    return onStep <= d + window_ && std::max(0.0, d - onStep) <= sought;
+  }
+
+  // measureAt(edge, c) for a point measureEdge takes over step s, unless cannotBeatAt shows it
+  // changes nothing.
+  void measureOver(const RegionEdge& edge, const ProfileStep& s, double c) {
+    if (!cannotBeatAt(edge, s, c)) measureAt(edge, c);
+  }
+
   // The edge's point at c against the highest depth beneath it of the steps under the edge, within
   // c ± window.
   void measureAt(const RegionEdge& edge, double c) {
