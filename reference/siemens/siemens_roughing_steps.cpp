@@ -1,10 +1,13 @@
 #include "reference/siemens/siemens_roughing_steps.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string_view>
 
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/gcode/program_limits.h"
@@ -118,14 +121,22 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughD
 // not — within the element where `end` lies too (an allowance rounding rising to the front stretch's
 // level and falling on from there: before, the main pass went on down its far side, fuzz seed
 // 15261219683670512766).
-std::vector<std::pair<Segment, bool>> partsThroughDescents(const Segment& element, const Segment& s, std::size_t i,
-                                                           const std::optional<ProfilePoint>& end) {
-  if (!end || i > end->segment) return {{s, false}};
-  if (i < end->segment) return {{s, true}};
+// At most two parts, kept in place: the cleanup asks for them on every element it runs along.
+struct PartsThroughDescents {
+  std::array<std::pair<Segment, bool>, 2> parts;
+  std::size_t count = 1;
+  auto begin() const { return parts.begin(); }
+  auto end() const { return parts.begin() + count; }
+};
+
+PartsThroughDescents partsThroughDescents(const Segment& element, const Segment& s, std::size_t i,
+                                          const std::optional<ProfilePoint>& end) {
+  if (!end || i > end->segment) return {{{{s, false}}}};
+  if (i < end->segment) return {{{{s, true}}}};
   const double at = positionAlong(element, end->at), from = positionAlong(element, s.from);
-  if (at <= from + kGeomEps) return {{s, false}};
-  if (at >= positionAlong(element, s.to) - kGeomEps) return {{s, true}};
-  return {{portionOf(s, s.from, end->at), true}, {portionOf(s, end->at, s.to), false}};
+  if (at <= from + kGeomEps) return {{{{s, false}}}};
+  if (at >= positionAlong(element, s.to) - kGeomEps) return {{{{s, true}}}};
+  return {{{{portionOf(s, s.from, end->at), true}, {portionOf(s, end->at, s.to), false}}}, 2};
 }
 
 // The contour-parallel cleanup (LCYC95.ROUGH "G1/G2/G3 along contour + allowance to its last
@@ -282,14 +293,16 @@ class StockRemovalPlanner {
  private:
   Point current() const { return moves_.empty() ? position_ : moves_.back().to; }
 
-  void emit(MoveKind kind, Point to, double feed, MovePhase phase, int pass, std::vector<std::string> rules) {
+  // `rules`: the rule IDs the move cites, each copied once into it (a braced list of strings would
+  // be copied twice: into the list, then into the move).
+  void emit(MoveKind kind, Point to, double feed, MovePhase phase, int pass, std::initializer_list<std::string_view> rules) {
     if (distance(current(), to) <= kGeomEps) return;  // zero-length moves are never emitted
     Move m;
     m.kind = kind;
     m.to = to;
     if (kind == MoveKind::Feed) m.feed = feed;
     stampPhase(m, phase, pass);
-    m.rules = std::move(rules);
+    m.rules.assign(rules.begin(), rules.end());
     push(std::move(m));
   }
 
@@ -305,7 +318,7 @@ class StockRemovalPlanner {
     m.center = s.center;
     m.feed = feed;
     stampPhase(m, phase, pass);
-    m.rules = {rule};
+    m.rules.assign(1, rule);
     push(std::move(m));
   }
 
@@ -453,7 +466,7 @@ class StockRemovalPlanner {
   void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
     const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
     const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
-    const std::vector<std::string> rules{c_.rules.undercut};
+    const std::string& rule = c_.rules.undercut;
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
       // A level at or above the rim (the pocket's top stands above it) crosses over from the rim —
@@ -462,12 +475,12 @@ class StockRemovalPlanner {
       // level under the bump: no-gouge, fuzz seed 5698905055672233322).
       const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
       const double inZ = level >= rim.x - kGeomEps ? rim.z : in ? in->at.z : lowPoint.z;
-      rapidAlongTheCutAxis(inZ, k, rules);
-      emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+      rapidAlongTheCutAxis(inZ, k, rule);
+      emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, {rule});
     } else {
-      rapidAlongTheCutAxis(side.front().from.z, k, rules);
-      emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
-      for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
+      rapidAlongTheCutAxis(side.front().from.z, k, rule);
+      emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, {rule});
+      for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, rule);
     }
     // Across at the level to where it next meets the pocket's profile — the rising side, or a bump
     // inside the pocket standing above the level —, then along the profile through its descents (the
@@ -478,16 +491,16 @@ class StockRemovalPlanner {
                                : nextMeetingAlongTheLevel(pocket, level, current());
     // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
     if (across) {
-      cutAlongLevel(k, across->at, c_.undercutFeed, c_.rules.undercut);
+      cutAlongLevel(k, across->at, c_.undercutFeed, rule);
       for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, ProfilePoint{pocket.size() - 1, pocket.back().to})) {
-        emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
+        emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, rule);
       }
     } else {  // the pocket stays open to the profile's end
       const Point end = u.up.empty() ? lowPoint : u.up.back().to;
-      cutAlongLevel(k, {end.z, level}, c_.undercutFeed, c_.rules.undercut);
+      cutAlongLevel(k, {end.z, level}, c_.undercutFeed, rule);
     }
-    climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
-    emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, rules);
+    climbOffASteepEnd(k, u.top, c_.undercutFeed, rule);  // the pocket's profile stands below its top
+    emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, {rule});
   }
 
   // G0 along the cut axis to `z` at the current height, between a pocket's passes: where the profile
@@ -495,7 +508,7 @@ class StockRemovalPlanner {
   // retract height below its top), G0 up to the start's height first (interpretation,
   // CYCLE95.UNDERCUT note; before, the rapid ran through the bump: no-gouge, fuzz seed
   // 14727398570297873640).
-  void rapidAlongTheCutAxis(double z, int k, const std::vector<std::string>& rules) {
+  void rapidAlongTheCutAxis(double z, int k, const std::string& rule) {
     const double low = std::min(z, current().z) + kGeomEps, high = std::max(z, current().z) - kGeomEps;
     const double height = current().x;
     const auto between = [&](Point p) { return p.z > low && p.z < high; };
@@ -504,8 +517,8 @@ class StockRemovalPlanner {
       const bool endAbove = (between(s.from) && s.from.x > height + kGeomEps) || (between(s.to) && s.to.x > height + kGeomEps);
       return endAbove || std::any_of(hits.begin(), hits.end(), between);
     });
-    if (crosses) emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, k, rules);
-    emit(MoveKind::Rapid, {z, current().x}, 0, MovePhase::Pass, k, rules);
+    if (crosses) emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, k, {rule});
+    emit(MoveKind::Rapid, {z, current().x}, 0, MovePhase::Pass, k, {rule});
   }
 
   // A pass that ends at the profile's last z, below `height`, where the profile arrives falling more
@@ -576,11 +589,13 @@ class StockRemovalPlanner {
   // --- finishing (LCYC95.FINISH) ---
 
   void finish() {
-    std::vector<std::string> approachRules{c_.rules.finish};
-    if (c_.technology == SiemensTechnology::Complete) approachRules.push_back(c_.rules.complete);
-    // G0 to the cycle start axis by axis, the infeed axis first.
-    emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Approach, 0, approachRules);
-    emit(MoveKind::Rapid, start_, 0, MovePhase::Approach, 0, approachRules);
+    // G0 to the cycle start axis by axis, the infeed axis first (citing complete machining's rule too).
+    const auto approach = [this](Point to) {
+      if (c_.technology != SiemensTechnology::Complete) return emit(MoveKind::Rapid, to, 0, MovePhase::Approach, 0, {c_.rules.finish});
+      emit(MoveKind::Rapid, to, 0, MovePhase::Approach, 0, {c_.rules.finish, c_.rules.complete});
+    };
+    approach({current().z, start_.x});
+    approach(start_);
     // G0 both axes to the contour start; along the contour at the finishing feed; G0 back.
     emit(MoveKind::Rapid, c_.finishPath.front().from, 0, MovePhase::Finish, 0, {c_.rules.finish});
     for (const Segment& s : c_.finishPath) emitAlong(s, c_.finishingFeed, MovePhase::Finish, 0, c_.rules.finish);
