@@ -76,6 +76,9 @@ bool isFrontWallAboveTheFace(std::size_t i, Point p, std::size_t foot, double fa
   return i < foot && p.x > faceTop + kGeomEps;
 }
 
+// The largest z of `s` or beyond: its ends' for a line, its circle's for an arc.
+double highestZBound(const Segment& s) { return s.isArc() ? s.center.z + s.radius() : std::max(s.from.z, s.to.z); }
+
 // The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
 // `fromZ`, meets the profile — not counting the front walls above the face's top
 // (isFrontWallAboveTheFace: a level between the face's top and the walls' top runs through them
@@ -85,6 +88,10 @@ std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& pro
                                                  double faceTop = std::numeric_limits<double>::infinity()) {
   std::optional<ProfilePoint> best;
   for (std::size_t i = 0; i < profile.size(); ++i) {
+    // An element standing nowhere in front of the best point yet (by a box round it, an arc's whole
+    // circle) has no point further forward: its crossings are not worked out (each pass asks for
+    // the whole profile's, most of it behind the first crossing).
+    if (best && highestZBound(profile[i]) <= best->at.z) continue;
     for (const Point& p : intersectWithLevelX(profile[i], level)) {
       if (p.z > fromZ + kGeomEps || isFrontWallAboveTheFace(i, p, foot, faceTop)) continue;
       if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
@@ -150,6 +157,7 @@ PartsThroughDescents partsThroughDescents(const Segment& element, const Segment&
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
                                          std::optional<ProfilePoint> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
+  pieces.reserve(profile.size() - hit.segment + 1);  // a piece per element, two on the stretch's end
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (hasNoLength(s)) continue;  // the hit is this element's end
@@ -297,13 +305,12 @@ class StockRemovalPlanner {
   // be copied twice: into the list, then into the move).
   void emit(MoveKind kind, Point to, double feed, MovePhase phase, int pass, std::initializer_list<std::string_view> rules) {
     if (distance(current(), to) <= kGeomEps) return;  // zero-length moves are never emitted
-    Move m;
+    Move& m = push();
     m.kind = kind;
     m.to = to;
     if (kind == MoveKind::Feed) m.feed = feed;
     stampPhase(m, phase, pass);
     m.rules.assign(rules.begin(), rules.end());
-    push(std::move(m));
   }
 
   // A piece of the profile or of the finishing path; one without length is never emitted (an arc
@@ -311,7 +318,7 @@ class StockRemovalPlanner {
   void emitAlong(const Segment& s, double feed, MovePhase phase, int pass, const std::string& rule) {
     if (hasNoLength(s)) return;
     if (!s.isArc()) return emit(MoveKind::Feed, s.to, feed, phase, pass, {rule});
-    Move m;
+    Move& m = push();
     m.kind = MoveKind::Feed;
     m.shape = s.kind;
     m.to = s.to;
@@ -319,18 +326,17 @@ class StockRemovalPlanner {
     m.feed = feed;
     stampPhase(m, phase, pass);
     m.rules.assign(1, rule);
-    push(std::move(m));
   }
 
   // PROG.CAP.MOVES for one cycle (roughing_cycle.h): a tiny DAM or MID over a long contour could
-  // otherwise make millions of moves.
-  void push(Move m) {
+  // otherwise make millions of moves. The new move, at the plan's end, is filled in place.
+  Move& push() {
     if (moves_.size() >= kMostCycleMoves) {
       throw NotSupported(c_.line, "the stock-removal cycle would make more than " +
                                       countText(kMostCycleMoves) +
                                       " moves (DAM or the infeed depth too small for the contour)");
     }
-    moves_.push_back(std::move(m));
+    return moves_.emplace_back();
   }
 
   // --- roughing (LCYC95.ROUGH, CYCLE95.ROUGH) ---
