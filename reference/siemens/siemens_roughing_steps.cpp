@@ -23,15 +23,32 @@ void stampPhase(Move& m, MovePhase phase, int pass) {
   m.pass = phase == MovePhase::Pass ? pass : 0;
 }
 
-Point computedStart(const std::vector<Segment>& profile, Point clearance) {
-  double zMax = -std::numeric_limits<double>::infinity();
-  double xMax = -std::numeric_limits<double>::infinity();
-  for (const Segment& s : profile) {
+namespace {
+
+// Smallest and largest z and x anywhere on the path (an arc's apexes included): worked out once per
+// cycle, for its start (computedStart) and its lowest level.
+Extent extentOf(const std::vector<Segment>& path) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Extent all{kInf, -kInf, kInf, -kInf};
+  for (const Segment& s : path) {
     const Extent e = extent(s);
-    zMax = std::max(zMax, e.zMax);
-    xMax = std::max(xMax, e.xMax);
+    all.zMin = std::min(all.zMin, e.zMin);
+    all.zMax = std::max(all.zMax, e.zMax);
+    all.xMin = std::min(all.xMin, e.xMin);
+    all.xMax = std::max(all.xMax, e.xMax);
   }
-  return {zMax + clearance.z, xMax + clearance.x};
+  return all;
+}
+
+// computedStart of a profile whose extent is known.
+Point startBeyond(const Extent& profile, Point clearance) {
+  return {profile.zMax + clearance.z, profile.xMax + clearance.x};
+}
+
+}  // namespace
+
+Point computedStart(const std::vector<Segment>& profile, Point clearance) {
+  return startBeyond(extentOf(profile), clearance);
 }
 
 InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line) {
@@ -54,12 +71,6 @@ std::vector<double> equalInfeedLevels(double top, double bottom, double maxInfee
 }
 
 namespace {
-
-double lowestX(const std::vector<Segment>& profile) {
-  double xMin = std::numeric_limits<double>::infinity();
-  for (const Segment& s : profile) xMin = std::min(xMin, extent(s).xMin);
-  return xMin;
-}
 
 // A point on the profile and the segment it lies on.
 struct ProfilePoint {
@@ -281,8 +292,8 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
 // and a start the clearance beyond the profile alone stood over the part: the straight infeed from it
 // ran into the allowance (before, the infeed ran back along the cut axis to the face; fuzz seed
 // 17617655989876150606).
-Point startBeyondTheFace(const StockRemoval& c) {
-  Point start = computedStart(c.profile, c.clearance);
+Point startBeyondTheFace(const StockRemoval& c, const Extent& profile) {
+  Point start = startBeyond(profile, c.clearance);
   start.z = std::max(start.z, c.contourFront.z + c.clearance.z);
   return start;
 }
@@ -290,7 +301,7 @@ Point startBeyondTheFace(const StockRemoval& c) {
 class StockRemovalPlanner {
  public:
   StockRemovalPlanner(const StockRemoval& c, Point position)
-      : c_(c), position_(position), start_(startBeyondTheFace(c)) {}
+      : c_(c), position_(position), profileExtent_(extentOf(c.profile)), start_(startBeyondTheFace(c, profileExtent_)) {}
 
   std::vector<Move> plan() {
     if (c_.technology != SiemensTechnology::Finishing) rough();
@@ -343,7 +354,7 @@ class StockRemovalPlanner {
 
   void rough() {
     const double top = start_.x - c_.clearance.x;
-    const std::vector<double> levels = c_.mainLevels(top, lowestX(c_.profile), c_.maxInfeed, c_.line);
+    const std::vector<double> levels = c_.mainLevels(top, profileExtent_.xMin, c_.maxInfeed, c_.line);
     // PROG.CAP.WORK: each level meets the profile.
     requireWorkWithinTheCap("the stock-removal cycle", static_cast<double>(levels.size() - 1), c_.profile.size(),
                             " (infeed of at most " + shortDecimalText(c_.maxInfeed) + " mm)", c_.line);
@@ -610,6 +621,7 @@ class StockRemovalPlanner {
 
   const StockRemoval& c_;
   Point position_;
+  const Extent profileExtent_;  // of c_.profile
   Point start_;
   std::optional<ProfilePoint> frontStretchEnd_;  // set by rough()
   std::vector<Move> moves_;
