@@ -42,6 +42,9 @@ SiemensContour readSiemensContour(const std::string& name, const SiemensBlocks& 
   contour.file = blocks.file;
   std::optional<Point> position;
   std::vector<std::optional<CornerRequest>> cornerAfter;  // per segment
+  // An element per block at most (room at once, not grown element by element).
+  contour.segments.reserve(blocks.blocks.size());
+  cornerAfter.reserve(blocks.blocks.size());
   for (const SiemensBlock& b : blocks.blocks) {
     requireContourGCodes(b, blocks.file);
     applySiemensModal(b, modal);
@@ -73,6 +76,7 @@ SiemensContour readSiemensContour(const std::string& name, const SiemensBlocks& 
   if (contour.segments.empty()) return contour;
   // SIEMENS.CORNER: each chamfer or rounding goes between its block's element and the next one.
   std::vector<Segment> withCorners;
+  withCorners.reserve(2 * contour.segments.size());  // at most a corner after each element
   for (std::size_t i = 0; i < contour.segments.size(); ++i) {
     Segment& seg = contour.segments[i];
     if (i > 0 && cornerAfter[i - 1]) {

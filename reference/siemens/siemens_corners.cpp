@@ -15,12 +15,26 @@ double cross(Point a, Point b) { return a.z * b.x - a.x * b.z; }
 double dot(Point a, Point b) { return a.z * b.z + a.x * b.x; }
 Point unit(Point v) { return (1.0 / std::hypot(v.z, v.x)) * v; }
 
-// An element next to a corner, with its arc's angles worked out once (ArcAngles; a chamfer's
-// length next to an arc is searched for, legOfChamferLength, trying many legs on the same element).
+// An element next to a corner (at its end when `atEnd`, else at its start), with what every point
+// at a distance from the corner needs worked out once: a chamfer's length next to an arc is searched
+// for (legOfChamferLength), trying many legs on the same element.
 struct CornerElement {
-  explicit CornerElement(const Segment& s) : s(s), angles(s.isArc() ? std::optional(ArcAngles(s)) : std::nullopt) {}
+  CornerElement(const Segment& s, bool atEnd) : s(s), atEnd(atEnd), corner(atEnd ? s.to : s.from) {
+    if (!s.isArc()) return;
+    angles = ArcAngles(s);
+    radius = s.radius();
+    toCorner = unit(corner - s.center);
+    across = {-toCorner.x, toCorner.z};
+    leaving = atEnd ? -1.0 * unitTangentAtEnd(s) : unitTangentAtStart(s);
+  }
   const Segment& s;
-  std::optional<ArcAngles> angles;  // an arc's
+  bool atEnd;
+  Point corner;
+  // An arc's: its angles, radius, the direction from its centre to the corner and across it, and the
+  // direction the element leaves the corner in.
+  std::optional<ArcAngles> angles;
+  double radius = 0;
+  Point toCorner, across, leaving;
 };
 
 // Whether `p` lies on the element (within the geometry's tolerance, ends included).
@@ -28,33 +42,30 @@ constexpr double kOnElement = 1e-7;
 bool onElement(Point p, const Segment& s) { return distanceToSegment(p, s) <= kOnElement; }
 bool onArc(Point p, const CornerElement& arc) { return distanceToSegment(p, arc.s, *arc.angles) <= kOnElement; }
 
-// The point of element `e` at straight distance `leg` from its end `corner` (s.to when `atEnd`,
-// else s.from): along a line, `leg` from the corner; on an arc, where the circle of radius `leg`
-// round the corner meets the arc (interpretation, SIEMENS.CORNER: a chamfer's leg next to an arc is
-// measured straight from the corner). Nothing when the element is shorter than that.
-std::optional<Point> pointAtDistanceFromCorner(const CornerElement& e, bool atEnd, double leg) {
+// The point of element `e` at straight distance `leg` from its corner (its end or its start): along
+// a line, `leg` from the corner; on an arc, where the circle of radius `leg` round the corner meets
+// the arc (interpretation, SIEMENS.CORNER: a chamfer's leg next to an arc is measured straight from
+// the corner). Nothing when the element is shorter than that.
+std::optional<Point> pointAtDistanceFromCorner(const CornerElement& e, double leg) {
   const Segment& s = e.s;
-  const Point corner = atEnd ? s.to : s.from;
+  const Point corner = e.corner;
   if (!s.isArc()) {
-    const Point along = unit(atEnd ? s.from - s.to : s.to - s.from);
+    const Point along = unit(e.atEnd ? s.from - s.to : s.to - s.from);
     if (leg > s.length() + kGeomEps) return std::nullopt;
     return corner + leg * along;
   }
   // The circle round the corner meets the arc's circle at two points, mirror images across the line
   // from the centre through the corner; the chamfer's end is the one on the element (of two — an arc
   // over a half circle — the one the element leaves the corner towards).
-  const double r = s.radius();
+  const double r = e.radius;
   if (leg > 2 * r) return std::nullopt;
-  const Point toCorner = unit(corner - s.center);
-  const Point across{-toCorner.x, toCorner.z};
   const double along = r - leg * leg / (2 * r);  // from the centre towards the corner
   const double side = std::sqrt(std::max(0.0, r * r - along * along));
-  const Point leaving = atEnd ? -1.0 * unitTangentAtEnd(s) : unitTangentAtStart(s);
   std::optional<Point> found;
   for (const double sign : {1.0, -1.0}) {
-    const Point p = s.center + along * toCorner + (sign * side) * across;
+    const Point p = s.center + along * e.toCorner + (sign * side) * e.across;
     if (!onArc(p, e)) continue;
-    if (!found || dot(p - corner, leaving) > 0) found = p;
+    if (!found || dot(p - corner, e.leaving) > 0) found = p;
   }
   return found;
 }
@@ -65,9 +76,9 @@ std::optional<Point> pointAtDistanceFromCorner(const CornerElement& e, bool atEn
 // is at most twice the leg) and the shorter element's chord. Nothing when the elements are too short.
 std::optional<double> legOfChamferLength(const Segment& a, const Segment& b, double length, double turn) {
   if (!a.isArc() && !b.isArc()) return length / (2 * std::cos(turn / 2));
-  const CornerElement before(a), after(b);
+  const CornerElement before(a, true), after(b, false);
   const auto chord = [&](double leg) -> std::optional<double> {
-    const auto pa = pointAtDistanceFromCorner(before, true, leg), pb = pointAtDistanceFromCorner(after, false, leg);
+    const auto pa = pointAtDistanceFromCorner(before, leg), pb = pointAtDistanceFromCorner(after, leg);
     if (!pa || !pb) return std::nullopt;
     return distance(*pa, *pb);
   };
@@ -85,8 +96,8 @@ std::optional<double> legOfChamferLength(const Segment& a, const Segment& b, dou
 // SIEMENS.CORNER, CHF=/CHR=: a line from the point `leg` before the corner on `a` to the point `leg`
 // after it on `b` (CHR: `leg` is the given width; CHF: legOfChamferLength).
 Segment chamfer(Segment& a, Segment& b, const CornerRequest& corner, double leg) {
-  const auto from = pointAtDistanceFromCorner(CornerElement(a), true, leg),
-             to = pointAtDistanceFromCorner(CornerElement(b), false, leg);
+  const auto from = pointAtDistanceFromCorner(CornerElement(a, true), leg),
+             to = pointAtDistanceFromCorner(CornerElement(b, false), leg);
   if (!from || !to) {
     throw NotSupported(corner.line, corner.text + " needs " + shortDecimalText(leg) +
                                         " mm of each element; the controller shortens it then, which cyclecert does not model");

@@ -45,6 +45,12 @@ std::string_view SiemensToken::stringBody() const {
 SiemensLexer::SiemensLexer(std::string_view line, std::string file, int lineNumber)
     : line_(line), file_(std::move(file)), lineNumber_(lineNumber) {}
 
+void SiemensLexer::startLine(std::string_view line, int lineNumber) {
+  line_ = line;
+  lineNumber_ = lineNumber;
+  pos_ = 0;
+}
+
 SiemensToken SiemensLexer::next() {
   while (pos_ < line_.size() && isBlank(line_[pos_])) ++pos_;
   if (pos_ >= line_.size()) return take(SiemensTokenKind::EndOfLine, 0);

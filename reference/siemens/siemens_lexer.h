@@ -24,6 +24,8 @@ class SiemensLexer {
  public:
   // `line` (without its line end) must outlive the lexer and its tokens.
   SiemensLexer(std::string_view line, std::string file, int lineNumber);
+  // Goes on to another line of the same file (`line` must outlive the lexer and its tokens).
+  void startLine(std::string_view line, int lineNumber);
   SiemensToken next();  // EndOfLine forever once the line is exhausted
   const std::string& file() const { return file_; }
   int lineNumber() const { return lineNumber_; }

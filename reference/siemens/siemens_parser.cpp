@@ -100,9 +100,9 @@ bool holdsNothing(const SiemensBlock& b) {
 // moving a block costs as much as a word).
 class BlockParser {
  public:
-  BlockParser(std::string_view line, const std::string& file, int lineNumber, SiemensBlock& block)
-      : lexer_(line, file, lineNumber), current_(lexer_.next()), block_(block) {
-    block_.line = lineNumber;
+  // `lexer`: at the start of the block's line.
+  BlockParser(SiemensLexer& lexer, SiemensBlock& block) : lexer_(lexer), current_(lexer_.next()), block_(block) {
+    block_.line = lexer_.lineNumber();
   }
 
   void parse() {
@@ -127,10 +127,13 @@ class BlockParser {
     return advance();
   }
 
-  // The entry of kNames the name `name` is, or nullptr.
+  // The entry of kNames the name `name` is, or nullptr. Its first letter is compared before the
+  // whole name (a name is a token: never empty): most names are one letter, and most entries fail
+  // there.
   static const KnownName* readName(const SiemensToken& name) {
+    const char first = asciiUpper(name.text.front());
     for (const KnownName& known : kNames) {
-      if (equalIgnoringCase(name.text, known.name)) return &known;
+      if (known.name.front() == first && equalIgnoringCase(name.text, known.name)) return &known;
     }
     return nullptr;
   }
@@ -152,10 +155,17 @@ class BlockParser {
     return addressWord(name, *known);  // G X Z I K F S T D M N L
   }
 
+  // The word as written: its name, `between` (a named value's '=') and its number, without the
+  // blanks written between them. The tokens are views into the line, in its order: where they
+  // follow each other without a blank (as words are written) the word is one piece of the line.
   SiemensWord wordFrom(const SiemensToken& name, std::string_view address, const SiemensToken& number,
                        std::string_view between) const {
+    const std::size_t length = name.text.size() + between.size() + number.text.size();
+    if (number.text.data() + number.text.size() == name.text.data() + length) {  // one piece
+      return {address, number.number, std::string(name.text.data(), length), lexer_.lineNumber(), name.column};
+    }
     std::string text;
-    text.reserve(name.text.size() + between.size() + number.text.size());
+    text.reserve(length);
     text.append(name.text).append(between).append(number.text);
     return {address, number.number, std::move(text), lexer_.lineNumber(), name.column};
   }
@@ -297,7 +307,7 @@ class BlockParser {
     }
   }
 
-  SiemensLexer lexer_;
+  SiemensLexer& lexer_;
   SiemensToken current_;
   SiemensBlock& block_;
 };
@@ -313,6 +323,7 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
   constexpr std::size_t kBlocksReservedAtOnce = 1024;
   main.blocks.reserve(std::min(lines.size(), kBlocksReservedAtOnce));
   SiemensBlocks* section = &main;
+  SiemensLexer lexer({}, file, 0);  // one for the whole text: the file's name is copied once
   int endLine = 0;  // the line of the current section's M02/M17/M30/RET, 0 before it
   std::size_t blocks = 0;
   for (const Line& line : lines) {
@@ -332,7 +343,8 @@ SiemensBlocks parseLines(const std::vector<Line>& lines, const std::string& file
       continue;
     }
     SiemensBlock& block = section->blocks.emplace_back();
-    BlockParser(line.text, file, line.number, block).parse();
+    lexer.startLine(line.text, line.number);
+    BlockParser(lexer, block).parse();
     if (holdsNothing(block)) {
       section->blocks.pop_back();
       continue;

@@ -132,7 +132,7 @@ SiemensCycleOutcome planStockRemovalCycle(const SiemensCycleCall& call, const St
     out.warnings = undercutsLeftToFinishing(cycle.profile, contour, frame, call.line);
   }
   out.moves = planStockRemoval(cycle, frame.toFrame(call.position));
-  for (Move& m : out.moves) m = frame.toPlane(std::move(m));
+  for (Move& m : out.moves) frame.mapToPlane(m);
   requirePositiveCuttingFeeds(out.moves, s, call.line);
   out.end = out.moves.empty() ? call.position : out.moves.back().to;
   return out;

@@ -62,11 +62,10 @@ std::vector<Segment> StockRemovalFrame::toPlane(const std::vector<Segment>& fram
   return mappedAll(frame, [this](const Segment& s) { return toPlane(s); });
 }
 
-Move StockRemovalFrame::toPlane(Move m) const {
+void StockRemovalFrame::mapToPlane(Move& m) const {
   m.to = toPlane(m.to);
   if (m.center) m.center = toPlane(*m.center);
   m.shape = reflectedKind(m.shape, reflections(*this));
-  return m;
 }
 
 CompensationSide StockRemovalFrame::stockSideInPlane() const {

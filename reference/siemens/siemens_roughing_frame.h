@@ -22,7 +22,8 @@ struct StockRemovalFrame {
   Segment toPlane(const Segment& frame) const;
   std::vector<Segment> toFrame(const std::vector<Segment>& plane) const;
   std::vector<Segment> toPlane(const std::vector<Segment>& frame) const;
-  Move toPlane(Move frame) const;
+  // A move planned in the frame, mapped to the plane in place (a copy would copy its rule IDs).
+  void mapToPlane(Move& frameMove) const;
 
   // The side of the stock (where the tool runs) seen along the finishing direction, in the plane:
   // in the frame it is always the right (stock above, travel towards −z); each reflection swaps it.

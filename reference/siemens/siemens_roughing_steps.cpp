@@ -1,10 +1,13 @@
 #include "reference/siemens/siemens_roughing_steps.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string_view>
 
 #include "reference/cycles/roughing_cycle.h"
 #include "reference/gcode/program_limits.h"
@@ -20,15 +23,32 @@ void stampPhase(Move& m, MovePhase phase, int pass) {
   m.pass = phase == MovePhase::Pass ? pass : 0;
 }
 
-Point computedStart(const std::vector<Segment>& profile, Point clearance) {
-  double zMax = -std::numeric_limits<double>::infinity();
-  double xMax = -std::numeric_limits<double>::infinity();
-  for (const Segment& s : profile) {
+namespace {
+
+// Smallest and largest z and x anywhere on the path (an arc's apexes included): worked out once per
+// cycle, for its start (computedStart) and its lowest level.
+Extent extentOf(const std::vector<Segment>& path) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Extent all{kInf, -kInf, kInf, -kInf};
+  for (const Segment& s : path) {
     const Extent e = extent(s);
-    zMax = std::max(zMax, e.zMax);
-    xMax = std::max(xMax, e.xMax);
+    all.zMin = std::min(all.zMin, e.zMin);
+    all.zMax = std::max(all.zMax, e.zMax);
+    all.xMin = std::min(all.xMin, e.xMin);
+    all.xMax = std::max(all.xMax, e.xMax);
   }
-  return {zMax + clearance.z, xMax + clearance.x};
+  return all;
+}
+
+// computedStart of a profile whose extent is known.
+Point startBeyond(const Extent& profile, Point clearance) {
+  return {profile.zMax + clearance.z, profile.xMax + clearance.x};
+}
+
+}  // namespace
+
+Point computedStart(const std::vector<Segment>& profile, Point clearance) {
+  return startBeyond(extentOf(profile), clearance);
 }
 
 InfeedSteps equalInfeedSteps(double totalDepth, double maxInfeed, int line) {
@@ -52,12 +72,6 @@ std::vector<double> equalInfeedLevels(double top, double bottom, double maxInfee
 
 namespace {
 
-double lowestX(const std::vector<Segment>& profile) {
-  double xMin = std::numeric_limits<double>::infinity();
-  for (const Segment& s : profile) xMin = std::min(xMin, extent(s).xMin);
-  return xMin;
-}
-
 // A point on the profile and the segment it lies on.
 struct ProfilePoint {
   std::size_t segment = 0;
@@ -73,6 +87,9 @@ bool isFrontWallAboveTheFace(std::size_t i, Point p, std::size_t foot, double fa
   return i < foot && p.x > faceTop + kGeomEps;
 }
 
+// The largest z of `s` or beyond: its ends' for a line, its circle's for an arc.
+double highestZBound(const Segment& s) { return s.isArc() ? s.center.z + s.radius() : std::max(s.from.z, s.to.z); }
+
 // The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
 // `fromZ`, meets the profile — not counting the front walls above the face's top
 // (isFrontWallAboveTheFace: a level between the face's top and the walls' top runs through them
@@ -82,6 +99,10 @@ std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& pro
                                                  double faceTop = std::numeric_limits<double>::infinity()) {
   std::optional<ProfilePoint> best;
   for (std::size_t i = 0; i < profile.size(); ++i) {
+    // An element standing nowhere in front of the best point yet (by a box round it, an arc's whole
+    // circle) has no point further forward: its crossings are not worked out (each pass asks for
+    // the whole profile's, most of it behind the first crossing).
+    if (best && highestZBound(profile[i]) <= best->at.z) continue;
     for (const Point& p : intersectWithLevelX(profile[i], level)) {
       if (p.z > fromZ + kGeomEps || isFrontWallAboveTheFace(i, p, foot, faceTop)) continue;
       if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
@@ -118,14 +139,22 @@ std::optional<Point> cleanupStopOn(const Segment& s, double upper, bool throughD
 // not — within the element where `end` lies too (an allowance rounding rising to the front stretch's
 // level and falling on from there: before, the main pass went on down its far side, fuzz seed
 // 15261219683670512766).
-std::vector<std::pair<Segment, bool>> partsThroughDescents(const Segment& element, const Segment& s, std::size_t i,
-                                                           const std::optional<ProfilePoint>& end) {
-  if (!end || i > end->segment) return {{s, false}};
-  if (i < end->segment) return {{s, true}};
+// At most two parts, kept in place: the cleanup asks for them on every element it runs along.
+struct PartsThroughDescents {
+  std::array<std::pair<Segment, bool>, 2> parts;
+  std::size_t count = 1;
+  auto begin() const { return parts.begin(); }
+  auto end() const { return parts.begin() + count; }
+};
+
+PartsThroughDescents partsThroughDescents(const Segment& element, const Segment& s, std::size_t i,
+                                          const std::optional<ProfilePoint>& end) {
+  if (!end || i > end->segment) return {{{{s, false}}}};
+  if (i < end->segment) return {{{{s, true}}}};
   const double at = positionAlong(element, end->at), from = positionAlong(element, s.from);
-  if (at <= from + kGeomEps) return {{s, false}};
-  if (at >= positionAlong(element, s.to) - kGeomEps) return {{s, true}};
-  return {{portionOf(s, s.from, end->at), true}, {portionOf(s, end->at, s.to), false}};
+  if (at <= from + kGeomEps) return {{{{s, false}}}};
+  if (at >= positionAlong(element, s.to) - kGeomEps) return {{{{s, true}}}};
+  return {{{{portionOf(s, s.from, end->at), true}, {portionOf(s, end->at, s.to), false}}}, 2};
 }
 
 // The contour-parallel cleanup (LCYC95.ROUGH "G1/G2/G3 along contour + allowance to its last
@@ -139,6 +168,7 @@ std::vector<std::pair<Segment, bool>> partsThroughDescents(const Segment& elemen
 std::vector<Segment> cleanupAlongProfile(const std::vector<Segment>& profile, const ProfilePoint& hit, double upper,
                                          std::optional<ProfilePoint> throughDescentsUpTo = std::nullopt) {
   std::vector<Segment> pieces;
+  pieces.reserve(profile.size() - hit.segment + 1);  // a piece per element, two on the stretch's end
   for (std::size_t i = hit.segment; i < profile.size(); ++i) {
     const Segment s = i == hit.segment ? portionOf(profile[i], hit.at, profile[i].to) : profile[i];
     if (hasNoLength(s)) continue;  // the hit is this element's end
@@ -262,8 +292,8 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
 // and a start the clearance beyond the profile alone stood over the part: the straight infeed from it
 // ran into the allowance (before, the infeed ran back along the cut axis to the face; fuzz seed
 // 17617655989876150606).
-Point startBeyondTheFace(const StockRemoval& c) {
-  Point start = computedStart(c.profile, c.clearance);
+Point startBeyondTheFace(const StockRemoval& c, const Extent& profile) {
+  Point start = startBeyond(profile, c.clearance);
   start.z = std::max(start.z, c.contourFront.z + c.clearance.z);
   return start;
 }
@@ -271,7 +301,7 @@ Point startBeyondTheFace(const StockRemoval& c) {
 class StockRemovalPlanner {
  public:
   StockRemovalPlanner(const StockRemoval& c, Point position)
-      : c_(c), position_(position), start_(startBeyondTheFace(c)) {}
+      : c_(c), position_(position), profileExtent_(extentOf(c.profile)), start_(startBeyondTheFace(c, profileExtent_)) {}
 
   std::vector<Move> plan() {
     if (c_.technology != SiemensTechnology::Finishing) rough();
@@ -282,15 +312,16 @@ class StockRemovalPlanner {
  private:
   Point current() const { return moves_.empty() ? position_ : moves_.back().to; }
 
-  void emit(MoveKind kind, Point to, double feed, MovePhase phase, int pass, std::vector<std::string> rules) {
+  // `rules`: the rule IDs the move cites, each copied once into it (a braced list of strings would
+  // be copied twice: into the list, then into the move).
+  void emit(MoveKind kind, Point to, double feed, MovePhase phase, int pass, std::initializer_list<std::string_view> rules) {
     if (distance(current(), to) <= kGeomEps) return;  // zero-length moves are never emitted
-    Move m;
+    Move& m = push();
     m.kind = kind;
     m.to = to;
     if (kind == MoveKind::Feed) m.feed = feed;
     stampPhase(m, phase, pass);
-    m.rules = std::move(rules);
-    push(std::move(m));
+    m.rules.assign(rules.begin(), rules.end());
   }
 
   // A piece of the profile or of the finishing path; one without length is never emitted (an arc
@@ -298,33 +329,32 @@ class StockRemovalPlanner {
   void emitAlong(const Segment& s, double feed, MovePhase phase, int pass, const std::string& rule) {
     if (hasNoLength(s)) return;
     if (!s.isArc()) return emit(MoveKind::Feed, s.to, feed, phase, pass, {rule});
-    Move m;
+    Move& m = push();
     m.kind = MoveKind::Feed;
     m.shape = s.kind;
     m.to = s.to;
     m.center = s.center;
     m.feed = feed;
     stampPhase(m, phase, pass);
-    m.rules = {rule};
-    push(std::move(m));
+    m.rules.assign(1, rule);
   }
 
   // PROG.CAP.MOVES for one cycle (roughing_cycle.h): a tiny DAM or MID over a long contour could
-  // otherwise make millions of moves.
-  void push(Move m) {
+  // otherwise make millions of moves. The new move, at the plan's end, is filled in place.
+  Move& push() {
     if (moves_.size() >= kMostCycleMoves) {
       throw NotSupported(c_.line, "the stock-removal cycle would make more than " +
                                       countText(kMostCycleMoves) +
                                       " moves (DAM or the infeed depth too small for the contour)");
     }
-    moves_.push_back(std::move(m));
+    return moves_.emplace_back();
   }
 
   // --- roughing (LCYC95.ROUGH, CYCLE95.ROUGH) ---
 
   void rough() {
     const double top = start_.x - c_.clearance.x;
-    const std::vector<double> levels = c_.mainLevels(top, lowestX(c_.profile), c_.maxInfeed, c_.line);
+    const std::vector<double> levels = c_.mainLevels(top, profileExtent_.xMin, c_.maxInfeed, c_.line);
     // PROG.CAP.WORK: each level meets the profile.
     requireWorkWithinTheCap("the stock-removal cycle", static_cast<double>(levels.size() - 1), c_.profile.size(),
                             " (infeed of at most " + shortDecimalText(c_.maxInfeed) + " mm)", c_.line);
@@ -453,7 +483,7 @@ class StockRemovalPlanner {
   void undercutPass(const Undercut& u, int k, double level, double previous, bool lowest) {
     const Point lowPoint = u.up.empty() ? u.down.back().to : u.up.front().from;
     const auto in = lowest ? std::nullopt : roughingIntersection(u.down, level, std::numeric_limits<double>::infinity());
-    const std::vector<std::string> rules{c_.rules.undercut};
+    const std::string& rule = c_.rules.undercut;
     const std::vector<Segment> side = fallingSideBetween(u, previous, level, lowest);
     if (side.empty() || isWall(side)) {
       // A level at or above the rim (the pocket's top stands above it) crosses over from the rim —
@@ -462,12 +492,12 @@ class StockRemovalPlanner {
       // level under the bump: no-gouge, fuzz seed 5698905055672233322).
       const Point rim = u.down.empty() ? lowPoint : u.down.front().from;
       const double inZ = level >= rim.x - kGeomEps ? rim.z : in ? in->at.z : lowPoint.z;
-      rapidAlongTheCutAxis(inZ, k, rules);
-      emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, rules);
+      rapidAlongTheCutAxis(inZ, k, rule);
+      emit(MoveKind::Feed, {inZ, level}, c_.undercutFeed, MovePhase::Pass, k, {rule});
     } else {
-      rapidAlongTheCutAxis(side.front().from.z, k, rules);
-      emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, rules);
-      for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
+      rapidAlongTheCutAxis(side.front().from.z, k, rule);
+      emit(MoveKind::Feed, side.front().from, c_.undercutFeed, MovePhase::Pass, k, {rule});
+      for (const Segment& s : side) emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, rule);
     }
     // Across at the level to where it next meets the pocket's profile — the rising side, or a bump
     // inside the pocket standing above the level —, then along the profile through its descents (the
@@ -478,16 +508,16 @@ class StockRemovalPlanner {
                                : nextMeetingAlongTheLevel(pocket, level, current());
     // (A pocket open to the profile's end has no rising side, but may hold a bump the level meets.)
     if (across) {
-      cutAlongLevel(k, across->at, c_.undercutFeed, c_.rules.undercut);
+      cutAlongLevel(k, across->at, c_.undercutFeed, rule);
       for (const Segment& s : cleanupAlongProfile(pocket, *across, previous, ProfilePoint{pocket.size() - 1, pocket.back().to})) {
-        emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, c_.rules.undercut);
+        emitAlong(s, c_.undercutFeed, MovePhase::Pass, k, rule);
       }
     } else {  // the pocket stays open to the profile's end
       const Point end = u.up.empty() ? lowPoint : u.up.back().to;
-      cutAlongLevel(k, {end.z, level}, c_.undercutFeed, c_.rules.undercut);
+      cutAlongLevel(k, {end.z, level}, c_.undercutFeed, rule);
     }
-    climbOffASteepEnd(k, u.top, c_.undercutFeed, c_.rules.undercut);  // the pocket's profile stands below its top
-    emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, rules);
+    climbOffASteepEnd(k, u.top, c_.undercutFeed, rule);  // the pocket's profile stands below its top
+    emit(MoveKind::Rapid, retractPoint(), 0, MovePhase::Pass, k, {rule});
   }
 
   // G0 along the cut axis to `z` at the current height, between a pocket's passes: where the profile
@@ -495,7 +525,7 @@ class StockRemovalPlanner {
   // retract height below its top), G0 up to the start's height first (interpretation,
   // CYCLE95.UNDERCUT note; before, the rapid ran through the bump: no-gouge, fuzz seed
   // 14727398570297873640).
-  void rapidAlongTheCutAxis(double z, int k, const std::vector<std::string>& rules) {
+  void rapidAlongTheCutAxis(double z, int k, const std::string& rule) {
     const double low = std::min(z, current().z) + kGeomEps, high = std::max(z, current().z) - kGeomEps;
     const double height = current().x;
     const auto between = [&](Point p) { return p.z > low && p.z < high; };
@@ -504,8 +534,8 @@ class StockRemovalPlanner {
       const bool endAbove = (between(s.from) && s.from.x > height + kGeomEps) || (between(s.to) && s.to.x > height + kGeomEps);
       return endAbove || std::any_of(hits.begin(), hits.end(), between);
     });
-    if (crosses) emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, k, rules);
-    emit(MoveKind::Rapid, {z, current().x}, 0, MovePhase::Pass, k, rules);
+    if (crosses) emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Pass, k, {rule});
+    emit(MoveKind::Rapid, {z, current().x}, 0, MovePhase::Pass, k, {rule});
   }
 
   // A pass that ends at the profile's last z, below `height`, where the profile arrives falling more
@@ -576,11 +606,13 @@ class StockRemovalPlanner {
   // --- finishing (LCYC95.FINISH) ---
 
   void finish() {
-    std::vector<std::string> approachRules{c_.rules.finish};
-    if (c_.technology == SiemensTechnology::Complete) approachRules.push_back(c_.rules.complete);
-    // G0 to the cycle start axis by axis, the infeed axis first.
-    emit(MoveKind::Rapid, {current().z, start_.x}, 0, MovePhase::Approach, 0, approachRules);
-    emit(MoveKind::Rapid, start_, 0, MovePhase::Approach, 0, approachRules);
+    // G0 to the cycle start axis by axis, the infeed axis first (citing complete machining's rule too).
+    const auto approach = [this](Point to) {
+      if (c_.technology != SiemensTechnology::Complete) return emit(MoveKind::Rapid, to, 0, MovePhase::Approach, 0, {c_.rules.finish});
+      emit(MoveKind::Rapid, to, 0, MovePhase::Approach, 0, {c_.rules.finish, c_.rules.complete});
+    };
+    approach({current().z, start_.x});
+    approach(start_);
     // G0 both axes to the contour start; along the contour at the finishing feed; G0 back.
     emit(MoveKind::Rapid, c_.finishPath.front().from, 0, MovePhase::Finish, 0, {c_.rules.finish});
     for (const Segment& s : c_.finishPath) emitAlong(s, c_.finishingFeed, MovePhase::Finish, 0, c_.rules.finish);
@@ -589,6 +621,7 @@ class StockRemovalPlanner {
 
   const StockRemoval& c_;
   Point position_;
+  const Extent profileExtent_;  // of c_.profile
   Point start_;
   std::optional<ProfilePoint> frontStretchEnd_;  // set by rough()
   std::vector<Move> moves_;
