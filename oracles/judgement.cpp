@@ -24,12 +24,27 @@ Finding unmeasurable(std::optional<std::size_t> move, std::string message) {
   return Finding{kMeasurableOracle, {"PROG.CAP"}, move, std::move(message) + "; the path is not judged", {}};
 }
 
+// Whether the path's arcs surely stay within PROG.CAP's limits, found without their angles: each
+// arc bounded by the chords of a full circle of its radius (mostChordsToFlatten). Nearly every path
+// is; only the others are counted exactly.
+bool surelyMeasurable(const Toolpath& path, double finest) {
+  double total = 0;
+  for (std::size_t i = 0; i < path.moves.size(); ++i) {
+    if (path.moves[i].shape == SegmentKind::Line) continue;
+    const double most = mostChordsToFlatten(path.segment(i), finest);
+    if (!(most <= kMostChordsPerArc)) return false;  // also for a radius that is no number
+    total += most;
+  }
+  return total <= kMostChordsPerPath;
+}
+
 // PROG.CAP (README "Limits"): the oracles flatten the path's arcs — the material model at the
 // chord tolerance, the depth of a layer at kMeasuringChord — so a path whose arcs would take more
 // than kMostChordsPerArc chords each or kMostChordsPerPath in all is reported rather than measured
 // for minutes: arcs of hundreds of metres, which no lathe cycle's shape makes.
 std::optional<Finding> pathTooLargeToMeasure(const Toolpath& path, const JudgeSettings& settings) {
   const double finest = std::min(settings.chordTolerance, kMeasuringChord);
+  if (surelyMeasurable(path, finest)) return std::nullopt;
   double total = 0;
   for (std::size_t i = 0; i < path.moves.size(); ++i) {
     if (path.moves[i].shape == SegmentKind::Line) continue;

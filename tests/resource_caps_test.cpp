@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -182,6 +184,29 @@ TEST(ResourceCaps, AnArcIsFlattenedIntoAtMostAMillionChords) {
     FAIL() << "a circle of 2 million chords was flattened";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("more than 1,000,000 chords"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ResourceCaps, TheChordBoundWithoutAnglesBoundsTheChordsOfEveryArc) {
+  // PROG.CAP's check looks at mostChordsToFlatten first and counts exactly only beyond it: it must
+  // never say fewer chords than flattening takes — full circles, sweeps just short of one, tiny and
+  // huge radii, tolerances coarser than the radius.
+  for (const double radius : {1e-9, 1e-3, 0.5, 1.0, 37.7, 1000.0, 999999.999}) {
+    for (const double tolerance : {1e-9, 1e-6, 1e-4, 1e-3, 0.1, 10.0}) {
+      for (const double sweep : {0.01, 1.0, 3.14159, 6.28318, 2 * std::numbers::pi}) {
+        for (const SegmentKind kind : {SegmentKind::ArcCCW, SegmentKind::ArcCW}) {
+          Segment arc;
+          arc.kind = kind;
+          arc.center = {3, -2};
+          arc.from = {3 + radius, -2};
+          const double end = kind == SegmentKind::ArcCCW ? sweep : -sweep;
+          arc.to = sweep == 2 * std::numbers::pi ? arc.from
+                                                 : Point{3 + radius * std::cos(end), -2 + radius * std::sin(end)};
+          EXPECT_GE(mostChordsToFlatten(arc, tolerance), chordsToFlatten(arc, tolerance))
+              << "radius " << radius << ", tolerance " << tolerance << ", sweep " << sweep;
+        }
+      }
+    }
   }
 }
 

@@ -35,16 +35,32 @@ void push(std::vector<Piece>& out, const Piece& p) {
 
 // On [a, b] the lower of two pieces, split where they cross. `lowered` says whether the new piece
 // came lower than the old one anywhere.
+// (The depths at a and b, once found, make the parts: part() would find them again.)
 void pushLower(std::vector<Piece>& out, const Piece& old, const Piece& fresh, double a, double b, bool& lowered) {
   const double oa = old.depthAt(a), ob = old.depthAt(b), fa = fresh.depthAt(a), fb = fresh.depthAt(b);
-  if (fa >= oa - kSameDepth && fb >= ob - kSameDepth) return push(out, part(old, a, b));
+  if (fa >= oa - kSameDepth && fb >= ob - kSameDepth) return push(out, {a, oa, b, ob});
   lowered = true;
-  if (fa <= oa && fb <= ob) return push(out, part(fresh, a, b));
+  if (fa <= oa && fb <= ob) return push(out, {a, fa, b, fb});
   // They cross between a and b: the gaps fa − oa and fb − ob have opposite signs.
   const double t = (fa - oa) / ((fa - oa) - (fb - ob));
   const double c = a + t * (b - a);
-  push(out, part(fa < oa ? fresh : old, a, c));
-  push(out, part(fa < oa ? old : fresh, c, b));
+  const Piece& first = fa < oa ? fresh : old;
+  const Piece& second = fa < oa ? old : fresh;
+  push(out, {a, fa < oa ? fa : oa, c, first.depthAt(c)});
+  push(out, {c, second.depthAt(c), b, fa < oa ? ob : fb});
+}
+
+// Replaces [first, last) of `pieces` by `with`, moving the pieces after them once (an erase and an
+// insert would move them twice).
+void splice(std::vector<Piece>& pieces, std::vector<Piece>::iterator first, std::vector<Piece>::iterator last,
+            const std::vector<Piece>& with) {
+  const std::size_t replaced = static_cast<std::size_t>(last - first);
+  if (with.size() <= replaced) {
+    pieces.erase(std::copy(with.begin(), with.end(), first), last);
+  } else {
+    const auto overwritten = with.begin() + static_cast<std::ptrdiff_t>(replaced);
+    pieces.insert(std::copy(with.begin(), overwritten, first), overwritten, with.end());
+  }
 }
 
 }  // namespace
@@ -112,8 +128,7 @@ bool CutEnvelope::lowerTo(const std::vector<Piece>& fresh) {
     if (old && old->c1 <= merged) ++i;
     if (now && now->c1 <= merged) ++j;
   }
-  const auto at = pieces_.erase(first, last);
-  pieces_.insert(at, out.begin(), out.end());
+  splice(pieces_, first, last, out);
   return lowered;
 }
 

@@ -132,6 +132,12 @@ double chordsToFlatten(const Segment& s, double chordTolerance) {
   return std::max(1.0, chordsForSweep(ArcAngles(s).sweep, radius, chordTolerance));
 }
 
+double mostChordsToFlatten(const Segment& s, double chordTolerance) {
+  if (!s.isArc()) return 1;
+  // 2π / (4·sqrt(tolerance / 2r)), doubled.
+  return 1 + std::numbers::pi * std::sqrt(2 * s.radius() / chordTolerance);
+}
+
 namespace {
 
 // Appends the segment's points flattened within chordTolerance (flatten), leaving out its first

@@ -61,6 +61,10 @@ inline constexpr double kMostChordsPerArc = 1e6;
 // How many chords flatten(s, chordTolerance) makes: 1 for a line or a degenerate arc; what a caller
 // may check against a budget before flattening (no bound applied here).
 double chordsToFlatten(const Segment& s, double chordTolerance);
+// An upper bound on chordsToFlatten(s, chordTolerance) that needs no angles (no atan2): the chords
+// of a full circle of the arc's radius, each taken to span 4·sqrt(tolerance / 2r) (asin x ≥ x),
+// doubled against rounding. At least 1.
+double mostChordsToFlatten(const Segment& s, double chordTolerance);
 // The same into `points` (cleared first): a caller flattening move after move keeps one buffer.
 void flattenInto(std::vector<Point>& points, const Segment& s, double chordTolerance);
 
