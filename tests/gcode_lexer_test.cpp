@@ -295,5 +295,24 @@ TEST(Lexer, ReadsPlainDecimalsToTheBitAsFromChars) {
   EXPECT_EQ(readNumber("0.0000000000000000000000005").value, 5e-25);  // past the fast path's 22 decimals
 }
 
+// leadingPlainNumber: the plain number a text starts with (its end where the plain number ends),
+// its value only within the fast reading's terms; none before a second point.
+TEST(Lexer, ReadsTheLeadingPlainNumber) {
+  const LeadingNumber n = leadingPlainNumber("-12.5Z3");
+  EXPECT_EQ(n.length, 5u);
+  EXPECT_EQ(n.value, -12.5);
+  EXPECT_EQ(leadingPlainNumber("+.5)").length, 3u);
+  EXPECT_EQ(leadingPlainNumber("7.,").value, 7.0);
+  EXPECT_EQ(leadingPlainNumber("1.2.3").length, 0u);  // the FANUC lexer's to refuse
+  EXPECT_EQ(leadingPlainNumber("-.X").length, 0u);
+  EXPECT_EQ(leadingPlainNumber("").length, 0u);
+  const LeadingNumber many = leadingPlainNumber("1234567890123456 ");  // 16 significant digits
+  EXPECT_EQ(many.length, 16u);
+  EXPECT_FALSE(many.value);
+  const LeadingNumber fine = leadingPlainNumber("0.0000000000000000000000005");  // 25 decimals
+  EXPECT_EQ(fine.length, 27u);
+  EXPECT_FALSE(fine.value);
+}
+
 }  // namespace
 }  // namespace cyclecert

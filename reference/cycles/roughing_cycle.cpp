@@ -121,7 +121,7 @@ void checkPlanSize(const CycleCall& call, const std::string& code, double depth,
                                               why.str() + "; cyclecert plans at most " + countText(kMostCycleMoves) +
                                               " per cycle");
   }
-  requireWorkWithinTheCap(code, passes, segments, why.str(), call.block().line);
+  requireWorkWithinTheCap(code, passes, segments, [&] { return why.str(); }, call.block().line);
 }
 
 // How deep the shape reaches below its start along the depth direction (the cycle frame's x).
@@ -146,10 +146,9 @@ CycleOutcome outcome(const CycleCall& call, const ShapeProgram& shape, const Sec
 
 }  // namespace
 
-void requireWorkWithinTheCap(const std::string& cycle, double passes, std::size_t segments, const std::string& why,
-                             int line) {
-  if (passes * static_cast<double>(segments) <= kMostPassSegments) return;
-  throw NotSupported(line, cycle + " would cut " + countText(passes) + " passes across a shape of " +
+void refuseWorkBeyondTheCap(std::string_view cycle, double passes, std::size_t segments, const std::string& why,
+                            int line) {
+  throw NotSupported(line, std::string(cycle) + " would cut " + countText(passes) + " passes across a shape of " +
                                countText(static_cast<double>(segments)) + " segments" + why +
                                "; cyclecert plans at most " + countText(kMostPassSegments) +
                                " passes × segments per cycle");

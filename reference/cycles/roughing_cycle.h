@@ -10,6 +10,9 @@
 #include "reference/model/alarms.h"
 #include "reference/model/cycle_family.h"
 
+#include <string>
+#include <string_view>
+
 namespace cyclecert {
 
 // A roughing cycle's dialect: its code and which plane address carries Δd in the first block.
@@ -80,10 +83,20 @@ inline constexpr double kMostRoughingPasses = 10'000;
 inline constexpr double kMostCycleMoves = 250'000;
 inline constexpr double kMostPassSegments = 10'000'000;
 
-// PROG.CAP.WORK: throws NotSupported at `line` when `passes` × `segments` is beyond
-// kMostPassSegments; `why` says what gave the passes ("Δd 0.001 mm over 1000 mm").
-void requireWorkWithinTheCap(const std::string& cycle, double passes, std::size_t segments, const std::string& why,
-                             int line);
+// PROG.CAP.WORK: the refusal of a cycle whose `passes` × `segments` is beyond kMostPassSegments
+// (NotSupported at `line`); `why` says what gave the passes ("Δd 0.001 mm over 1000 mm").
+[[noreturn]] void refuseWorkBeyondTheCap(std::string_view cycle, double passes, std::size_t segments,
+                                         const std::string& why, int line);
+
+// PROG.CAP.WORK: refuses (refuseWorkBeyondTheCap) when `passes` × `segments` is beyond
+// kMostPassSegments. `why()` gives the message's reason, asked for only then: every cycle is
+// checked, and building the message each time cost more than the check.
+template <typename Why>
+void requireWorkWithinTheCap(std::string_view cycle, double passes, std::size_t segments, const Why& why, int line) {
+  if (passes * static_cast<double>(segments) > kMostPassSegments) {
+    refuseWorkBeyondTheCap(cycle, passes, segments, why(), line);
+  }
+}
 
 // Δd from parameter 5132 (programmed values overwrite it): PS0062 if not positive.
 double depthOfCut(const CycleCall& call, const std::string& code);

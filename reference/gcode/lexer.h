@@ -6,6 +6,7 @@
 // Lexical errors (a character outside the dialect, a second decimal point, a sign without digits,
 // an unclosed comment, a '%' that shares its line) throw ParseError at the offending byte.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -77,6 +78,18 @@ struct NumberReading {
   const char* expected = nullptr;  // set when the text is no number the readers accept
 };
 NumberReading readNumber(std::string_view text);
+
+// The plain number `s` starts with — a sign, digits with at most one decimal point among them, and
+// no second point after — read in one pass: its length (0 when `s` starts with none) and, when it
+// is within the fast reading's terms (at most kMostSignificantDigits significant digits, at most
+// 22 decimals), its value, the one readNumber gives its text; otherwise readNumber is left to read
+// it. The SINUMERIK lexer finds its numbers' ends by it (a SINUMERIK case's numbers are most of
+// its parsing, and a scan for the end, then another for the value, cost twice).
+struct LeadingNumber {
+  std::size_t length = 0;
+  std::optional<double> value;
+};
+LeadingNumber leadingPlainNumber(std::string_view s);
 
 // Every token of the source, ending with EndOfInput.
 std::vector<Token> tokenize(std::string_view source, const std::string& file);

@@ -14,22 +14,6 @@ bool isNameStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
-// The length of the number `s` starts with when it is a plain one — a sign, digits with at most one
-// decimal point among them, and no second one after — or 0. These are the FANUC reader's rules
-// (Lexer::number, reference/gcode/lexer.cpp) for the numbers it takes; what it refuses is left to
-// it (fanucNumberLength), so that its messages stay the only ones. A SINUMERIK case's numbers are
-// most of its parsing, and the FANUC lexer's set-up per number cost more than the scan.
-std::size_t plainNumberLength(std::string_view s) {
-  std::size_t end = !s.empty() && (s[0] == '+' || s[0] == '-') ? 1 : 0;
-  std::size_t digits = 0;
-  for (; end < s.size() && isDigit(s[end]); ++end) ++digits;
-  if (end < s.size() && s[end] == '.') {
-    for (++end; end < s.size() && isDigit(s[end]); ++end) ++digits;
-  }
-  const bool secondPoint = end < s.size() && s[end] == '.';
-  return digits == 0 || secondPoint ? 0 : end;
-}
-
 }  // namespace
 
 std::string SiemensToken::upperName() const {
@@ -72,12 +56,17 @@ SiemensToken SiemensLexer::name() {
   return take(SiemensTokenKind::Name, end - pos_);
 }
 
-// The number's characters by the FANUC reader's rules (plainNumberLength, else the FANUC lexer),
-// its value as the FANUC reader reads it (readNumber).
+// The number's characters by the FANUC reader's rules, its value as the FANUC reader reads it: a
+// plain number's both in one pass (leadingPlainNumber); what that leaves — its refusals, a number
+// beyond the fast reading — to the FANUC lexer (fanucNumberLength) and readNumber, so that their
+// messages stay the only ones.
 SiemensToken SiemensLexer::number() {
-  std::size_t length = plainNumberLength(line_.substr(pos_));
-  if (length == 0) length = fanucNumberLength();
-  SiemensToken token = take(SiemensTokenKind::Number, length);
+  const LeadingNumber plain = leadingPlainNumber(line_.substr(pos_));
+  SiemensToken token = take(SiemensTokenKind::Number, plain.length != 0 ? plain.length : fanucNumberLength());
+  if (plain.value) {
+    token.number = *plain.value;
+    return token;
+  }
   const NumberReading r = readNumber(token.text);
   if (r.expected) throw ParseError({file_, lineNumber_, token.column}, r.expected, std::string(token.text));
   token.number = r.value;

@@ -356,8 +356,9 @@ class StockRemovalPlanner {
     const double top = start_.x - c_.clearance.x;
     const std::vector<double> levels = c_.mainLevels(top, profileExtent_.xMin, c_.maxInfeed, c_.line);
     // PROG.CAP.WORK: each level meets the profile.
-    requireWorkWithinTheCap("the stock-removal cycle", static_cast<double>(levels.size() - 1), c_.profile.size(),
-                            " (infeed of at most " + shortDecimalText(c_.maxInfeed) + " mm)", c_.line);
+    requireWorkWithinTheCap(
+        "the stock-removal cycle", static_cast<double>(levels.size() - 1), c_.profile.size(),
+        [&] { return " (infeed of at most " + shortDecimalText(c_.maxInfeed) + " mm)"; }, c_.line);
     frontStretchEnd_ = frontStretchEnd(c_.profile, levels);
     approachStart();
     const int count = static_cast<int>(levels.size()) - 1;
