@@ -164,7 +164,7 @@ class ThicknessSearch {
     // that cannot beat the thickest found so far (or the floor) need not be measured.
     const double highestPoint = std::max(d0, d1);
     if (highestPoint + window_ < lowestStep) return;
-    if (highestPoint - lowestStep <= (best_ ? std::max(best_->thickness, floor_) : floor_)) return;
+    if (highestPoint - lowestStep <= sought()) return;
     for (const ProfileStep* s : under_) {
       if (done()) return;
       const double lo = std::max(c0, s->c0), hi = std::min(c1, s->c1);
@@ -183,6 +183,9 @@ class ThicknessSearch {
   const std::optional<Thickest>& best() const { return best_; }
 
  private:
+  // What a thickness must beat to count: the floor, and the thickest found so far.
+  double sought() const { return best_ ? std::max(best_->thickness, floor_) : floor_; }
+
   // Whether the edge's point at c (over step s, which measureEdge measures it for) cannot measure
   // thicker than what is sought — above the floor and the thickest so far — found from s alone, so
   // that measureAt need not look at every step near c. Where s neither rises nor falls back within
@@ -193,9 +196,8 @@ class ThicknessSearch {
   // operation keeps that order.
   bool cannotBeatAt(const RegionEdge& edge, const ProfileStep& s, double c) const {
     if (s.arc && s.cc > c - window_ && s.cc < c + window_) return false;
-    const double sought = best_ ? std::max(best_->thickness, floor_) : floor_;
     const double d = edge.depthAt(c), onStep = s.depthAt(c);
-    return onStep <= d + window_ && std::max(0.0, d - onStep) <= sought;
+    return onStep <= d + window_ && std::max(0.0, d - onStep) <= sought();
   }
 
   // measureAt(edge, c) for a point measureEdge takes over step s, unless cannotBeatAt shows it

@@ -187,6 +187,18 @@ Extent extent(const Segment& s) {
   return e;
 }
 
+Extent enclosingExtent(const Segment& s) {
+  Extent e{std::min(s.from.z, s.to.z), std::max(s.from.z, s.to.z), std::min(s.from.x, s.to.x),
+           std::max(s.from.x, s.to.x)};
+  if (!s.isArc()) return e;
+  const double r = s.radius();
+  e.zMin = std::min(e.zMin, s.center.z - r);
+  e.zMax = std::max(e.zMax, s.center.z + r);
+  e.xMin = std::min(e.xMin, s.center.x - r);
+  e.xMax = std::max(e.xMax, s.center.x + r);
+  return e;
+}
+
 std::optional<Point> arcCenterFromRadius(Point from, Point to, double r, SegmentKind dir) {
   const double chord = distance(from, to);
   if (chord <= kGeomEps || !std::isfinite(r) || std::abs(r) * 2 < chord - 1e-6) return std::nullopt;

@@ -76,6 +76,9 @@ std::vector<Point> intersectWithLevelX(const Segment& s, double level);
 // Smallest and largest x and z reached anywhere on the segment (arcs include their apexes).
 struct Extent { double zMin, zMax, xMin, xMax; };
 Extent extent(const Segment& s);
+// A box holding the segment, found without its angles: its ends' box, grown to its whole circle's
+// for an arc. Looser than extent(s) for an arc, and cheap: a quick test that rules segments out.
+Extent enclosingExtent(const Segment& s);
 
 // Points of an arc where it turns back on the z or x axis (its apexes), in order along the arc.
 std::vector<Point> apexesAlong(const Segment& s);

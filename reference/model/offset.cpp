@@ -266,16 +266,11 @@ double distanceToPath(Point p, const std::vector<Segment>& path) {
 bool nearPath(Point p, const std::vector<Segment>& path, double tolerance) {
   for (const Segment& s : path) {
     // A box around the segment (an arc's whole circle) decides most segments without measuring.
-    double zMin = std::min(s.from.z, s.to.z), zMax = std::max(s.from.z, s.to.z);
-    double xMin = std::min(s.from.x, s.to.x), xMax = std::max(s.from.x, s.to.x);
-    if (s.isArc()) {
-      const double r = s.radius();
-      zMin = std::min(zMin, s.center.z - r);
-      zMax = std::max(zMax, s.center.z + r);
-      xMin = std::min(xMin, s.center.x - r);
-      xMax = std::max(xMax, s.center.x + r);
+    const Extent box = enclosingExtent(s);
+    if (p.z < box.zMin - tolerance || p.z > box.zMax + tolerance || p.x < box.xMin - tolerance ||
+        p.x > box.xMax + tolerance) {
+      continue;
     }
-    if (p.z < zMin - tolerance || p.z > zMax + tolerance || p.x < xMin - tolerance || p.x > xMax + tolerance) continue;
     if (distanceToSegment(p, s) <= tolerance) return true;
   }
   return false;

@@ -87,9 +87,6 @@ bool isFrontWallAboveTheFace(std::size_t i, Point p, std::size_t foot, double fa
   return i < foot && p.x > faceTop + kGeomEps;
 }
 
-// The largest z of `s` or beyond: its ends' for a line, its circle's for an arc.
-double highestZBound(const Segment& s) { return s.isArc() ? s.center.z + s.radius() : std::max(s.from.z, s.to.z); }
-
 // The roughing intersection (LCYC95.ROUGH): the first point where the level, run towards −z from
 // `fromZ`, meets the profile — not counting the front walls above the face's top
 // (isFrontWallAboveTheFace: a level between the face's top and the walls' top runs through them
@@ -100,9 +97,9 @@ std::optional<ProfilePoint> roughingIntersection(const std::vector<Segment>& pro
   std::optional<ProfilePoint> best;
   for (std::size_t i = 0; i < profile.size(); ++i) {
     // An element standing nowhere in front of the best point yet (by a box round it, an arc's whole
-    // circle) has no point further forward: its crossings are not worked out (each pass asks for
-    // the whole profile's, most of it behind the first crossing).
-    if (best && highestZBound(profile[i]) <= best->at.z) continue;
+    // circle: enclosingExtent) has no point further forward: its crossings are not worked out (each
+    // pass asks for the whole profile's, most of it behind the first crossing).
+    if (best && enclosingExtent(profile[i]).zMax <= best->at.z) continue;
     for (const Point& p : intersectWithLevelX(profile[i], level)) {
       if (p.z > fromZ + kGeomEps || isFrontWallAboveTheFace(i, p, foot, faceTop)) continue;
       if (!best || p.z > best->at.z + kGeomEps) best = ProfilePoint{i, p};
@@ -266,18 +263,16 @@ bool diagonalRetractRunsIntoThePart(const std::vector<Segment>& profile, Point p
                                          std::atan2(kNormals[1].x, kNormals[1].z)};
   for (const Segment& s : profile) {
     // Most elements lie outside the window or below p (the pass has just cut there): a box around
-    // the element (an arc's whole circle) rules them out before anything is computed.
-    const double r = s.isArc() ? s.radius() : 0;
-    const double zLow = s.isArc() ? s.center.z - r : std::min(s.from.z, s.to.z);
-    const double zHigh = s.isArc() ? s.center.z + r : std::max(s.from.z, s.to.z);
-    const double xHigh = s.isArc() ? s.center.x + r : std::max(s.from.x, s.to.x);
-    if (zHigh <= p.z + kGeomEps || zLow > p.z + v + kGeomEps || xHigh <= p.x + kGeomEps) continue;
+    // the element (an arc's whole circle: enclosingExtent) rules them out before anything is computed.
+    const Extent box = enclosingExtent(s);
+    if (box.zMax <= p.z + kGeomEps || box.zMin > p.z + v + kGeomEps || box.xMax <= p.x + kGeomEps) continue;
     if (above(s.from) || above(s.to)) return true;
     for (const Point& t : intersectWithLevelX(transposed(s), p.z + v)) {
       if (above(transposed(t))) return true;
     }
     if (s.isArc()) {
       const ArcAngles angles(s);
+      const double r = s.radius();
       for (int k = 0; k < 2; ++k) {
         if (offsetAlongArc(angles, kNormalAngles[k]) && above(s.center + r * kNormals[k])) return true;
       }
